@@ -1,0 +1,152 @@
+/* Model look-ups, USER list parsing and release (model.h). */
+#include "model.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+static unsigned marker_hash(int id, int slots)
+{
+    return ((unsigned)id * 2654435761u) % (unsigned)slots;
+}
+
+int hx_model_marker(const hx_model *m, int id)
+{
+    if (m->marker_slot_count == 0)
+        return -1;
+    for (unsigned s = marker_hash(id, m->marker_slot_count);; s = (s + 1) % (unsigned)m->marker_slot_count) {
+        const int k = m->marker_slots[s];
+        if (k < 0)
+            return -1;
+        if (m->markers[k].id == id)
+            return k;
+    }
+}
+
+int hx_model_body(const hx_model *m, int id)
+{
+    for (int k = 0; k < m->nbodies; ++k)
+        if (m->bodies[k].id == id)
+            return k;
+    return -1;
+}
+
+int hx_model_joint(const hx_model *m, int id)
+{
+    for (int k = 0; k < m->njoints; ++k)
+        if (m->joints[k].id == id)
+            return k;
+    return -1;
+}
+
+const char *hx_model_string(const hx_model *m, int id)
+{
+    for (int k = 0; k < m->nstrings; ++k)
+        if (m->strings[k].id == id)
+            return m->strings[k].text;
+    return NULL;
+}
+
+int hx_parse_user_list(const char *text, double **par_out, int *npar_out, usrsub_message *msg)
+{
+    const char *p = text;
+    while (isspace((unsigned char)*p))
+        ++p;
+    if (strncasecmp(p, "USER", 4) != 0)
+        return usrsub_fail(msg, "'%s' does not start with USER(", text);
+    p += 4;
+    while (isspace((unsigned char)*p))
+        ++p;
+    if (*p != '(')
+        return usrsub_fail(msg, "'%s': expected '(' after USER", text);
+    ++p;
+    int n = 0, capacity = 8;
+    double *par = malloc(sizeof(double) * (size_t)capacity);
+    if (par == NULL)
+        return usrsub_fail(msg, "out of memory");
+    while (isspace((unsigned char)*p))
+        ++p;
+    if (*p == ')') {
+        ++p;
+    } else {
+        for (;;) {
+            char *end;
+            errno = 0;
+            const double v = strtod(p, &end);
+            if (end == p || errno == ERANGE) {
+                free(par);
+                return usrsub_fail(msg, "'%s': value %d is not a number", text, n + 1);
+            }
+            if (n == capacity) {
+                capacity *= 2;
+                double *grown = realloc(par, sizeof(double) * (size_t)capacity);
+                if (grown == NULL) {
+                    free(par);
+                    return usrsub_fail(msg, "out of memory");
+                }
+                par = grown;
+            }
+            par[n++] = v;
+            p = end;
+            while (isspace((unsigned char)*p))
+                ++p;
+            if (*p == ',') {
+                ++p;
+                continue;
+            }
+            if (*p == ')') {
+                ++p;
+                break;
+            }
+            free(par);
+            return usrsub_fail(msg, "'%s': expected ',' or ')' after value %d", text, n);
+        }
+    }
+    while (isspace((unsigned char)*p))
+        ++p;
+    if (*p != '\0') {
+        free(par);
+        return usrsub_fail(msg, "'%s': unexpected text after ')'", text);
+    }
+    *par_out = par;
+    *npar_out = n;
+    return 0;
+}
+
+static void free_user_call(hx_user_call *u)
+{
+    free(u->dll_name);
+    free(u->fnc_name);
+    free(u->der1_name);
+    free(u->der2_name);
+    free(u->param_string);
+    free(u->par);
+}
+
+void hx_model_free(hx_model *m)
+{
+    if (m == NULL)
+        return;
+    for (int k = 0; k < m->nbodies; ++k)
+        free(m->bodies[k].label);
+    for (int k = 0; k < m->ncouplers; ++k)
+        free_user_call(&m->couplers[k].user);
+    for (int k = 0; k < m->nforces; ++k)
+        free_user_call(&m->forces[k].user);
+    for (int k = 0; k < m->nstrings; ++k)
+        free(m->strings[k].text);
+    free(m->bodies);
+    free(m->markers);
+    free(m->joints);
+    free(m->couplers);
+    free(m->forces);
+    free(m->loads);
+    free(m->strings);
+    free(m->marker_slots);
+    free(m->path);
+    free(m->dir);
+    free(m);
+}

@@ -1,0 +1,81 @@
+/*
+ * The solver ABI: the user-subroutine entries a MotionSolve-style host looks up
+ * in the library, and the utilities the library may call back in the host.
+ * Our own declarations of the contract in ../shared/INTERFACE.md section 1.
+ *
+ * Every subroutine argument is a pointer (Fortran by-reference). The utilities
+ * take scalars by value, as the Adams-compatible C utility library does.
+ */
+#ifndef USRSUB_SOLVER_ABI_H
+#define USRSUB_SOLVER_ABI_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32)
+#define STDCALL __stdcall
+#define USRSUB_EXPORT __declspec(dllexport)
+#else
+#define STDCALL
+#define USRSUB_EXPORT __attribute__((visibility("default")))
+#endif
+
+/* ---- Entry types, as a host resolves them with dlsym ------------------- */
+
+/* COUSUB (phi: 1 value), COUXX (ndisp values), COUXX2 (ndisp*ndisp, column-major). */
+typedef void STDCALL usrsub_coupler_fn(int *id, double *time, double *par, int *npar,
+                                       double *disp, int *ndisp, int *iflag, double *out);
+
+/* GFOSUB: result = Fx Fy Fz Tx Ty Tz on the I marker, in J-marker axes. */
+typedef void STDCALL usrsub_gfosub_fn(int *id, double *time, double *par, int *npar,
+                                      int *dflag, int *iflag, double *result);
+
+/* FIESUB: field (6), dfddis and dfdvel (6x6 column-major, [i + 6*j] = dF_i/dx_j). */
+typedef void STDCALL usrsub_fiesub_fn(int *id, double *time, double *par, int *npar,
+                                      double *disp, double *velo, int *dflag, int *iflag,
+                                      double *field, double *dfddis, double *dfdvel);
+
+/* ---- Entries the library exports ---------------------------------------- */
+
+USRSUB_EXPORT usrsub_coupler_fn COUSUB;
+USRSUB_EXPORT usrsub_coupler_fn COUXX;
+USRSUB_EXPORT usrsub_coupler_fn COUXX2;
+
+/* Default force entries dispatch on par[0]: 1 bushing, 2 mount limits, 3 flexible joint. */
+USRSUB_EXPORT usrsub_gfosub_fn GFOSUB;
+USRSUB_EXPORT usrsub_fiesub_fn FIESUB;
+
+/* Named entries (for usrsub_fnc_name): the same USER list without par[0]. */
+USRSUB_EXPORT usrsub_gfosub_fn ABM_BUSHING;
+USRSUB_EXPORT usrsub_gfosub_fn MOUNT_LIMITS;
+USRSUB_EXPORT usrsub_gfosub_fn FLEX_JOINT;
+USRSUB_EXPORT usrsub_fiesub_fn ABM_BUSHING_FIELD;
+USRSUB_EXPORT usrsub_fiesub_fn MOUNT_LIMITS_FIELD;
+USRSUB_EXPORT usrsub_fiesub_fn FLEX_JOINT_FIELD;
+
+/* ---- Utilities a host provides (resolved from the host at load time) ---- */
+
+void c_sysary(const char *fnc, const int *ipar, int nsize, double *states, int *nstates,
+              int *errflg);
+void c_sysfnc(const char *fnc, const int *ipar, int nsize, double *value, int *errflg);
+void c_errmes(int errflg, const char *msg, int id, const char *endflg);
+void c_usrmes(int msgflg, const char *msg, int id, const char *msgtyp);
+void c_gtstrg(int id, char *string, int *nchars, int *istat);
+void c_gtunts(int *exists, double *scales, char *units);
+
+/* c_gtunts scales[] order: sizes of the model's units in SI. */
+enum usrsub_unit_kind {
+    USRSUB_UNIT_LENGTH = 0, /* metre */
+    USRSUB_UNIT_FORCE = 1,  /* newton */
+    USRSUB_UNIT_MASS = 2,   /* kilogram */
+    USRSUB_UNIT_TIME = 3,   /* second */
+    USRSUB_UNIT_ANGLE = 4,  /* radian */
+    USRSUB_UNIT_COUNT = 5
+};
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

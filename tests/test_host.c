@@ -1,0 +1,200 @@
+/*
+ * The harness as a host, seen from a library loaded through dlopen: answers
+ * of c_sysary/c_sysfnc from the model's state, dependencies recorded in the
+ * dependency pass, reads outside them noted, strings and units served, and
+ * c_errmes STOP ending a harness run with the message and a non-zero status.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+
+#include "binding.h"
+#include "host.h"
+#include "session.h"
+#include "test_support.h"
+
+#define DEG (M_PI / 180.0)
+
+/* USER(probe, i_marker, j_marker) on a Force_Vector_TwoBody between markers 21 and 11.
+ * Ground markers 10 (origin) and 11 (at x = 0.5, turned 90 deg about z);
+ * body 2 at (1,2,3) turned 30 deg about z, moving at (0.1,0.2,0.3) and
+ * spinning at 2 rad/s about z, with marker 21; body 3 turned 40 deg about x. */
+static const char *probe_model(int probe, int i_marker, int j_marker)
+{
+    static char text[4096];
+    const double c30 = cos(30 * DEG), s30 = sin(30 * DEG), c40 = cos(40 * DEG), s40 = sin(40 * DEG);
+    snprintf(text, sizeof text,
+             "<MotionSolve>\n<Model>\n"
+             "<Param_Unit length_unit=\"MILLIMETER\" force_unit=\"NEWTON\" mass_unit=\"KILOGRAM\" time_unit=\"SECOND\"/>\n"
+             "<Reference_String id=\"7\" string=\"hello.gbs\"/>\n"
+             "<Body_Ground id=\"1\"/>\n"
+             "<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+             "<Reference_Marker id=\"11\" body_id=\"1\" pos_x=\"0.5\" a00=\"0\" a10=\"1\" a01=\"-1\" a11=\"0\"/>\n"
+             "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\" inertia_zz=\"1\"\n"
+             "  v_ic_x=\"0.1\" v_ic_y=\"0.2\" v_ic_z=\"0.3\" w_ic_z=\"2\"/>\n"
+             "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"1\" pos_y=\"2\" pos_z=\"3\"\n"
+             "  a00=\"%.17g\" a10=\"%.17g\" a01=\"%.17g\" a11=\"%.17g\"/>\n"
+             "<Reference_Marker id=\"21\" body_id=\"2\" pos_x=\"1\" pos_y=\"2\" pos_z=\"3\"\n"
+             "  a00=\"%.17g\" a10=\"%.17g\" a01=\"%.17g\" a11=\"%.17g\"/>\n"
+             "<Body_Rigid id=\"3\" cg_id=\"30\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\" inertia_zz=\"1\"/>\n"
+             "<Reference_Marker id=\"30\" body_id=\"3\" a11=\"%.17g\" a21=\"%.17g\" a12=\"%.17g\" a22=\"%.17g\"/>\n"
+             "<Force_Vector_TwoBody id=\"100\" type=\"ForceAndTorque\" i_marker_id=\"21\"\n"
+             "  j_floating_marker_id=\"11\" ref_marker_id=\"11\"\n"
+             "  usrsub_param_string=\"USER(%d, %d, %d)\" usrsub_dll_name=\"%s\"/>\n"
+             "</Model>\n</MotionSolve>\n",
+             c30, s30, -s30, c30, c30, s30, -s30, c30, c40, s40, -s40, c40, probe, i_marker,
+             j_marker, HOSTPROBE_LIBRARY);
+    char name[64];
+    snprintf(name, sizeof name, "probe_%d_%d_%d.xml", probe, i_marker, j_marker);
+    return test_write_file(name, text);
+}
+
+static void evaluate_probe(int probe, int i, int j, double result[6], hx_call *call)
+{
+    hx_session s;
+    usrsub_message msg;
+    if (hx_session_open(&s, probe_model(probe, i, j), &msg) != 0)
+        fail_msg("%s", msg.text);
+    hx_binding *b = &s.bindings.items[0];
+    hx_call_gfosub(b, 0.0, 0, 1, result, NULL); /* dependency pass */
+    hx_binding_call_init(b, call, 0);
+    hx_call_gfosub(b, 0.0, 0, 0, result, call);
+    hx_session_close(&s);
+}
+
+static void sysfnc_answers_from_the_model(void **state)
+{
+    (void)state;
+    double r[6];
+    hx_call call;
+    evaluate_probe(2, 21, 11, r, &call);
+    /* R_11^T (p21 - p11) = Rz(-90) (0.5, 2, 3) = (2, -0.5, 3); Rz(-90) Rz(30) = Rz(-60) */
+    assert_close(r[0], 2.0, 0, 1e-14);
+    assert_close(r[1], -0.5, 0, 1e-14);
+    assert_close(r[2], 3.0, 0, 1e-14);
+    assert_close(r[3], 0.0, 0, 1e-14);
+    assert_close(r[4], 0.0, 0, 1e-14);
+    assert_close(r[5], -60 * DEG, 0, 1e-14);
+    assert_int_equal(call.host_calls, 6);
+    assert_int_equal(call.undeclared, 0);
+    evaluate_probe(2, 30, 10, r, &call);
+    assert_close(r[3], 40 * DEG, 0, 1e-14); /* AX of a 40 deg turn about x */
+}
+
+static void sysary_disp_and_vel(void **state)
+{
+    (void)state;
+    double r[6];
+    hx_call call;
+    evaluate_probe(1, 21, 11, r, &call);
+    assert_close(r[0], 2.0, 0, 1e-14);
+    assert_close(r[1], -0.5, 0, 1e-14);
+    assert_close(r[2], 3.0, 0, 1e-14);
+    assert_close(r[3], -60 * DEG, 0, 1e-14); /* 3-1-3 Euler of Rz(-60): psi = -60, theta = 0 */
+    assert_close(r[4], 0.0, 0, 1e-14);
+    assert_close(r[5], 0.0, 0, 1e-14);
+    assert_int_equal(call.host_calls, 1);
+    evaluate_probe(1, 30, 10, r, &call);
+    assert_close(r[3], 0.0, 0, 1e-14);
+    assert_close(r[4], 40 * DEG, 0, 1e-14); /* theta of a turn about x */
+    assert_close(r[5], 0.0, 0, 1e-14);
+    /* VEL(21,11,11,11): Rz(-90) applied to (0.1,0.2,0.3) and to (0,0,2) */
+    evaluate_probe(3, 21, 11, r, &call);
+    assert_close(r[0], 0.2, 0, 1e-14);
+    assert_close(r[1], -0.1, 0, 1e-14);
+    assert_close(r[2], 0.3, 0, 1e-14);
+    assert_close(r[3], 0.0, 0, 1e-14);
+    assert_close(r[4], 0.0, 0, 1e-14);
+    assert_close(r[5], 2.0, 0, 1e-14);
+}
+
+static void dependency_pass_records_queries(void **state)
+{
+    (void)state;
+    hx_session s;
+    usrsub_message msg;
+    assert_int_equal(hx_session_open(&s, probe_model(1, 21, 11), &msg), 0);
+    hx_binding *b = &s.bindings.items[0];
+    double r[6] = {1, 1, 1, 1, 1, 1};
+    hx_call_gfosub(b, 0.0, 0, 1, r, NULL);
+    assert_int_equal(b->deps.count, 1);
+    char text[128];
+    assert_string_equal(hx_query_text(&b->deps.query[0], text, sizeof text), "DISP(21,11,11)");
+    for (int k = 0; k < 6; ++k)
+        assert_close(r[k], 0.0, 0, 0); /* zeros in the dependency pass */
+    hx_session_close(&s);
+}
+
+static void undeclared_read_is_noted(void **state)
+{
+    (void)state;
+    hx_host_set_message_stream(NULL);
+    double r[6];
+    hx_call call;
+    evaluate_probe(4, 21, 11, r, &call);
+    assert_int_equal(call.undeclared, 1);
+    char text[64];
+    assert_string_equal(hx_query_text(&call.first_undeclared, text, sizeof text), "DISP(21,11,11)");
+    hx_host_set_message_stream(stderr);
+}
+
+static void strings_and_units(void **state)
+{
+    (void)state;
+    double r[6];
+    hx_call call;
+    evaluate_probe(5, 7, 0, r, &call);
+    assert_close(r[0], 9.0, 0, 0); /* strlen("hello.gbs") */
+    assert_close(r[1], 1e-3, 0, 0); /* millimetre */
+    assert_close(r[2], 1.0, 0, 0);
+    assert_close(r[3], 1.0, 0, 0);
+    assert_close(r[4], 1.0, 0, 0);
+    assert_close(r[5], 1.0, 0, 0); /* radian */
+}
+
+static void stop_is_recorded(void **state)
+{
+    (void)state;
+    hx_host_set_message_stream(NULL);
+    hx_host_reset_messages();
+    double r[6];
+    hx_call call;
+    evaluate_probe(99, 21, 11, r, &call);
+    assert_true(hx_host_stop_requested());
+    assert_string_equal(hx_host_stop_message(), "probe asked to stop");
+    hx_host_reset_messages();
+    hx_host_set_message_stream(stderr);
+}
+
+static void stop_ends_a_harness_run(void **state)
+{
+    (void)state;
+    char command[1024];
+    snprintf(command, sizeof command, "'%s' check '%s' 2>&1", HARNESS_EXE,
+             probe_model(99, 21, 11));
+    FILE *p = popen(command, "r");
+    assert_non_null(p);
+    char output[8192] = {0};
+    size_t n = fread(output, 1, sizeof output - 1, p);
+    output[n] = '\0';
+    const int status = pclose(p);
+    assert_true(WIFEXITED(status));
+    assert_int_not_equal(WEXITSTATUS(status), 0);
+    assert_contains(output, "probe asked to stop", "STOP");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(sysfnc_answers_from_the_model),
+        cmocka_unit_test(sysary_disp_and_vel),
+        cmocka_unit_test(dependency_pass_records_queries),
+        cmocka_unit_test(undeclared_read_is_noted),
+        cmocka_unit_test(strings_and_units),
+        cmocka_unit_test(stop_is_recorded),
+        cmocka_unit_test(stop_ends_a_harness_run),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

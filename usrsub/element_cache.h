@@ -1,0 +1,56 @@
+/*
+ * Per-element set-up cache of the library.
+ *
+ * An element is set up once per (interface, element id), keyed also on a copy
+ * of its USER list (and one discriminating code, such as ndisp), so that an
+ * element whose list changes is rebuilt. Look-ups take no lock: records are
+ * immutable once published and are only freed when the library is unloaded.
+ * Set-ups are serialized by one mutex; a failed set-up is cached too, so its
+ * error is reported once.
+ */
+#ifndef USRSUB_ELEMENT_CACHE_H
+#define USRSUB_ELEMENT_CACHE_H
+
+#include "usrsub/message.h"
+
+enum element_interface {
+    ELEMENT_COUPLER = 1, /* COUSUB, COUXX, COUXX2 share one set-up */
+    ELEMENT_GFOSUB = 2,
+    ELEMENT_FIESUB = 3
+};
+
+typedef struct element_signature {
+    int interface;
+    int id;
+    int code;          /* ndisp for couplers, the entry code for forces */
+    const double *par; /* USER list as the host passed it */
+    int npar;
+} element_signature;
+
+/* What a set-up wants said to the host, after the cache's lock is released
+ * (a host may end the run inside c_errmes). */
+typedef struct element_setup_report {
+    usrsub_message error;  /* set when the set-up fails */
+    usrsub_message notice; /* informational text, when has_notice */
+    int has_notice;
+} element_setup_report;
+
+/* Builds the immutable model of an element, or returns NULL and fills
+ * report->error. Runs under the cache's lock. */
+typedef void *element_setup_fn(const element_signature *sig, void *ctx,
+                               element_setup_report *report);
+typedef void element_release_fn(void *model);
+
+/* Returns the element's model, or NULL when its set-up failed. *set_up_now is
+ * 1 when this call ran the set-up: the caller then passes report on. */
+void *element_cache_get(const element_signature *sig, element_setup_fn *setup,
+                        element_release_fn *release, void *ctx, int *set_up_now,
+                        element_setup_report *report);
+
+/* Number of live (not superseded) records; for tests. */
+int element_cache_size(void);
+
+/* Frees every record; runs when the library is unloaded. */
+void element_cache_clear(void);
+
+#endif

@@ -1,0 +1,19 @@
+/*
+ * How the entries word what they tell the host: "ROUTINE element ID: what".
+ * Every message leaves through host.c.
+ */
+#ifndef USRSUB_ENTRY_REPORT_H
+#define USRSUB_ENTRY_REPORT_H
+
+#include "element_cache.h"
+
+/* Passes on what a set-up produced (its notice, and its error when the model
+ * is NULL), when this call ran it. */
+void entry_report_setup(const char *routine, int id, int set_up_now, const void *model,
+                        const element_setup_report *report);
+
+/* An input error found during a call (a non-finite state, a bad argument). */
+void entry_report_error(const char *routine, int id, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+#endif

@@ -1,0 +1,51 @@
+/* Host adapter: the one file that calls the host's utilities (host.h). */
+#include "host.h"
+
+#include <string.h>
+
+void host_report_error(int id, const char *text)
+{
+    c_errmes(1, text, id, "STOP");
+}
+
+void host_report_notice(int id, const char *text)
+{
+    c_usrmes(1, text, id, "INFO");
+}
+
+int host_read_string(int string_id, char *text, int capacity)
+{
+    if (capacity < 2)
+        return -1;
+    memset(text, 0, (size_t)capacity);
+    /* nchars carries the capacity in; a host that honours it never writes past. */
+    int nchars = capacity - 1, istat = 0;
+    c_gtstrg(string_id, text, &nchars, &istat);
+    if (istat != 0)
+        return -1;
+    if (nchars < 0 || nchars > capacity - 1)
+        nchars = capacity - 1;
+    text[nchars] = '\0';
+    size_t len = strlen(text);
+    while (len > 0 && (text[len - 1] == ' ' || text[len - 1] == '\t'))
+        text[--len] = '\0';
+    return len > 0 ? 0 : -1;
+}
+
+int host_model_units(double scales[USRSUB_UNIT_COUNT])
+{
+    int exists = 0;
+    char names[256] = {0};
+    for (int k = 0; k < USRSUB_UNIT_COUNT; ++k)
+        scales[k] = 1.0;
+    c_gtunts(&exists, scales, names);
+    return exists != 0;
+}
+
+int host_query_array(const char *fnc, const int *ipar, int nsize, double *states,
+                     int expected)
+{
+    int nstates = 0, errflg = 0;
+    c_sysary(fnc, ipar, nsize, states, &nstates, &errflg);
+    return (errflg == 0 && nstates == expected) ? 0 : -1;
+}

@@ -1,0 +1,14 @@
+/* Polynomial value and derivatives by Horner's rule. */
+#include "usrsub/polynomial.h"
+
+usrsub_jet usrsub_polynomial_eval(const usrsub_polynomial *p, double x)
+{
+    double v = 0.0, d1 = 0.0, d2 = 0.0;
+    for (int k = p->degree; k >= 0; --k) {
+        d2 = d2 * x + 2.0 * d1;
+        d1 = d1 * x + v;
+        v = v * x + p->a[k];
+    }
+    usrsub_jet j = {v, d1, d2};
+    return j;
+}
