@@ -44,40 +44,77 @@ static void release_coupler(void *model)
     free(model);
 }
 
+/* Outputs a call writes: 1 (phi), n or n*n, none for an ndisp it cannot trust. */
+static int output_count(coupler_output what, int n)
+{
+    if (what == COUPLER_PHI)
+        return 1;
+    if (n < 1 || n > USRSUB_COUPLER_MAX_TERMS)
+        return 0;
+    return what == COUPLER_GRADIENT ? n : n * n;
+}
+
+static void zero(double *out, int count)
+{
+    for (int k = 0; k < count; ++k)
+        out[k] = 0.0;
+}
+
+/* The cold path: say what is wrong with the arguments, zeros out. */
+static void report_bad_call(coupler_output what, const int *id, const double *par,
+                            const int *npar, const double *disp, const int *ndisp, double *out)
+{
+    const int n = ndisp != NULL ? *ndisp : 0;
+    zero(out, output_count(what, n));
+    const int element = id != NULL ? *id : 0;
+    if (id == NULL || ndisp == NULL || disp == NULL || npar == NULL || *npar < 0 ||
+        (*npar > 0 && par == NULL)) {
+        entry_report_error(routine_names[what], element, "called with a missing argument (id,"
+                           " par, npar, disp or ndisp) or a negative npar");
+        return;
+    }
+    for (int k = 0; k < n; ++k)
+        if (!isfinite(disp[k])) {
+            entry_report_error(routine_names[what], element, "disp[%d] (joint %d of %d) is %g:"
+                               " a joint displacement must be finite; the output is zero", k,
+                               k + 1, n, disp[k]);
+            return;
+        }
+}
+
 static void coupler_entry(coupler_output what, const int *id, const double *par,
                           const int *npar, const double *disp, const int *ndisp, double *out)
 {
-    const char *routine = routine_names[what];
     if (out == NULL)
         return;
-    const int n = ndisp != NULL ? *ndisp : 0;
-    const int valid_n = n >= 2 && n <= USRSUB_COUPLER_MAX_TERMS;
-    const int nout = what == COUPLER_PHI ? 1 : !valid_n ? 0 : what == COUPLER_GRADIENT ? n : n * n;
-    for (int k = 0; k < nout; ++k)
-        out[k] = 0.0;
-    const int element = id != NULL ? *id : 0;
-    const int count = npar != NULL ? *npar : -1;
-    if (id == NULL || ndisp == NULL || disp == NULL || npar == NULL || count < 0 ||
-        (count > 0 && par == NULL)) {
-        entry_report_error(routine, element, "called with a missing argument (id, par, npar,"
-                           " disp or ndisp) or a negative npar");
+    if (id == NULL || ndisp == NULL || disp == NULL || npar == NULL || *npar < 0 ||
+        (*npar > 0 && par == NULL)) {
+        report_bad_call(what, id, par, npar, disp, ndisp, out);
         return;
     }
-    element_signature sig = {ELEMENT_COUPLER, element, n, par, count};
+    const int n = *ndisp;
+    element_signature sig = {ELEMENT_COUPLER, *id, n, par, *npar};
     element_setup_report report;
     int set_up_now;
     const usrsub_coupler *c =
-        element_cache_get(&sig, setup_coupler, release_coupler, NULL, &set_up_now, &report);
-    entry_report_setup(routine, element, set_up_now, c, &report);
-    if (c == NULL)
+        element_cache_lookup(&sig, setup_coupler, release_coupler, NULL, &set_up_now, &report);
+    if (set_up_now)
+        entry_report_setup(routine_names[what], *id, set_up_now, c, &report);
+    if (c == NULL) {
+        zero(out, output_count(what, n));
         return;
+    }
+    /* a decoded element has 2 or 3 terms, one per joint: n is trusted here */
+    double sum = 0.0;
     for (int k = 0; k < n; ++k)
-        if (!isfinite(disp[k])) {
-            entry_report_error(routine, element, "disp[%d] (joint %d of %d) is %g: a joint"
-                               " displacement must be finite; the output is zero", k, k + 1,
-                               n, disp[k]);
-            return;
-        }
+        sum += disp[k];
+    if (!isfinite(sum)) { /* a non-finite entry, or finite ones that overflow the sum */
+        for (int k = 0; k < n; ++k)
+            if (!isfinite(disp[k])) {
+                report_bad_call(what, id, par, npar, disp, ndisp, out);
+                return;
+            }
+    }
     switch (what) {
     case COUPLER_PHI: *out = usrsub_coupler_phi(c, disp); break;
     case COUPLER_GRADIENT: usrsub_coupler_gradient(c, disp, out); break;

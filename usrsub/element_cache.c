@@ -6,45 +6,16 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define BUCKET_COUNT 1024u
+#define BUCKET_COUNT ELEMENT_CACHE_BUCKETS
+#define buckets element_cache_buckets
 
-typedef struct element_record {
-    _Atomic(struct element_record *) next;
-    struct element_record *retired_next;
-    int interface, id, code, npar;
-    void *model; /* NULL: the set-up failed */
-    element_release_fn *release;
-    double par[];
-} element_record;
-
-static _Atomic(element_record *) buckets[BUCKET_COUNT];
+_Atomic(element_record *) element_cache_buckets[ELEMENT_CACHE_BUCKETS];
 static element_record *retired; /* superseded records, freed at unload */
 static pthread_mutex_t setup_lock = PTHREAD_MUTEX_INITIALIZER;
-
-static unsigned bucket_of(int interface, int id)
-{
-    return ((unsigned)id * 2654435761u ^ (unsigned)interface * 40503u) & (BUCKET_COUNT - 1u);
-}
 
 static int same_element(const element_record *r, const element_signature *sig)
 {
     return r->id == sig->id && r->interface == sig->interface;
-}
-
-/* Bitwise comparison, so that a NaN in the list still matches itself. */
-static int same_parameters(const element_record *r, const element_signature *sig)
-{
-    return r->code == sig->code && r->npar == sig->npar &&
-           (sig->npar == 0 || memcmp(r->par, sig->par, sizeof(double) * (size_t)sig->npar) == 0);
-}
-
-static element_record *find(unsigned bucket, const element_signature *sig)
-{
-    for (element_record *r = atomic_load_explicit(&buckets[bucket], memory_order_acquire);
-         r != NULL; r = atomic_load_explicit(&r->next, memory_order_acquire))
-        if (same_element(r, sig))
-            return r;
-    return NULL;
 }
 
 static void free_record(element_record *r)
@@ -74,15 +45,15 @@ void *element_cache_get(const element_signature *sig, element_setup_fn *setup,
                         element_release_fn *release, void *ctx, int *set_up_now,
                         element_setup_report *report)
 {
-    const unsigned bucket = bucket_of(sig->interface, sig->id);
+    const unsigned bucket = element_cache_bucket(sig->interface, sig->id);
     *set_up_now = 0;
-    element_record *r = find(bucket, sig);
-    if (r != NULL && same_parameters(r, sig))
+    element_record *r = element_cache_record(sig->interface, sig->id);
+    if (r != NULL && element_cache_matches(r, sig))
         return r->model;
 
     pthread_mutex_lock(&setup_lock);
-    r = find(bucket, sig); /* another thread may have set it up meanwhile */
-    if (r != NULL && same_parameters(r, sig)) {
+    r = element_cache_record(sig->interface, sig->id); /* set up meanwhile? */
+    if (r != NULL && element_cache_matches(r, sig)) {
         pthread_mutex_unlock(&setup_lock);
         return r->model;
     }

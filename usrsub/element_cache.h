@@ -47,6 +47,62 @@ void *element_cache_get(const element_signature *sig, element_setup_fn *setup,
                         element_release_fn *release, void *ctx, int *set_up_now,
                         element_setup_report *report);
 
+/* ---- the look-up every call makes, inline ----------------------------------- */
+
+#include <stdatomic.h>
+#include <string.h>
+
+#define ELEMENT_CACHE_BUCKETS 1024u
+
+typedef struct element_record {
+    _Atomic(struct element_record *) next;
+    struct element_record *retired_next;
+    int interface, id, code, npar;
+    void *model; /* NULL: the set-up failed */
+    element_release_fn *release;
+    double par[];
+} element_record;
+
+extern _Atomic(element_record *) element_cache_buckets[ELEMENT_CACHE_BUCKETS];
+
+static inline unsigned element_cache_bucket(int interface, int id)
+{
+    return ((unsigned)id * 2654435761u ^ (unsigned)interface * 40503u) &
+           (ELEMENT_CACHE_BUCKETS - 1u);
+}
+
+/* The element's current record, or NULL. */
+static inline element_record *element_cache_record(int interface, int id)
+{
+    element_record *r = atomic_load_explicit(
+        &element_cache_buckets[element_cache_bucket(interface, id)], memory_order_acquire);
+    while (r != NULL && (r->id != id || r->interface != interface))
+        r = atomic_load_explicit(&r->next, memory_order_acquire);
+    return r;
+}
+
+/* Bitwise comparison, so that a NaN in the list still matches itself. */
+static inline int element_cache_matches(const element_record *r, const element_signature *sig)
+{
+    return r->code == sig->code && r->npar == sig->npar &&
+           (sig->npar <= 0 ||
+            memcmp(r->par, sig->par, sizeof(double) * (size_t)sig->npar) == 0);
+}
+
+/* The fast path: the set-up model when the element is cached with this very
+ * list (*hit = 1), else falls back to element_cache_get. */
+static inline void *element_cache_lookup(const element_signature *sig, element_setup_fn *setup,
+                                         element_release_fn *release, void *ctx,
+                                         int *set_up_now, element_setup_report *report)
+{
+    const element_record *r = element_cache_record(sig->interface, sig->id);
+    if (r != NULL && element_cache_matches(r, sig)) {
+        *set_up_now = 0;
+        return r->model;
+    }
+    return element_cache_get(sig, setup, release, ctx, set_up_now, report);
+}
+
 /* Number of live (not superseded) records; for tests. */
 int element_cache_size(void);
 

@@ -12,3 +12,13 @@ usrsub_jet usrsub_polynomial_eval(const usrsub_polynomial *p, double x)
     usrsub_jet j = {v, d1, d2};
     return j;
 }
+
+double usrsub_polynomial_derivative(const usrsub_polynomial *p, double x, int order)
+{
+    double v = 0.0;
+    for (int k = p->degree; k >= order; --k) {
+        const double factor = order == 0 ? 1.0 : order == 1 ? k : (double)k * (k - 1);
+        v = v * x + factor * p->a[k];
+    }
+    return v;
+}

@@ -23,12 +23,14 @@ int usrsub_spline_init(usrsub_spline *s, int n, const double *x, const double *y
                                " x must be strictly increasing", i + 1, x[i], i, x[i - 1]);
     }
     const int m = n - 1; /* intervals */
+    const int nbuckets = 2 * m;
     double *xs = malloc(sizeof(double) * (size_t)n);
     double *coef = malloc(sizeof(double) * 4u * (size_t)m);
+    int *bucket = malloc(sizeof(int) * (size_t)(nbuckets + 1));
     double *curv = calloc((size_t)n, sizeof(double)); /* second derivatives */
     double *work = calloc((size_t)n, sizeof(double));
-    if (xs == NULL || coef == NULL || curv == NULL || work == NULL) {
-        free(xs), free(coef), free(curv), free(work);
+    if (xs == NULL || coef == NULL || bucket == NULL || curv == NULL || work == NULL) {
+        free(xs), free(coef), free(bucket), free(curv), free(work);
         return usrsub_fail(msg, "out of memory for a %d-point spline", n);
     }
     memcpy(xs, x, sizeof(double) * (size_t)n);
@@ -58,6 +60,15 @@ int usrsub_spline_init(usrsub_spline *s, int n, const double *x, const double *y
     s->n = n;
     s->x = xs;
     s->coef = coef;
+    s->nbuckets = nbuckets;
+    s->bucket_scale = nbuckets / (x[m] - x[0]);
+    s->bucket = bucket;
+    for (int b = 0, i = 0; b <= nbuckets; ++b) {
+        const double edge = x[0] + b / s->bucket_scale;
+        while (i < m - 1 && x[i + 1] <= edge)
+            ++i;
+        bucket[b] = i;
+    }
     free(curv);
     free(work);
     return 0;
@@ -67,38 +78,61 @@ void usrsub_spline_free(usrsub_spline *s)
 {
     free(s->x);
     free(s->coef);
+    free(s->bucket);
     memset(s, 0, sizeof *s);
+}
+
+/* The interval holding x, for x0 < x < x_last: a bucket, then a step or two
+ * (a bisection where knots cluster). */
+static int interval_of(const usrsub_spline *s, double x)
+{
+    const double *xs = s->x;
+    const int last = s->n - 1;
+    int b = (int)((x - xs[0]) * s->bucket_scale);
+    if (b >= s->nbuckets)
+        b = s->nbuckets - 1;
+    int lo = s->bucket[b], hi = s->bucket[b + 1] + 1; /* xs[lo] <= x < xs[hi] */
+    while (lo > 0 && xs[lo] > x) /* x rounded into the next bucket */
+        --lo;
+    if (hi - lo > 4) {
+        while (hi - lo > 1) {
+            const int mid = (lo + hi) >> 1;
+            if (xs[mid] <= x)
+                lo = mid;
+            else
+                hi = mid;
+        }
+    } else {
+        while (lo + 1 < last && xs[lo + 1] <= x)
+            ++lo;
+    }
+    return lo;
 }
 
 usrsub_jet usrsub_spline_eval(const usrsub_spline *s, double x)
 {
-    const double *xs = s->x;
     usrsub_jet j;
-    if (x <= xs[0]) {
-        j.value = s->coef[0] + s->coef[1] * (x - xs[0]);
-        j.d1 = s->coef[1];
-        j.d2 = 0.0;
-        return j;
-    }
-    const int last = s->n - 1;
-    if (x >= xs[last]) {
-        j.value = s->y_end + s->slope_end * (x - xs[last]);
-        j.d1 = s->slope_end;
-        j.d2 = 0.0;
-        return j;
-    }
-    int lo = 0, hi = last; /* xs[lo] <= x < xs[hi] */
-    while (hi - lo > 1) {
-        const int mid = (lo + hi) >> 1;
-        if (xs[mid] <= x)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    const double *c = s->coef + 4 * lo;
-    const double t = x - xs[lo];
-    j.value = c[0] + t * (c[1] + t * (c[2] + t * c[3]));
-    j.d1 = c[1] + t * (2.0 * c[2] + 3.0 * t * c[3]);
-    j.d2 = 2.0 * c[2] + 6.0 * t * c[3];
+    j.value = usrsub_spline_derivative(s, x, 0);
+    j.d1 = usrsub_spline_derivative(s, x, 1);
+    j.d2 = usrsub_spline_derivative(s, x, 2);
     return j;
+}
+
+double usrsub_spline_derivative(const usrsub_spline *s, double x, int order)
+{
+    const double *xs = s->x;
+    const int last = s->n - 1;
+    if (x <= xs[0])
+        return order == 0 ? s->coef[0] + s->coef[1] * (x - xs[0]) : order == 1 ? s->coef[1] : 0.0;
+    if (x >= xs[last])
+        return order == 0 ? s->y_end + s->slope_end * (x - xs[last])
+                          : order == 1 ? s->slope_end : 0.0;
+    const int i = interval_of(s, x);
+    const double *c = s->coef + 4 * i;
+    const double t = x - xs[i];
+    switch (order) {
+    case 0: return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+    case 1: return c[1] + t * (2.0 * c[2] + 3.0 * t * c[3]);
+    default: return 2.0 * c[2] + 6.0 * t * c[3];
+    }
 }

@@ -17,6 +17,9 @@ typedef struct usrsub_polynomial {
 
 usrsub_jet usrsub_polynomial_eval(const usrsub_polynomial *p, double x);
 
+/* One derivative (order 0, 1 or 2) alone, by Horner's rule on its coefficients. */
+double usrsub_polynomial_derivative(const usrsub_polynomial *p, double x, int order);
+
 #ifdef __cplusplus
 }
 #endif

@@ -19,6 +19,11 @@ typedef struct usrsub_spline {
     double *coef;   /* 4 per interval: value, slope, c2, c3 at the left knot */
     double y_end;   /* value at the last knot */
     double slope_end; /* slope at the last knot */
+    /* Interval look-up in O(1): the knot range cut into nbuckets equal
+     * buckets, bucket[b] the interval holding the bucket's left edge. */
+    int nbuckets;
+    double bucket_scale;
+    int *bucket;
 } usrsub_spline;
 
 /* Builds the spline; x and y are copied. On error (n < 2, a non-finite value,
@@ -29,6 +34,9 @@ void usrsub_spline_free(usrsub_spline *s);
 
 /* Value, first and second derivative at x (linear extension outside). */
 usrsub_jet usrsub_spline_eval(const usrsub_spline *s, double x);
+
+/* One derivative (order 0, 1 or 2) at x. */
+double usrsub_spline_derivative(const usrsub_spline *s, double x, int order);
 
 #ifdef __cplusplus
 }

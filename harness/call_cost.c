@@ -1,0 +1,233 @@
+/* Cost per call of the user entries (call_cost.h). */
+#include "call_cost.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "host.h"
+#include "usrsub/coupler.h"
+
+#define SAMPLE_POINTS 256
+#define BATCH_NS 2e6 /* aim for batches of about 2 ms */
+
+static double seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int compare_doubles(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+double hx_time_calls(void (*fn)(void *ctx, long calls), void *ctx, long calls, int repeats,
+                     double *min_ns, double *max_ns)
+{
+    fn(ctx, calls / 10 + 1); /* warm-up: caches, branch predictors, lazy set-up */
+    double *t = malloc(sizeof(double) * (size_t)repeats);
+    for (int r = 0; r < repeats; ++r) {
+        const double start = seconds();
+        fn(ctx, calls);
+        t[r] = 1e9 * (seconds() - start) / (double)calls;
+    }
+    qsort(t, (size_t)repeats, sizeof(double), compare_doubles);
+    const double median = t[repeats / 2];
+    if (min_ns != NULL)
+        *min_ns = t[0];
+    if (max_ns != NULL)
+        *max_ns = t[repeats - 1];
+    free(t);
+    return median;
+}
+
+/* ---- the timed bodies ------------------------------------------------------------ */
+
+typedef struct coupler_bench {
+    usrsub_coupler_fn *fn;
+    int id, npar, ndisp;
+    double *par;
+    double disp[SAMPLE_POINTS][3];
+    double out[9];
+    double sink;
+} coupler_bench;
+
+static void run_coupler(void *ctx, long calls)
+{
+    coupler_bench *b = ctx;
+    int id = b->id, npar = b->npar, ndisp = b->ndisp, iflag = 0;
+    double time = 0.0, sink = 0.0;
+    for (long k = 0; k < calls; ++k) {
+        b->fn(&id, &time, b->par, &npar, b->disp[k & (SAMPLE_POINTS - 1)], &ndisp, &iflag, b->out);
+        sink += b->out[0];
+    }
+    b->sink += sink;
+}
+
+typedef struct gfosub_bench {
+    usrsub_gfosub_fn *fn;
+    hx_call *call;
+    int id, npar;
+    double *par;
+    double out[6];
+    double sink;
+} gfosub_bench;
+
+static void run_gfosub(void *ctx, long calls)
+{
+    gfosub_bench *b = ctx;
+    int id = b->id, npar = b->npar, dflag = 0, iflag = 0;
+    double time = 0.0, sink = 0.0;
+    hx_host_begin_call(b->call);
+    for (long k = 0; k < calls; ++k) {
+        b->fn(&id, &time, b->par, &npar, &dflag, &iflag, b->out);
+        sink += b->out[0];
+    }
+    hx_host_end_call();
+    b->sink += sink;
+}
+
+typedef struct fiesub_bench {
+    usrsub_fiesub_fn *fn;
+    int id, npar;
+    double *par;
+    double disp[SAMPLE_POINTS][6], velo[SAMPLE_POINTS][6];
+    double field[6], dfd[36], dfv[36];
+    double sink;
+} fiesub_bench;
+
+static void run_fiesub(void *ctx, long calls)
+{
+    fiesub_bench *b = ctx;
+    int id = b->id, npar = b->npar, dflag = 0, iflag = 0;
+    double time = 0.0, sink = 0.0;
+    for (long k = 0; k < calls; ++k) {
+        const int s = (int)(k & (SAMPLE_POINTS - 1));
+        b->fn(&id, &time, b->par, &npar, b->disp[s], b->velo[s], &dflag, &iflag, b->field,
+              b->dfd, b->dfv);
+        sink += b->field[0] + b->dfd[0];
+    }
+    b->sink += sink;
+}
+
+/* Calls per batch so that a batch takes about BATCH_NS. */
+static long calibrate(void (*fn)(void *, long), void *ctx)
+{
+    long calls = 1000;
+    for (;;) {
+        const double start = seconds();
+        fn(ctx, calls);
+        const double ns = 1e9 * (seconds() - start);
+        if (ns > 0.2 * BATCH_NS || calls > 100000000L)
+            return (long)fmax(1000.0, (double)calls * BATCH_NS / fmax(ns, 1.0));
+        calls *= 4;
+    }
+}
+
+static int model_string(void *ctx, int id, char *text, int capacity)
+{
+    const char *s = hx_model_string(ctx, id);
+    if (s == NULL)
+        return -1;
+    snprintf(text, (size_t)capacity, "%s", s);
+    return 0;
+}
+
+/* Coupler inputs across each term's data (as check samples them). */
+static void coupler_points(hx_session *s, hx_binding *b, int n, coupler_bench *cb)
+{
+    usrsub_coupler c;
+    usrsub_message msg;
+    const int decoded =
+        usrsub_coupler_decode(&c, b->par, b->npar, n, model_string, s->model, &msg) == 0;
+    for (int i = 0; i < n; ++i) {
+        double lo = -1.0, hi = 1.0;
+        if (decoded)
+            usrsub_coupler_term_range(&c.term[i], &lo, &hi);
+        for (int k = 0; k < SAMPLE_POINTS; ++k)
+            cb->disp[k][i] = lo + (hi - lo) * ((k * 37 + i * 11) % SAMPLE_POINTS + 0.5) / SAMPLE_POINTS;
+    }
+    if (decoded)
+        usrsub_coupler_free(&c);
+}
+
+static void field_points(hx_session *s, hx_binding *b, fiesub_bench *fb)
+{
+    const hx_force *f = &s->model->forces[b->index];
+    hx_frame I, J;
+    hx_marker_frame(s->model, s->frames, f->i_marker, &I);
+    hx_marker_frame(s->model, s->frames, f->j_marker, &J);
+    double disp[6], velo[6];
+    hx_field_state(&I, &J, disp, velo);
+    for (int k = 0; k < SAMPLE_POINTS; ++k)
+        for (int i = 0; i < 6; ++i) {
+            const double wobble = 1.0 + 1e-3 * ((k * 7 + i) % 13);
+            fb->disp[k][i] = disp[i] * wobble;
+            fb->velo[k][i] = velo[i] * wobble;
+        }
+}
+
+int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int capacity)
+{
+    int rows = 0;
+    for (int k = 0; k < s->bindings.count; ++k) {
+        hx_binding *b = &s->bindings.items[k];
+        if (b->kind == HX_BIND_COUPLER) {
+            const hx_coupler *c = &s->model->couplers[b->index];
+            coupler_bench *cb = calloc(1, sizeof *cb);
+            cb->id = b->id, cb->npar = b->npar, cb->ndisp = c->njoints, cb->par = b->par;
+            coupler_points(s, b, c->njoints, cb);
+            for (int fn = 0; fn < 3 && rows < capacity; ++fn) {
+                cb->fn = b->coupler[fn];
+                hx_call_cost *r = &costs[rows++];
+                snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
+                snprintf(r->function, sizeof r->function, "%s", b->names[fn]);
+                r->median_ns = hx_time_calls(run_coupler, cb, calibrate(run_coupler, cb), repeats,
+                                             &r->min_ns, &r->max_ns);
+                r->host_calls = r->dependency_calls = 0;
+            }
+            free(cb);
+        } else if (b->kind == HX_BIND_GFOSUB && rows < capacity) {
+            hx_call dep, eval;
+            double out[6];
+            hx_binding_call_init(b, &dep, 1);
+            hx_call_gfosub(b, 0.0, 0, 1, out, &dep);
+            hx_binding_call_init(b, &eval, 0);
+            hx_call_gfosub(b, 0.0, 0, 0, out, &eval);
+            gfosub_bench gb = {b->gfosub, &eval, b->id, b->npar, b->par, {0}, 0.0};
+            hx_call_cost *r = &costs[rows++];
+            snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
+            snprintf(r->function, sizeof r->function, "%s", b->names[0]);
+            r->dependency_calls = dep.host_calls;
+            r->host_calls = eval.host_calls;
+            r->median_ns = hx_time_calls(run_gfosub, &gb, calibrate(run_gfosub, &gb), repeats,
+                                         &r->min_ns, &r->max_ns);
+        } else if (b->kind == HX_BIND_FIESUB && rows < capacity) {
+            fiesub_bench *fb = calloc(1, sizeof *fb);
+            fb->fn = b->fiesub, fb->id = b->id, fb->npar = b->npar, fb->par = b->par;
+            field_points(s, b, fb);
+            hx_call_cost *r = &costs[rows++];
+            snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
+            snprintf(r->function, sizeof r->function, "%s", b->names[0]);
+            r->median_ns = hx_time_calls(run_fiesub, fb, calibrate(run_fiesub, fb), repeats,
+                                         &r->min_ns, &r->max_ns);
+            r->host_calls = r->dependency_calls = 0;
+            free(fb);
+        }
+    }
+    return rows;
+}
+
+void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count)
+{
+    fprintf(f, "%-26s %-20s %12s %12s %12s %10s %10s\n", "element", "function", "median ns",
+            "min ns", "max ns", "host/eval", "host/dep");
+    for (int k = 0; k < count; ++k)
+        fprintf(f, "%-26s %-20s %12.1f %12.1f %12.1f %10d %10d\n", costs[k].element,
+                costs[k].function, costs[k].median_ns, costs[k].min_ns, costs[k].max_ns,
+                costs[k].host_calls, costs[k].dependency_calls);
+}

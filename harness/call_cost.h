@@ -1,0 +1,31 @@
+/*
+ * Cost per call of every user-subroutine entry of a session, through the
+ * dlopen'd function pointers: warm-up, then the median over repeated timed
+ * batches, with the host calls one evaluation makes.
+ */
+#ifndef HX_CALL_COST_H
+#define HX_CALL_COST_H
+
+#include <stdio.h>
+
+#include "session.h"
+
+typedef struct hx_call_cost {
+    char element[64];
+    char function[32];
+    double median_ns, min_ns, max_ns;
+    int host_calls;       /* per evaluation */
+    int dependency_calls; /* in the dependency pass */
+} hx_call_cost;
+
+/* Times each entry of each user element (COUSUB, COUXX and COUXX2 separately).
+ * Returns the number of rows written into costs (at most capacity). */
+int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int capacity);
+
+/* Median of repeated timings of fn(ctx) called `calls` times, in ns per call. */
+double hx_time_calls(void (*fn)(void *ctx, long calls), void *ctx, long calls, int repeats,
+                     double *min_ns, double *max_ns);
+
+void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count);
+
+#endif

@@ -1,0 +1,12 @@
+/* Small dense linear algebra of the harness (row-major matrices). */
+#ifndef HX_LINALG_H
+#define HX_LINALG_H
+
+/* Solves A x = b in place (b becomes x) by Gaussian elimination with partial
+ * pivoting; A is destroyed. Returns 0, or -1 when A is singular. */
+int hx_solve(int n, double *A, double *b);
+
+/* Largest |x_i|. */
+double hx_max_abs(const double *x, int n);
+
+#endif

@@ -1,0 +1,223 @@
+/* Simulations: integration, CSV output and summary (simulation.h). */
+#include "simulation.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "vecmath.h"
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void hx_csv_header(FILE *f, const hx_dynamics *d)
+{
+    const hx_model *m = d->m;
+    fprintf(f, "t");
+    for (int k = 0; k < m->nbodies; ++k) {
+        const hx_body_dof *dof = &d->dof[k];
+        const int id = m->bodies[k].id;
+        if (dof->kind == HX_DOF_FREE)
+            fprintf(f, ",body%d.x,body%d.y,body%d.z,body%d.q0,body%d.q1,body%d.q2,body%d.q3"
+                       ",body%d.vx,body%d.vy,body%d.vz,body%d.wx,body%d.wy,body%d.wz",
+                    id, id, id, id, id, id, id, id, id, id, id, id, id);
+        else if (dof->kind != HX_DOF_GROUND) {
+            const int jid = m->joints[m->bodies[k].joint].id;
+            fprintf(f, ",joint%d.q,joint%d.u", jid, jid);
+        }
+    }
+    for (int k = 0; k < m->ncouplers; ++k) {
+        const hx_coupler *c = &m->couplers[k];
+        fprintf(f, ",coupler%d.lambda", c->id);
+        for (int j = 0; j < c->njoints; ++j)
+            fprintf(f, ",coupler%d.force%d", c->id, j + 1);
+    }
+    for (int k = 0; k < m->nforces; ++k) {
+        const int id = m->forces[k].id;
+        static const char *const names[6] = {"x", "y", "z", "ax", "ay", "az"};
+        for (int j = 0; j < 6; ++j)
+            fprintf(f, ",force%d.d%s", id, names[j]);
+        static const char *const loads[6] = {"fx", "fy", "fz", "tx", "ty", "tz"};
+        for (int j = 0; j < 6; ++j)
+            fprintf(f, ",force%d.%s", id, loads[j]);
+    }
+    fprintf(f, ",energy,phi,phidot\n");
+}
+
+int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, double energy)
+{
+    const hx_model *m = d->m;
+    double *ydot = malloc(sizeof(double) * (size_t)d->n);
+    if (ydot == NULL || hx_dynamics_rhs(d, t, y, ydot) != 0) {
+        free(ydot);
+        return -1;
+    }
+    free(ydot);
+    double phi, phidot;
+    if (hx_dynamics_residuals(d, t, y, &phi, &phidot) != 0)
+        return -1;
+    fprintf(f, "%.10g", t);
+    for (int k = 0; k < m->nbodies; ++k) {
+        const hx_body_dof *dof = &d->dof[k];
+        const double *u = y + d->nq + dof->u;
+        if (dof->kind == HX_DOF_FREE) {
+            const hx_frame *fr = &d->s->frames[k];
+            for (int j = 0; j < 7; ++j)
+                fprintf(f, ",%.12g", y[dof->q + j]);
+            fprintf(f, ",%.12g,%.12g,%.12g,%.12g,%.12g,%.12g", u[0], u[1], u[2], fr->w[0],
+                    fr->w[1], fr->w[2]);
+        } else if (dof->kind != HX_DOF_GROUND) {
+            fprintf(f, ",%.15g,%.15g", y[dof->q], u[0]);
+        }
+    }
+    for (int k = 0; k < m->ncouplers; ++k) {
+        const hx_coupler *c = &m->couplers[k];
+        const double lambda = d->lambda[k];
+        fprintf(f, ",%.15g", lambda);
+        for (int j = 0; j < c->njoints; ++j)
+            fprintf(f, ",%.15g", hx_dynamics_coupler_force(d, t, y, k, j));
+    }
+    for (int k = 0; k < m->nforces; ++k) {
+        const hx_force *fo = &m->forces[k];
+        hx_frame I, J;
+        hx_marker_frame(m, d->s->frames, fo->i_marker, &I);
+        hx_marker_frame(m, d->s->frames, fo->j_marker, &J);
+        double disp[6], velo[6];
+        hx_field_state(&I, &J, disp, velo);
+        for (int j = 0; j < 6; ++j)
+            fprintf(f, ",%.12g", disp[j]);
+        for (int j = 0; j < 6; ++j)
+            fprintf(f, ",%.12g", d->element_load[6 * k + j]);
+    }
+    fprintf(f, ",%.15g,%.3g,%.3g\n", energy, phi, phidot);
+    return 0;
+}
+
+typedef struct run_context {
+    hx_dynamics *d;
+    const hx_simulation_options *opt;
+    hx_simulation_result *result;
+    double started, last_progress;
+} run_context;
+
+static int rhs(void *ctx, double t, const double *y, double *ydot)
+{
+    return hx_dynamics_rhs(((run_context *)ctx)->d, t, y, ydot);
+}
+
+static int project(void *ctx, double t, double *y)
+{
+    hx_dynamics *d = ((run_context *)ctx)->d;
+    if (hx_dynamics_project(d, t, y) != 0)
+        return -1;
+    return d->m->ncouplers > 0 ? 1 : 0;
+}
+
+static void advance(void *ctx, double *y, double h)
+{
+    hx_dynamics_advance_positions(((run_context *)ctx)->d, y, h);
+}
+
+static int output(void *ctx, double t, const double *y)
+{
+    run_context *rc = ctx;
+    hx_dynamics *d = rc->d;
+    double kinetic;
+    const double energy = hx_dynamics_energy(d, t, y, &kinetic);
+    rc->result->energy_scale = fmax(rc->result->energy_scale, fabs(kinetic));
+    rc->result->energy_error_max = fmax(rc->result->energy_error_max, fabs(energy - rc->result->energy0));
+    if (rc->opt->csv != NULL && hx_csv_row(rc->opt->csv, d, t, y, energy) != 0)
+        return 1;
+    if (rc->opt->observer != NULL && rc->opt->observer(rc->opt->observer_ctx, d, t, y) != 0)
+        return 1;
+    if (rc->opt->progress) {
+        const double wall = now();
+        if (wall - rc->last_progress >= 1.0) {
+            const double end = rc->opt->integration.t_end;
+            fprintf(stderr, "\rrun: t = %.6g of %.6g (%.0f%%), %.1f s", t, end,
+                    end > 0 ? 100.0 * t / end : 100.0, wall - rc->started);
+            fflush(stderr);
+            rc->last_progress = wall;
+        }
+    }
+    return 0;
+}
+
+int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
+                hx_simulation_result *result)
+{
+    memset(result, 0, sizeof *result);
+    double *y = malloc(sizeof(double) * (size_t)d->n);
+    if (y == NULL) {
+        snprintf(result->message, sizeof result->message, "out of memory");
+        return -1;
+    }
+    d->failed = 0;
+    if (hx_dynamics_initial_state(d, y) != 0) {
+        snprintf(result->message, sizeof result->message, "%s", d->message);
+        result->status = HX_INTEGRATION_FAILED;
+        free(y);
+        return -1;
+    }
+    double kinetic0;
+    result->energy0 = hx_dynamics_energy(d, 0.0, y, &kinetic0);
+    result->energy_scale = fmax(fabs(result->energy0), fabs(kinetic0));
+    run_context rc = {d, opt, result, now(), now()};
+    if (opt->csv != NULL) {
+        hx_csv_header(opt->csv, d);
+        hx_csv_row(opt->csv, d, 0.0, y, result->energy0);
+    }
+    if (opt->observer != NULL)
+        opt->observer(opt->observer_ctx, d, 0.0, y);
+    hx_ode ode = {d->n, d->nq, d->nu, rhs, project, advance, &rc};
+    hx_integrator_options io = opt->integration;
+    io.output = output;
+    const long evaluations_before = d->evaluations;
+    const double start = now();
+    result->status = hx_integrate(&ode, 0.0, y, &io, &result->stats);
+    result->seconds = now() - start;
+    (void)evaluations_before;
+    if (opt->progress && result->seconds >= 1.0)
+        fprintf(stderr, "\n");
+    result->energy_end = hx_dynamics_energy(d, result->stats.t_reached, y, NULL);
+    result->max_phi = d->max_phi;
+    result->max_phidot = d->max_phidot;
+    if (d->failed)
+        snprintf(result->message, sizeof result->message, "%s", d->message);
+    else if (result->status != HX_INTEGRATION_OK)
+        snprintf(result->message, sizeof result->message, "integration %s at t = %.6g",
+                 hx_status_text(result->status), result->stats.t_reached);
+    if (y_end != NULL)
+        memcpy(y_end, y, sizeof(double) * (size_t)d->n);
+    free(y);
+    return result->status == HX_INTEGRATION_OK ? 0 : -1;
+}
+
+void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_options *opt,
+                           const hx_simulation_result *r)
+{
+    const double e0 = r->energy0;
+    (void)d;
+    fprintf(f, "run: %s with %s to t = %.6g\n", hx_status_text(r->status),
+            hx_method_name(opt->integration.method), r->stats.t_reached);
+    fprintf(f, "  steps %ld, rejected %ld, right-hand sides %ld, last step %.3g\n", r->stats.steps,
+            r->stats.rejected, r->stats.evaluations, r->stats.last_step);
+    fprintf(f, "  run time %.3f s (%.3g us per right-hand side)\n", r->seconds,
+            r->stats.evaluations ? 1e6 * r->seconds / (double)r->stats.evaluations : 0.0);
+    if (d->m->ncouplers > 0)
+        fprintf(f, "  largest constraint residual |phi| %.3g, |dphi/dt| %.3g\n", r->max_phi,
+                r->max_phidot);
+    fprintf(f, "  energy %.10g -> %.10g, largest error %.3g (%.3g relative)\n", e0,
+            r->energy_end, r->energy_error_max,
+            r->energy_scale > 0.0 ? r->energy_error_max / r->energy_scale : 0.0);
+    fprintf(f, "  (relative to max(|E(0)|, largest kinetic energy) = %.6g)\n", r->energy_scale);
+    if (r->stats.stiff)
+        fprintf(f, "  dopri5: the problem seems to become stiff at t = %.6g\n", r->stats.t_stiff);
+    if (r->message[0] != '\0')
+        fprintf(f, "  %s\n", r->message);
+}

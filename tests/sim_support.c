@@ -1,0 +1,112 @@
+/* Helpers of the simulating tests (sim_support.h). */
+#include "sim_support.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "commands.h"
+#include "test_support.h"
+
+static const char *model_path(const char *model)
+{
+    static char path[1024];
+    if (model[0] == '/')
+        snprintf(path, sizeof path, "%s", model);
+    else
+        snprintf(path, sizeof path, "%s/%s", EXAMPLES_DIR, model);
+    return path;
+}
+
+static int observe(void *ctx, hx_dynamics *d, double t, const double *y)
+{
+    trajectory *p = ctx;
+    if (p->rows == p->capacity) {
+        p->capacity = p->capacity ? 2 * p->capacity : 256;
+        p->t = realloc(p->t, sizeof(double) * (size_t)p->capacity);
+        p->y = realloc(p->y, sizeof(double) * (size_t)(p->capacity * p->n));
+        p->lambda = realloc(p->lambda, sizeof(double) * (size_t)(p->capacity * (p->ncouplers + 1)));
+    }
+    /* multipliers belong to the last evaluation; evaluate at this state */
+    double *ydot = malloc(sizeof(double) * (size_t)p->n);
+    hx_dynamics_rhs(d, t, y, ydot);
+    free(ydot);
+    p->t[p->rows] = t;
+    memcpy(p->y + p->rows * p->n, y, sizeof(double) * (size_t)p->n);
+    memcpy(p->lambda + p->rows * p->ncouplers, d->lambda,
+           sizeof(double) * (size_t)p->ncouplers);
+    p->rows++;
+    return 0;
+}
+
+void sim_run(sim *s, const char *model, hx_method method, double h, double t_end,
+             double output_interval)
+{
+    memset(s, 0, sizeof *s);
+    usrsub_message msg;
+    if (hx_session_open(&s->session, model_path(model), &msg) != 0)
+        fail_msg("%s", msg.text);
+    if (hx_dynamics_init(&s->dynamics, &s->session, &msg) != 0)
+        fail_msg("%s", msg.text);
+    s->path.n = s->dynamics.n;
+    s->path.ncouplers = s->session.model->ncouplers;
+    hx_simulation_options so = {0};
+    hx_integrator_defaults(&so.integration);
+    so.integration.method = method;
+    so.integration.t_end = t_end;
+    if (method == HX_METHOD_DOPRI5) {
+        so.integration.rtol = h;
+        so.integration.atol = h * 1e-3;
+    } else {
+        so.integration.step = h;
+    }
+    so.integration.output_interval = output_interval;
+    so.observer = observe;
+    so.observer_ctx = &s->path;
+    if (hx_simulate(&s->dynamics, &so, NULL, &s->result) != 0)
+        fail_msg("simulate %s: %s", model, s->result.message);
+}
+
+void sim_close(sim *s)
+{
+    hx_dynamics_free(&s->dynamics);
+    hx_session_close(&s->session);
+    free(s->path.t);
+    free(s->path.y);
+    free(s->path.lambda);
+}
+
+double sim_state(const sim *s, int row, int k)
+{
+    return s->path.y[row * s->path.n + k];
+}
+
+static int joint_body(const sim *s, int joint_id)
+{
+    const hx_model *m = s->session.model;
+    const int j = hx_model_joint(m, joint_id);
+    assert_true(j >= 0);
+    return m->markers[m->joints[j].i_marker].body;
+}
+
+int sim_joint_q(const sim *s, int joint_id)
+{
+    return s->dynamics.dof[joint_body(s, joint_id)].q;
+}
+
+int sim_joint_u(const sim *s, int joint_id)
+{
+    return s->dynamics.nq + s->dynamics.dof[joint_body(s, joint_id)].u;
+}
+
+int sim_check(const char *model)
+{
+    char *argv[] = {"check", (char *)model_path(model), NULL};
+    fflush(stdout);
+    return hx_command_check(2, argv);
+}
+
+double sim_lambda(const sim *s, int row, int coupler)
+{
+    return s->path.lambda[row * s->path.ncouplers + coupler];
+}

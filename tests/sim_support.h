@@ -1,0 +1,38 @@
+/* Helpers of the tests that simulate bundled example models in-process. */
+#ifndef SIM_SUPPORT_H
+#define SIM_SUPPORT_H
+
+#include "simulation.h"
+
+typedef struct trajectory {
+    int n;          /* state size */
+    int rows, capacity;
+    double *t, *y;  /* rows x n states */
+    double *lambda; /* rows x (couplers) multipliers */
+    int ncouplers;
+} trajectory;
+
+typedef struct sim {
+    hx_session session;
+    hx_dynamics dynamics;
+    hx_simulation_result result;
+    trajectory path;
+} sim;
+
+/* Opens EXAMPLES_DIR/name (or a path), simulates with the method, fixed step h
+ * (or tolerance for dopri5 in rtol), to t_end, keeping the states every
+ * output_interval. Fails the test on any error. */
+void sim_run(sim *s, const char *model, hx_method method, double h, double t_end,
+             double output_interval);
+void sim_close(sim *s);
+/* Value of state component k of a row. */
+double sim_state(const sim *s, int row, int k);
+/* Multiplier of a coupler at a row. */
+double sim_lambda(const sim *s, int row, int coupler);
+/* Offset of a jointed body's coordinate (position) by joint id. */
+int sim_joint_q(const sim *s, int joint_id);
+int sim_joint_u(const sim *s, int joint_id);
+/* Runs "usrsub-harness check" in-process; returns its exit status. */
+int sim_check(const char *model);
+
+#endif
