@@ -109,6 +109,36 @@ hx_binding *hx_binding_of_force(hx_bindings *bs, int force_index)
 void hx_binding_call_init(hx_binding *b, hx_call *call, int iflag)
 {
     hx_call_init(call, b->element, b->id, iflag != 0, &b->deps);
+    call->warned = &b->warned_undeclared;
+}
+
+int hx_dependency_passes(hx_bindings *bs, const hx_model *m, const hx_frame *frames)
+{
+    for (int k = 0; k < bs->count; ++k) {
+        hx_binding *b = &bs->items[k];
+        double out[64];
+        if (b->kind == HX_BIND_COUPLER) {
+            const hx_coupler *c = &m->couplers[b->index];
+            double disp[3];
+            for (int i = 0; i < c->njoints; ++i)
+                disp[i] = hx_joint_coordinate(m, frames, c->joint[i]);
+            for (int fn = 0; fn < 3; ++fn)
+                hx_call_coupler(b, fn, 0.0, disp, c->njoints, 1, out, NULL);
+        } else if (b->kind == HX_BIND_GFOSUB) {
+            hx_call_gfosub(b, 0.0, 0, 1, out, NULL);
+        } else {
+            const hx_force *f = &m->forces[b->index];
+            hx_frame I, J;
+            hx_marker_frame(m, frames, f->i_marker, &I);
+            hx_marker_frame(m, frames, f->j_marker, &J);
+            double disp[6], velo[6], dfd[36], dfv[36];
+            hx_field_state(&I, &J, disp, velo);
+            hx_call_fiesub(b, 0.0, disp, velo, 0, 1, out, dfd, dfv, NULL);
+        }
+        if (hx_host_stop_requested())
+            return -1;
+    }
+    return 0;
 }
 
 /* The caller's record (set up with hx_binding_call_init) or a default one. */

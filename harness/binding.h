@@ -30,6 +30,7 @@ typedef struct hx_binding {
     double *par;         /* the USER list handed to the entries */
     int npar;
     hx_dependencies deps; /* declared in the dependency pass */
+    int warned_undeclared;
 } hx_binding;
 
 typedef struct hx_bindings {
@@ -48,6 +49,10 @@ hx_binding *hx_binding_of_force(hx_bindings *b, int force_index);
 
 /* A call record for b, recording into (iflag) or checking against b->deps. */
 void hx_binding_call_init(hx_binding *b, hx_call *call, int iflag);
+
+/* The dependency pass of every element (iflag = 1) at the current frames, as a
+ * solver runs it before the analysis; returns -1 when an element stopped. */
+int hx_dependency_passes(hx_bindings *b, const hx_model *m, const hx_frame *frames);
 
 /* Calls; call (may be NULL) receives the host's record of the call. With
  * iflag set, the host records the element's queries into b->deps. */

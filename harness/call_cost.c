@@ -1,6 +1,8 @@
 /* Cost per call of the user entries (call_cost.h). */
+#define _GNU_SOURCE /* sched_setaffinity, sched_getcpu */
 #include "call_cost.h"
 
+#include <sched.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,26 +25,6 @@ static int compare_doubles(const void *a, const void *b)
 {
     const double x = *(const double *)a, y = *(const double *)b;
     return (x > y) - (x < y);
-}
-
-double hx_time_calls(void (*fn)(void *ctx, long calls), void *ctx, long calls, int repeats,
-                     double *min_ns, double *max_ns)
-{
-    fn(ctx, calls / 10 + 1); /* warm-up: caches, branch predictors, lazy set-up */
-    double *t = malloc(sizeof(double) * (size_t)repeats);
-    for (int r = 0; r < repeats; ++r) {
-        const double start = seconds();
-        fn(ctx, calls);
-        t[r] = 1e9 * (seconds() - start) / (double)calls;
-    }
-    qsort(t, (size_t)repeats, sizeof(double), compare_doubles);
-    const double median = t[repeats / 2];
-    if (min_ns != NULL)
-        *min_ns = t[0];
-    if (max_ns != NULL)
-        *max_ns = t[repeats - 1];
-    free(t);
-    return median;
 }
 
 /* ---- the timed bodies ------------------------------------------------------------ */
@@ -171,54 +153,111 @@ static void field_points(hx_session *s, hx_binding *b, fiesub_bench *fb)
         }
 }
 
+/* Busy work until the processor has left its idle clock (about 0.3 s). */
+static void spin_up(void)
+{
+    volatile double x = 1.0;
+    const double until = seconds() + 0.3;
+    while (seconds() < until)
+        for (int k = 0; k < 10000; ++k)
+            x = x * 1.0000001 + 1e-9;
+}
+
+/* Stays on the processor it runs on: moving between cores (of different
+ * clocks, or shared with a neighbour) doubled timings on our 2-core machines. */
+static void pin_to_this_cpu(void)
+{
+    const int cpu = sched_getcpu();
+    if (cpu < 0)
+        return;
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    CPU_SET(cpu, &set);
+    sched_setaffinity(0, sizeof set, &set);
+}
+
+/* One timed entry: its batch body, context and batch size. */
+typedef struct timed_entry {
+    void (*run)(void *ctx, long calls);
+    void *ctx;
+    long calls;
+    double *ns; /* one per round */
+} timed_entry;
+
 int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int capacity)
 {
-    int rows = 0;
+    timed_entry entries[256];
+    void *contexts[256];
+    int rows = 0, ncontexts = 0;
+    if (capacity > 256)
+        capacity = 256;
+    pin_to_this_cpu();
     for (int k = 0; k < s->bindings.count; ++k) {
         hx_binding *b = &s->bindings.items[k];
         if (b->kind == HX_BIND_COUPLER) {
             const hx_coupler *c = &s->model->couplers[b->index];
-            coupler_bench *cb = calloc(1, sizeof *cb);
-            cb->id = b->id, cb->npar = b->npar, cb->ndisp = c->njoints, cb->par = b->par;
-            coupler_points(s, b, c->njoints, cb);
             for (int fn = 0; fn < 3 && rows < capacity; ++fn) {
+                coupler_bench *cb = calloc(1, sizeof *cb);
+                cb->id = b->id, cb->npar = b->npar, cb->ndisp = c->njoints, cb->par = b->par;
                 cb->fn = b->coupler[fn];
+                coupler_points(s, b, c->njoints, cb);
+                contexts[ncontexts++] = cb;
+                entries[rows] = (timed_entry){run_coupler, cb, 0, NULL};
                 hx_call_cost *r = &costs[rows++];
                 snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
                 snprintf(r->function, sizeof r->function, "%s", b->names[fn]);
-                r->median_ns = hx_time_calls(run_coupler, cb, calibrate(run_coupler, cb), repeats,
-                                             &r->min_ns, &r->max_ns);
                 r->host_calls = r->dependency_calls = 0;
             }
-            free(cb);
         } else if (b->kind == HX_BIND_GFOSUB && rows < capacity) {
-            hx_call dep, eval;
+            hx_call dep, *eval = calloc(1, sizeof *eval);
             double out[6];
             hx_binding_call_init(b, &dep, 1);
             hx_call_gfosub(b, 0.0, 0, 1, out, &dep);
-            hx_binding_call_init(b, &eval, 0);
-            hx_call_gfosub(b, 0.0, 0, 0, out, &eval);
-            gfosub_bench gb = {b->gfosub, &eval, b->id, b->npar, b->par, {0}, 0.0};
+            hx_binding_call_init(b, eval, 0);
+            hx_call_gfosub(b, 0.0, 0, 0, out, eval);
+            gfosub_bench *gb = calloc(1, sizeof *gb);
+            *gb = (gfosub_bench){b->gfosub, eval, b->id, b->npar, b->par, {0}, 0.0};
+            contexts[ncontexts++] = gb;
+            contexts[ncontexts++] = eval;
+            entries[rows] = (timed_entry){run_gfosub, gb, 0, NULL};
             hx_call_cost *r = &costs[rows++];
             snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
             snprintf(r->function, sizeof r->function, "%s", b->names[0]);
             r->dependency_calls = dep.host_calls;
-            r->host_calls = eval.host_calls;
-            r->median_ns = hx_time_calls(run_gfosub, &gb, calibrate(run_gfosub, &gb), repeats,
-                                         &r->min_ns, &r->max_ns);
+            r->host_calls = eval->host_calls;
         } else if (b->kind == HX_BIND_FIESUB && rows < capacity) {
             fiesub_bench *fb = calloc(1, sizeof *fb);
             fb->fn = b->fiesub, fb->id = b->id, fb->npar = b->npar, fb->par = b->par;
             field_points(s, b, fb);
+            contexts[ncontexts++] = fb;
+            entries[rows] = (timed_entry){run_fiesub, fb, 0, NULL};
             hx_call_cost *r = &costs[rows++];
             snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
             snprintf(r->function, sizeof r->function, "%s", b->names[0]);
-            r->median_ns = hx_time_calls(run_fiesub, fb, calibrate(run_fiesub, fb), repeats,
-                                         &r->min_ns, &r->max_ns);
             r->host_calls = r->dependency_calls = 0;
-            free(fb);
         }
     }
+    spin_up();
+    for (int k = 0; k < rows; ++k) {
+        entries[k].calls = calibrate(entries[k].run, entries[k].ctx);
+        entries[k].ns = malloc(sizeof(double) * (size_t)repeats);
+    }
+    /* rounds of one batch per entry: a slow spell of the machine falls on all alike */
+    for (int round = 0; round < repeats; ++round)
+        for (int k = 0; k < rows; ++k) {
+            const double start = seconds();
+            entries[k].run(entries[k].ctx, entries[k].calls);
+            entries[k].ns[round] = 1e9 * (seconds() - start) / (double)entries[k].calls;
+        }
+    for (int k = 0; k < rows; ++k) {
+        qsort(entries[k].ns, (size_t)repeats, sizeof(double), compare_doubles);
+        costs[k].median_ns = entries[k].ns[repeats / 2];
+        costs[k].min_ns = entries[k].ns[0];
+        costs[k].max_ns = entries[k].ns[repeats - 1];
+        free(entries[k].ns);
+    }
+    for (int k = 0; k < ncontexts; ++k)
+        free(contexts[k]);
     return rows;
 }
 

@@ -1,7 +1,8 @@
 /*
  * Cost per call of every user-subroutine entry of a session, through the
- * dlopen'd function pointers: warm-up, then the median over repeated timed
- * batches, with the host calls one evaluation makes.
+ * dlopen'd function pointers: pinned to one processor, after a warm-up, the
+ * median over rounds of timed batches (one batch per entry per round), with
+ * the host calls one evaluation makes.
  */
 #ifndef HX_CALL_COST_H
 #define HX_CALL_COST_H
@@ -21,10 +22,6 @@ typedef struct hx_call_cost {
 /* Times each entry of each user element (COUSUB, COUXX and COUXX2 separately).
  * Returns the number of rows written into costs (at most capacity). */
 int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int capacity);
-
-/* Median of repeated timings of fn(ctx) called `calls` times, in ns per call. */
-double hx_time_calls(void (*fn)(void *ctx, long calls), void *ctx, long calls, int repeats,
-                     double *min_ns, double *max_ns);
 
 void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count);
 

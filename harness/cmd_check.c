@@ -11,6 +11,7 @@
 #include "binding.h"
 #include "commands.h"
 #include "derivative_check.h"
+#include "force_check.h"
 #include "usrsub/coupler.h"
 #include "host.h"
 #include "session.h"
@@ -246,6 +247,10 @@ int hx_command_check(int argc, char **argv)
         for (int k = 0; k < s.bindings.count && !hx_host_stop_requested(); ++k) {
             hx_binding *b = &s.bindings.items[k];
             if (b->kind == HX_BIND_COUPLER && check_coupler_derivatives(&s, b) != 0)
+                ++failures;
+            if (b->kind == HX_BIND_FIESUB && hx_check_field_partials(&s, b) != 0)
+                ++failures;
+            if (b->kind == HX_BIND_GFOSUB && hx_audit_dependencies(&s, b) != 0)
                 ++failures;
         }
     }

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "element_probe.h"
 #include "linalg.h"
 #include "vecmath.h"
 
@@ -607,9 +608,15 @@ double hx_dynamics_energy(hx_dynamics *d, double t, const double *y, double *kin
         }
         potential -= m->bodies[k].mass * v3_dot(m->gravity, f->p);
     }
+    double elastic = 0.0;
+    for (int k = 0; k < m->nforces; ++k) {
+        double disp[6], velo[6];
+        hx_element_state(d->s, k, disp, velo);
+        elastic += hx_element_potential(d->s, k, t, disp);
+    }
     if (kinetic_out != NULL)
         *kinetic_out = kinetic / d->ucf;
-    return (kinetic + potential) / d->ucf - y[d->aux];
+    return (kinetic + potential) / d->ucf + elastic - y[d->aux];
 }
 
 void hx_dynamics_advance_positions(hx_dynamics *d, double *y, double h)

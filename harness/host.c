@@ -2,6 +2,7 @@
 #include "host.h"
 
 #include <pthread.h>
+#include <stdlib.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -17,6 +18,12 @@ static const hx_frame *host_frames;
 static double host_time;
 static _Thread_local hx_call *current;
 
+/* World frames of the markers user elements name, computed once per state
+ * (when the frames are set) rather than once per query. */
+static hx_frame *marker_cache;
+static unsigned char *marker_watched;
+static const hx_frame *marker_cache_frames;
+
 static pthread_mutex_t message_lock = PTHREAD_MUTEX_INITIALIZER;
 static FILE *message_stream;
 static int message_stream_set;
@@ -29,12 +36,36 @@ void hx_host_attach(const hx_model *m)
 {
     host_model = m;
     host_frames = NULL;
+    marker_cache_frames = NULL;
+    free(marker_cache);
+    free(marker_watched);
+    marker_cache = NULL;
+    marker_watched = NULL;
+    if (m == NULL || m->nmarkers == 0)
+        return;
+    marker_cache = calloc((size_t)m->nmarkers, sizeof *marker_cache);
+    marker_watched = calloc((size_t)m->nmarkers, 1);
+    if (marker_cache == NULL || marker_watched == NULL)
+        return;
+    for (int k = 0; k < m->nforces; ++k) {
+        marker_watched[m->forces[k].i_marker] = 1;
+        marker_watched[m->forces[k].j_marker] = 1;
+        if (m->forces[k].ref_marker >= 0)
+            marker_watched[m->forces[k].ref_marker] = 1;
+    }
 }
 
 void hx_host_set_frames(const hx_frame *bodies, double time)
 {
     host_frames = bodies;
     host_time = time;
+    marker_cache_frames = NULL;
+    if (host_model == NULL || bodies == NULL || marker_cache == NULL || marker_watched == NULL)
+        return;
+    for (int k = 0; k < host_model->nmarkers; ++k)
+        if (marker_watched[k])
+            hx_marker_frame(host_model, bodies, k, &marker_cache[k]);
+    marker_cache_frames = bodies;
 }
 
 void hx_call_init(hx_call *c, const char *element, int id, int dependency_pass,
@@ -230,7 +261,7 @@ const char *hx_dependencies_text(const hx_dependencies *d, char *text, size_t si
 
 static int same_query(const hx_query *a, const hx_query *b)
 {
-    if (strcmp(a->fnc, b->fnc) != 0 || a->nsize != b->nsize)
+    if (a->function != b->function || a->nsize != b->nsize)
         return 0;
     for (int k = 0; k < a->nsize; ++k)
         if (a->ipar[k] != b->ipar[k])
@@ -246,97 +277,127 @@ static int find_query(const hx_dependencies *d, const hx_query *q)
     return -1;
 }
 
-typedef struct query_frames {
-    hx_frame f[4]; /* I, J, K, L */
-} query_frames;
+/* Function codes: the arrays, then the scalars (axis added to the base). */
+enum {
+    F_DISP, F_TDISP, F_RDISP, F_VEL, F_TVEL, F_RVEL, F_DM,
+    F_DX, F_AX = F_DX + 3, F_VX = F_AX + 3, F_WX = F_VX + 3, F_COUNT = F_WX + 3
+};
+static const int max_nsize[F_COUNT] = {3, 3, 2, 4, 4, 3, 2, 3, 3, 3, 2, 2, 2, 4, 4, 4, 3, 3, 3};
 
-static int frames_for(const hx_model *m, const hx_frame *bodies, const int *ipar, int nsize,
-                      int max_size, query_frames *qf)
+static int is(const char *f, const char *name)
 {
-    if (nsize < 1 || nsize > max_size || ipar == NULL || ipar[0] == 0)
+    while (*name != '\0' && *f == *name)
+        ++f, ++name;
+    return *name == '\0' && *f == '\0';
+}
+
+static int function_code(const char *f)
+{
+    if (f == NULL || f[0] == '\0')
         return -1;
+    const int axis = f[1] >= 'X' && f[1] <= 'Z' && f[2] == '\0' ? f[1] - 'X' : -1;
+    switch (f[0]) {
+    case 'D':
+        return is(f, "DISP") ? F_DISP : is(f, "DM") ? F_DM : axis >= 0 ? F_DX + axis : -1;
+    case 'T':
+        return is(f, "TDISP") ? F_TDISP : is(f, "TVEL") ? F_TVEL : -1;
+    case 'R':
+        return is(f, "RDISP") ? F_RDISP : is(f, "RVEL") ? F_RVEL : -1;
+    case 'V':
+        return is(f, "VEL") ? F_VEL : axis >= 0 ? F_VX + axis : -1;
+    case 'A':
+        return axis >= 0 ? F_AX + axis : -1;
+    case 'W':
+        return axis >= 0 ? F_WX + axis : -1;
+    default:
+        return -1;
+    }
+}
+
+static const hx_frame world_frame = {{0, 0, 0}, {1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 0}, {0, 0, 0}};
+
+/* The world frame of a marker id (0: the world), from the cache when it can. */
+static const hx_frame *marker_world(const hx_model *m, const hx_frame *bodies, int id,
+                                    hx_frame *scratch)
+{
+    if (id == 0)
+        return &world_frame;
+    const int index = hx_model_marker(m, id);
+    if (index < 0)
+        return NULL;
+    if (bodies == marker_cache_frames && m == host_model && marker_watched[index])
+        return &marker_cache[index];
+    hx_marker_frame(m, bodies, index, scratch);
+    return scratch;
+}
+
+static int answer(const hx_model *m, const hx_frame *bodies, int code, const int *ipar,
+                  int nsize, double *values)
+{
+    if (m == NULL || bodies == NULL || code < 0 || nsize < 1 || nsize > max_nsize[code] ||
+        ipar == NULL || ipar[0] == 0)
+        return -1;
+    hx_frame scratch[4];
+    const hx_frame *f[4];
     for (int k = 0; k < 4; ++k) {
         const int id = k < nsize ? ipar[k] : 0;
-        int index = -1;
-        if (id != 0 && (index = hx_model_marker(m, id)) < 0)
+        /* repeated ids (J, J, J) share one frame */
+        f[k] = k > 0 && id == (k - 1 < nsize ? ipar[k - 1] : 0) ? f[k - 1]
+                                                                 : marker_world(m, bodies, id, &scratch[k]);
+        if (f[k] == NULL)
             return -1;
-        hx_marker_frame(m, bodies, index, &qf->f[k]);
     }
-    return 0;
+    const hx_frame *I = f[0], *J = f[1], *K = f[2], *L = f[3];
+    double R[9], v[3];
+    switch (code) {
+    case F_DISP:
+    case F_TDISP:
+        hx_displacement(I, J, K, values);
+        if (code == F_TDISP)
+            return 3;
+        hx_relative_euler313(I, J, values + 3);
+        return 6;
+    case F_RDISP:
+        hx_relative_euler313(I, J, values);
+        return 3;
+    case F_VEL:
+    case F_TVEL:
+        hx_relative_velocity(I, J, K, L, values);
+        if (code == F_TVEL)
+            return 3;
+        hx_relative_angular_velocity(I, J, K, values + 3);
+        return 6;
+    case F_RVEL:
+        hx_relative_angular_velocity(I, J, K, values);
+        return 3;
+    case F_DM:
+        v3_sub(v, I->p, J->p);
+        values[0] = v3_norm(v);
+        return 1;
+    default:
+        break;
+    }
+    if (code < F_AX) {
+        hx_displacement(I, J, K, v);
+        values[0] = v[code - F_DX];
+    } else if (code < F_VX) {
+        hx_relative_rotation(I, J, R);
+        hx_projection_angles(R, v);
+        values[0] = v[code - F_AX];
+    } else if (code < F_WX) {
+        hx_relative_velocity(I, J, K, L, v);
+        values[0] = v[code - F_VX];
+    } else {
+        hx_relative_angular_velocity(I, J, K, v);
+        values[0] = v[code - F_WX];
+    }
+    return 1;
 }
 
 int hx_answer_query(const hx_model *m, const hx_frame *bodies, const char *fnc,
                     const int *ipar, int nsize, double *values)
 {
-    if (m == NULL || bodies == NULL || fnc == NULL)
-        return -1;
-    query_frames qf;
-    hx_frame *I = &qf.f[0], *J = &qf.f[1], *K = &qf.f[2], *L = &qf.f[3];
-    double R[9];
-    /* c_sysary arrays */
-    if (strcmp(fnc, "DISP") == 0 || strcmp(fnc, "TDISP") == 0) {
-        if (frames_for(m, bodies, ipar, nsize, 3, &qf) != 0)
-            return -1;
-        hx_displacement(I, J, K, values);
-        if (fnc[0] == 'T')
-            return 3;
-        hx_relative_rotation(I, J, R);
-        hx_euler313(R, values + 3);
-        return 6;
-    }
-    if (strcmp(fnc, "RDISP") == 0) {
-        if (frames_for(m, bodies, ipar, nsize, 2, &qf) != 0)
-            return -1;
-        hx_relative_rotation(I, J, R);
-        hx_euler313(R, values);
-        return 3;
-    }
-    if (strcmp(fnc, "VEL") == 0 || strcmp(fnc, "TVEL") == 0) {
-        if (frames_for(m, bodies, ipar, nsize, 4, &qf) != 0)
-            return -1;
-        hx_relative_velocity(I, J, K, L, values);
-        if (fnc[0] == 'T')
-            return 3;
-        hx_relative_angular_velocity(I, J, K, values + 3);
-        return 6;
-    }
-    if (strcmp(fnc, "RVEL") == 0) {
-        if (frames_for(m, bodies, ipar, nsize, 3, &qf) != 0)
-            return -1;
-        hx_relative_angular_velocity(I, J, K, values);
-        return 3;
-    }
-    /* c_sysfnc scalars */
-    const int axis = fnc[0] != '\0' && fnc[1] >= 'X' && fnc[1] <= 'Z' && fnc[2] == '\0'
-                         ? fnc[1] - 'X' : -1;
-    double v[3];
-    if (fnc[0] == 'D' && (axis >= 0 || strcmp(fnc, "DM") == 0)) {
-        if (frames_for(m, bodies, ipar, nsize, axis >= 0 ? 3 : 2, &qf) != 0)
-            return -1;
-        if (axis < 0) {
-            v3_sub(v, I->p, J->p);
-            values[0] = v3_norm(v);
-            return 1;
-        }
-        hx_displacement(I, J, K, v);
-    } else if (fnc[0] == 'A' && axis >= 0) {
-        if (frames_for(m, bodies, ipar, nsize, 2, &qf) != 0)
-            return -1;
-        hx_relative_rotation(I, J, R);
-        hx_projection_angles(R, v);
-    } else if (fnc[0] == 'V' && axis >= 0) {
-        if (frames_for(m, bodies, ipar, nsize, 4, &qf) != 0)
-            return -1;
-        hx_relative_velocity(I, J, K, L, v);
-    } else if (fnc[0] == 'W' && axis >= 0) {
-        if (frames_for(m, bodies, ipar, nsize, 3, &qf) != 0)
-            return -1;
-        hx_relative_angular_velocity(I, J, K, v);
-    } else {
-        return -1;
-    }
-    values[0] = v[axis];
-    return 1;
+    return answer(m, bodies, function_code(fnc), ipar, nsize, values);
 }
 
 static void warn_undeclared(const hx_call *c, const hx_query *q)
@@ -355,20 +416,18 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
 {
     hx_call *c = current;
     hx_query q;
-    memset(&q, 0, sizeof q);
-    snprintf(q.fnc, sizeof q.fnc, "%s", fnc != NULL ? fnc : "");
+    q.function = function_code(fnc);
     q.nsize = nsize;
     q.is_array = is_array;
-    for (int k = 0; k < nsize && k < 4 && ipar != NULL; ++k)
-        q.ipar[k] = ipar[k];
+    for (int k = 0; k < 4; ++k)
+        q.ipar[k] = k < nsize && ipar != NULL ? ipar[k] : 0;
+    q.fnc[0] = '\0'; /* the text is written only when the query is kept or reported */
     double scratch[6];
-    const int array_function = strcmp(q.fnc, "DISP") == 0 || strcmp(q.fnc, "TDISP") == 0 ||
-                               strcmp(q.fnc, "RDISP") == 0 || strcmp(q.fnc, "VEL") == 0 ||
-                               strcmp(q.fnc, "TVEL") == 0 || strcmp(q.fnc, "RVEL") == 0;
-    const int count = array_function != is_array
+    const int array_function = q.function >= F_DISP && q.function <= F_RVEL;
+    const int count = q.function < 0 || array_function != is_array
                           ? -1
-                          : hx_answer_query(host_model, host_frames, q.fnc, ipar, nsize,
-                                            values != NULL ? values : scratch);
+                          : answer(host_model, host_frames, q.function, ipar, nsize,
+                                   values != NULL ? values : scratch);
     if (c == NULL)
         return count;
     ++c->host_calls;
@@ -378,6 +437,7 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
         for (int k = 0; k < count; ++k)
             values[k] = 0.0; /* the dependency pass sees zeros, as in a solver */
         if (c->declared != NULL && find_query(c->declared, &q) < 0) {
+            snprintf(q.fnc, sizeof q.fnc, "%s", fnc);
             if (c->declared->count < HX_MAX_QUERIES)
                 c->declared->query[c->declared->count++] = q;
             else
@@ -389,8 +449,12 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
         const int k = find_query(c->declared, &q);
         if (k < 0) {
             if (c->undeclared++ == 0) {
+                snprintf(q.fnc, sizeof q.fnc, "%s", fnc);
                 c->first_undeclared = q;
-                warn_undeclared(c, &q);
+                if (c->warned == NULL || !*c->warned)
+                    warn_undeclared(c, &q);
+                if (c->warned != NULL)
+                    *c->warned = 1;
             }
         } else {
             c->used |= 1u << k;

@@ -20,6 +20,7 @@
 
 typedef struct hx_query {
     char fnc[8];
+    int function; /* the host's code for fnc, -1 when unknown */
     int ipar[4];
     int nsize;
     int is_array; /* c_sysary (1) or c_sysfnc (0) */
@@ -41,6 +42,7 @@ typedef struct hx_call {
     int undeclared;            /* queries outside declared (evaluation only) */
     hx_query first_undeclared;
     unsigned used;             /* bit k: declared query k was asked */
+    int *warned;               /* set once the element's undeclared read was reported */
     int perturb_query;         /* -1, or the declared query whose answer is shifted */
     int perturb_component;
     double perturb_delta;

@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+#include "usrsub/trig.h"
 #include "vecmath.h"
 
 static const hx_frame world = {{0, 0, 0}, {1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 0}, {0, 0, 0}};
@@ -51,22 +52,36 @@ void hx_relative_rotation(const hx_frame *I, const hx_frame *J, double R[9])
 
 void hx_projection_angles(const double R[9], double a[3])
 {
-    a[0] = atan2(R[7], R[4]); /* Y_I . Z_J, Y_I . Y_J */
-    a[1] = atan2(R[2], R[8]); /* Z_I . X_J, Z_I . Z_J */
-    a[2] = atan2(R[3], R[0]); /* X_I . Y_J, X_I . X_J */
+    a[0] = usrsub_atan2(R[7], R[4]); /* Y_I . Z_J, Y_I . Y_J */
+    a[1] = usrsub_atan2(R[2], R[8]); /* Z_I . X_J, Z_I . Z_J */
+    a[2] = usrsub_atan2(R[3], R[0]); /* X_I . Y_J, X_I . X_J */
 }
 
 void hx_euler313(const double R[9], double e[3])
 {
-    const double s = hypot(R[2], R[5]);
-    e[1] = atan2(s, R[8]);
+    const double s = sqrt(R[2] * R[2] + R[5] * R[5]); /* entries of a rotation: no overflow */
+    e[1] = usrsub_atan2(s, R[8]);
     if (s > 1e-12) {
-        e[0] = atan2(R[2], -R[5]);
-        e[2] = atan2(R[6], R[7]);
+        e[0] = usrsub_atan2(R[2], -R[5]);
+        e[2] = usrsub_atan2(R[6], R[7]);
     } else { /* theta = 0 or pi: only psi +- phi is defined; put it all in psi */
-        e[0] = atan2(R[3], R[0]);
+        e[0] = usrsub_atan2(R[3], R[0]);
         e[2] = 0.0;
     }
+}
+
+void hx_relative_euler313(const hx_frame *I, const hx_frame *J, double e[3])
+{
+    /* only the entries the angles use of R = R_J^T R_I: R[a][b] = (J axis a) . (I axis b) */
+    const double *ri = I->R, *rj = J->R;
+#define ENTRY(a, b) (rj[a] * ri[b] + rj[3 + a] * ri[3 + b] + rj[6 + a] * ri[6 + b])
+    double R[9];
+    R[2] = ENTRY(0, 2), R[5] = ENTRY(1, 2), R[8] = ENTRY(2, 2);
+    R[6] = ENTRY(2, 0), R[7] = ENTRY(2, 1);
+    R[0] = ENTRY(0, 0), R[3] = ENTRY(1, 0);
+#undef ENTRY
+    R[1] = R[4] = 0.0;
+    hx_euler313(R, e);
 }
 
 void hx_relative_velocity(const hx_frame *I, const hx_frame *J, const hx_frame *K,

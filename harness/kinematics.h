@@ -28,6 +28,8 @@ void hx_relative_rotation(const hx_frame *I, const hx_frame *J, double R[9]);
 void hx_projection_angles(const double R[9], double a[3]);
 /* Body 3-1-3 Euler angles (psi, theta, phi) with R = Rz(psi) Rx(theta) Rz(phi). */
 void hx_euler313(const double R[9], double e[3]);
+/* The same for the rotation of I relative to J, from the frames. */
+void hx_relative_euler313(const hx_frame *I, const hx_frame *J, double e[3]);
 /* Velocity of I relative to J, differentiated in L, expressed in K. */
 void hx_relative_velocity(const hx_frame *I, const hx_frame *J, const hx_frame *K,
                           const hx_frame *L, double v[3]);

@@ -8,16 +8,12 @@
 #include <string.h>
 #include <strings.h>
 
-static unsigned marker_hash(int id, int slots)
-{
-    return ((unsigned)id * 2654435761u) % (unsigned)slots;
-}
-
 int hx_model_marker(const hx_model *m, int id)
 {
     if (m->marker_slot_count == 0)
         return -1;
-    for (unsigned s = marker_hash(id, m->marker_slot_count);; s = (s + 1) % (unsigned)m->marker_slot_count) {
+    const unsigned mask = (unsigned)m->marker_slot_count - 1u; /* a power of two */
+    for (unsigned s = ((unsigned)id * 2654435761u) & mask;; s = (s + 1) & mask) {
         const int k = m->marker_slots[s];
         if (k < 0)
             return -1;

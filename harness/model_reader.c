@@ -808,7 +808,9 @@ static int marker_ref(reader *r, int id, int line, const char *owner, int owner_
 static int build_marker_index(reader *r)
 {
     hx_model *m = r->m;
-    m->marker_slot_count = 2 * m->nmarkers + 1;
+    m->marker_slot_count = 4;
+    while (m->marker_slot_count < 2 * m->nmarkers)
+        m->marker_slot_count *= 2;
     m->marker_slots = malloc(sizeof(int) * (size_t)m->marker_slot_count);
     if (m->marker_slots == NULL) {
         fail(r, 0, "out of memory");
@@ -817,9 +819,10 @@ static int build_marker_index(reader *r)
     for (int s = 0; s < m->marker_slot_count; ++s)
         m->marker_slots[s] = -1;
     for (int k = 0; k < m->nmarkers; ++k) {
-        unsigned s = ((unsigned)m->markers[k].id * 2654435761u) % (unsigned)m->marker_slot_count;
+        const unsigned mask = (unsigned)m->marker_slot_count - 1u;
+        unsigned s = ((unsigned)m->markers[k].id * 2654435761u) & mask;
         while (m->marker_slots[s] >= 0)
-            s = (s + 1) % (unsigned)m->marker_slot_count;
+            s = (s + 1) & mask;
         m->marker_slots[s] = k;
     }
     return 0;

@@ -34,6 +34,12 @@ int hx_session_open(hx_session *s, const char *model_path, usrsub_message *msg)
         hx_session_close(s);
         return -1;
     }
+    if (hx_dependency_passes(&s->bindings, s->model, s->frames) != 0) {
+        usrsub_fail(msg, "an element stopped the run in its dependency pass (c_errmes STOP): %s",
+                    hx_host_stop_message());
+        hx_session_close(s);
+        return -1;
+    }
     return 0;
 }
 

@@ -110,3 +110,57 @@ double sim_lambda(const sim *s, int row, int coupler)
 {
     return s->path.lambda[row * s->path.ncouplers + coupler];
 }
+
+int sim_rig(const char *model, const char *csv, const char *const *args)
+{
+    char *argv[64];
+    int argc = 0;
+    argv[argc++] = "rig";
+    argv[argc++] = (char *)model_path(model);
+    argv[argc++] = "--out";
+    argv[argc++] = (char *)csv;
+    for (const char *const *a = args; *a != NULL && argc < 63; ++a)
+        argv[argc++] = (char *)*a;
+    argv[argc] = NULL;
+    fflush(stdout);
+    return hx_command_rig(argc, argv);
+}
+
+void csv_read(const char *path, csv_table *t)
+{
+    memset(t, 0, sizeof *t);
+    FILE *f = fopen(path, "r");
+    if (f == NULL)
+        fail_msg("cannot open %s", path);
+    char line[8192];
+    int capacity = 0;
+    if (fgets(line, sizeof line, f) != NULL) /* header */
+        for (const char *p = line; *p; ++p)
+            t->columns += *p == ',';
+    t->columns += 1;
+    while (fgets(line, sizeof line, f) != NULL) {
+        if (t->rows == capacity) {
+            capacity = capacity ? 2 * capacity : 1024;
+            t->v = realloc(t->v, sizeof(double) * (size_t)(capacity * t->columns));
+        }
+        char *p = line;
+        for (int c = 0; c < t->columns; ++c) {
+            t->v[t->rows * t->columns + c] = strtod(p, &p);
+            if (*p == ',')
+                ++p;
+        }
+        t->rows++;
+    }
+    fclose(f);
+}
+
+double csv_at(const csv_table *t, int row, int column)
+{
+    return t->v[row * t->columns + column];
+}
+
+void csv_free(csv_table *t)
+{
+    free(t->v);
+    memset(t, 0, sizeof *t);
+}

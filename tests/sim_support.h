@@ -36,3 +36,16 @@ int sim_joint_u(const sim *s, int joint_id);
 int sim_check(const char *model);
 
 #endif
+
+/* Runs "usrsub-harness rig MODEL --out CSV ARGS..." in-process; returns its
+ * exit status. */
+int sim_rig(const char *model, const char *csv, const char *const *args);
+
+/* A numeric CSV with a header line: rows x columns values (malloc'ed). */
+typedef struct csv_table {
+    int rows, columns;
+    double *v;
+} csv_table;
+void csv_read(const char *path, csv_table *t);
+double csv_at(const csv_table *t, int row, int column);
+void csv_free(csv_table *t);

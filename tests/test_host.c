@@ -159,9 +159,11 @@ static void stop_is_recorded(void **state)
     (void)state;
     hx_host_set_message_stream(NULL);
     hx_host_reset_messages();
-    double r[6];
-    hx_call call;
-    evaluate_probe(99, 21, 11, r, &call);
+    /* the session runs the dependency pass, where the probe stops the run */
+    hx_session s;
+    usrsub_message msg;
+    assert_int_equal(hx_session_open(&s, probe_model(99, 21, 11), &msg), -1);
+    assert_contains(msg.text, "dependency pass", "probe asked to stop");
     assert_true(hx_host_stop_requested());
     assert_string_equal(hx_host_stop_message(), "probe asked to stop");
     hx_host_reset_messages();

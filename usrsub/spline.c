@@ -84,7 +84,7 @@ void usrsub_spline_free(usrsub_spline *s)
 
 /* The interval holding x, for x0 < x < x_last: a bucket, then a step or two
  * (a bisection where knots cluster). */
-static int interval_of(const usrsub_spline *s, double x)
+static inline int interval_of(const usrsub_spline *s, double x)
 {
     const double *xs = s->x;
     const int last = s->n - 1;
@@ -112,10 +112,58 @@ static int interval_of(const usrsub_spline *s, double x)
 usrsub_jet usrsub_spline_eval(const usrsub_spline *s, double x)
 {
     usrsub_jet j;
-    j.value = usrsub_spline_derivative(s, x, 0);
-    j.d1 = usrsub_spline_derivative(s, x, 1);
-    j.d2 = usrsub_spline_derivative(s, x, 2);
+    const double *xs = s->x;
+    const int last = s->n - 1;
+    if (x <= xs[0]) {
+        j.value = s->coef[0] + s->coef[1] * (x - xs[0]);
+        j.d1 = s->coef[1];
+        j.d2 = 0.0;
+    } else if (x >= xs[last]) {
+        j.value = s->y_end + s->slope_end * (x - xs[last]);
+        j.d1 = s->slope_end;
+        j.d2 = 0.0;
+    } else {
+        const int i = interval_of(s, x);
+        const double *c = s->coef + 4 * i;
+        const double t = x - xs[i];
+        j.value = c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+        j.d1 = c[1] + t * (2.0 * c[2] + 3.0 * t * c[3]);
+        j.d2 = 2.0 * c[2] + 6.0 * t * c[3];
+    }
     return j;
+}
+
+double usrsub_spline_value(const usrsub_spline *s, double x)
+{
+    const double *xs = s->x;
+    const int last = s->n - 1;
+    if (x <= xs[0])
+        return s->coef[0] + s->coef[1] * (x - xs[0]);
+    if (x >= xs[last])
+        return s->y_end + s->slope_end * (x - xs[last]);
+    const int i = interval_of(s, x);
+    const double *c = s->coef + 4 * i;
+    const double t = x - xs[i];
+    return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+}
+
+double usrsub_spline_value_slope(const usrsub_spline *s, double x, double *slope)
+{
+    const double *xs = s->x;
+    const int last = s->n - 1;
+    if (x <= xs[0]) {
+        *slope = s->coef[1];
+        return s->coef[0] + s->coef[1] * (x - xs[0]);
+    }
+    if (x >= xs[last]) {
+        *slope = s->slope_end;
+        return s->y_end + s->slope_end * (x - xs[last]);
+    }
+    const int i = interval_of(s, x);
+    const double *c = s->coef + 4 * i;
+    const double t = x - xs[i];
+    *slope = c[1] + t * (2.0 * c[2] + 3.0 * t * c[3]);
+    return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
 }
 
 double usrsub_spline_derivative(const usrsub_spline *s, double x, int order)

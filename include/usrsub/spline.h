@@ -35,6 +35,12 @@ void usrsub_spline_free(usrsub_spline *s);
 /* Value, first and second derivative at x (linear extension outside). */
 usrsub_jet usrsub_spline_eval(const usrsub_spline *s, double x);
 
+/* Value at x alone. */
+double usrsub_spline_value(const usrsub_spline *s, double x);
+
+/* Value and slope at x with one interval look-up. */
+double usrsub_spline_value_slope(const usrsub_spline *s, double x, double *slope);
+
 /* One derivative (order 0, 1 or 2) at x. */
 double usrsub_spline_derivative(const usrsub_spline *s, double x, int order);
 

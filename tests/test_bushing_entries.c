@@ -1,0 +1,237 @@
+/*
+ * The bushing's entries loaded through dlopen with the harness as host:
+ * GFOSUB(1, ...) and ABM_BUSHING agree, GFOSUB and FIESUB forms give the same
+ * force at the same state, host queries are only those the bushing needs
+ * (in the dependency pass too), a file is parsed once for all elements naming
+ * it, and input errors are reported once with zeros out.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "binding.h"
+#include "element_probe.h"
+#include "host.h"
+#include "session.h"
+#include "test_support.h"
+
+static const char *gbs(const char *name, const char *activity_rows, const char *blocks)
+{
+    char text[4096];
+    snprintf(text, sizeof text,
+             "[HEADER]\nFILE_TYPE = 'gbs'\n[UNITS]\nLENGTH = 'mm'\nANGLE = 'radian'\n"
+             "FORCE = 'newton'\nMASS = 'kg'\nTIME = 'second'\n[GLOBAL]\nCOUPLING = 'CYLINDRICAL'\n"
+             "[DIRECTIONS]\n(ACTIVITY)\n{ formulation FX FY FZ TX TY TZ }\n%s%s",
+             activity_rows, blocks);
+    return test_write_file(name, text);
+}
+
+static const char *const six_constant =
+    "[CONSTANT_STIFFNESS_FX]\nK = 100\n[CONSTANT_STIFFNESS_FY]\nK = 150\n[CONSTANT_STIFFNESS_FZ]\nK = 80\n"
+    "[CONSTANT_STIFFNESS_TX]\nK = 1e4\n[CONSTANT_STIFFNESS_TY]\nK = 2e4\n[CONSTANT_STIFFNESS_TZ]\nK = 3e4\n"
+    "[CONSTANT_DAMPING_FX]\nC = 2\n[CONSTANT_DAMPING_FY]\nC = 3\n[CONSTANT_DAMPING_FZ]\nC = 1\n"
+    "[CONSTANT_DAMPING_TX]\nC = 20\n[CONSTANT_DAMPING_TY]\nC = 30\n[CONSTANT_DAMPING_TZ]\nC = 10\n";
+
+/* A model: body 2 displaced and turned and moving, held to ground by the
+ * given force elements; strings 101..104 name the files. */
+static const char *model(const char *name, int units, const char *elements)
+{
+    char text[8192];
+    snprintf(text, sizeof text,
+             "<MotionSolve><Model>\n%s"
+             "<Reference_String id=\"101\" string=\"%s\"/>\n"
+             "<Reference_String id=\"102\" string=\"%s\"/>\n"
+             "<Reference_String id=\"103\" string=\"%s\"/>\n"
+             "<Reference_String id=\"104\" string=\"%s\"/>\n"
+             "<Body_Ground id=\"1\"/><Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+             "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\" inertia_zz=\"1\"\n"
+             " v_ic_x=\"3\" v_ic_y=\"-2\" v_ic_z=\"1\" w_ic_x=\"0.3\" w_ic_y=\"-0.2\" w_ic_z=\"0.1\"/>\n"
+             "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"0.8\" pos_y=\"-0.5\" pos_z=\"0.3\"\n"
+             " a00=\"0.995004165\" a10=\"0.0998334166\" a01=\"-0.0998334166\" a11=\"0.995004165\"/>\n"
+             "%s</Model></MotionSolve>\n",
+             units ? "<Param_Unit length_unit=\"MILLIMETER\" force_unit=\"NEWTON\" mass_unit=\"KILOGRAM\" time_unit=\"SECOND\"/>\n" : "",
+             gbs("all.gbs", "'CONSTANT_STIFFNESS' 1 1 1 1 1 1\n'CONSTANT_DAMPING' 1 1 1 1 1 1\n", six_constant),
+             gbs("translation.gbs", "'CONSTANT_STIFFNESS' 1 1 1 0 0 0\n", six_constant),
+             gbs("damped_translation.gbs", "'CONSTANT_STIFFNESS' 1 1 0 0 0 0\n'CONSTANT_DAMPING' 1 0 0 0 0 0\n", six_constant),
+             gbs("rotation.gbs", "'CONSTANT_STIFFNESS' 0 0 0 0 0 1\n", six_constant), elements);
+    return test_write_file(name, text);
+}
+
+#define GFO(id, list, fnc)                                                                      \
+    "<Force_Vector_TwoBody id=\"" #id "\" type=\"ForceAndTorque\" i_marker_id=\"20\" "          \
+    "j_floating_marker_id=\"10\" ref_marker_id=\"10\" usrsub_param_string=\"USER" list "\" "    \
+    "usrsub_fnc_name=\"" fnc "\" usrsub_dll_name=\"" USRSUB_LIBRARY "\"/>\n"
+#define FIE(id, list, fnc)                                                                      \
+    "<Force_Field id=\"" #id "\" i_marker_id=\"20\" j_marker_id=\"10\" usrsub_param_string=\"USER" \
+    list "\" usrsub_fnc_name=\"" fnc "\" usrsub_dll_name=\"" USRSUB_LIBRARY "\"/>\n"
+
+static void open_session(hx_session *s, const char *path)
+{
+    usrsub_message msg;
+    if (hx_session_open(s, path, &msg) != 0)
+        fail_msg("%s", msg.text);
+}
+
+static void default_named_and_field_forms_agree(void **state)
+{
+    (void)state;
+    hx_session s;
+    open_session(&s, model("agree.xml", 1,
+                           GFO(1, "(1, 20, 10, 101)", "GFOSUB") GFO(2, "(20, 10, 101)", "ABM_BUSHING")
+                           FIE(3, "(1, 101)", "FIESUB") FIE(4, "(101)", "ABM_BUSHING_FIELD")));
+    double F[4][6];
+    for (int k = 0; k < 2; ++k)
+        hx_call_gfosub(&s.bindings.items[k], 0.0, 0, 0, F[k], NULL);
+    double disp[6], velo[6], dfd[36], dfv[36];
+    hx_element_state(&s, 2, disp, velo);
+    for (int k = 2; k < 4; ++k)
+        hx_call_fiesub(&s.bindings.items[k], 0.0, disp, velo, 0, 0, F[k], dfd, dfv, NULL);
+    for (int k = 1; k < 4; ++k)
+        for (int i = 0; i < 6; ++i)
+            assert_close(F[k][i], F[0][i], 1e-12, 1e-12);
+    /* and it is the bushing law at that state, e.g. -(k x + c vx) in x */
+    assert_close(F[0][2], -(80 * disp[2] + 1 * velo[2]), 1e-12, 1e-12);
+    assert_true(fabs(F[0][5]) > 0.0);
+    hx_session_close(&s);
+}
+
+static int deps_of(hx_session *s, int k, char *text, size_t size)
+{
+    hx_binding *b = &s->bindings.items[k];
+    hx_call call;
+    double out[6];
+    hx_binding_call_init(b, &call, 1);
+    hx_call_gfosub(b, 0.0, 0, 1, out, &call);
+    const int dependency_calls = call.host_calls;
+    hx_binding_call_init(b, &call, 0);
+    hx_call_gfosub(b, 0.0, 0, 0, out, &call);
+    assert_int_equal(call.host_calls, dependency_calls); /* the same queries in both passes */
+    assert_int_equal(call.undeclared, 0);
+    hx_dependencies_text(&b->deps, text, size);
+    return call.host_calls;
+}
+
+static void queries_only_what_the_bushing_needs(void **state)
+{
+    (void)state;
+    hx_session s;
+    open_session(&s, model("skip.xml", 1,
+                           GFO(1, "(1, 20, 10, 101)", "GFOSUB") GFO(2, "(1, 20, 10, 102)", "GFOSUB")
+                           GFO(3, "(1, 20, 10, 103)", "GFOSUB") GFO(4, "(1, 20, 10, 104)", "GFOSUB")));
+    char text[256];
+    assert_int_equal(deps_of(&s, 0, text, sizeof text), 2); /* all six, damped */
+    assert_string_equal(text, "DISP(20,10,10) VEL(20,10,10,10)");
+    assert_int_equal(deps_of(&s, 1, text, sizeof text), 1); /* translations, undamped */
+    assert_string_equal(text, "TDISP(20,10,10)");
+    assert_int_equal(deps_of(&s, 2, text, sizeof text), 2); /* translations, one damped */
+    assert_string_equal(text, "TDISP(20,10,10) TVEL(20,10,10,10)");
+    assert_int_equal(deps_of(&s, 3, text, sizeof text), 1); /* a rotation alone */
+    assert_string_equal(text, "RDISP(20,10)");
+    /* inactive directions return 0 */
+    double out[6];
+    hx_call_gfosub(&s.bindings.items[1], 0.0, 0, 0, out, NULL);
+    for (int i = 3; i < 6; ++i)
+        assert_close(out[i], 0.0, 0, 0);
+    hx_call_gfosub(&s.bindings.items[3], 0.0, 0, 0, out, NULL);
+    for (int i = 0; i < 5; ++i)
+        assert_close(out[i], 0.0, 0, 0);
+    assert_true(fabs(out[5]) > 0.0);
+    hx_session_close(&s);
+}
+
+static void a_file_is_parsed_once(void **state)
+{
+    (void)state;
+    hx_host_reset_messages();
+    hx_host_set_message_stream(NULL);
+    /* without model units each parse says "values used as they are" once */
+    hx_session s;
+    open_session(&s, model("once.xml", 0,
+                           GFO(1, "(1, 20, 10, 102)", "GFOSUB") GFO(2, "(1, 20, 10, 102)", "GFOSUB")
+                           FIE(3, "(1, 102)", "FIESUB") GFO(4, "(1, 20, 10, 103)", "GFOSUB")));
+    assert_int_equal(hx_host_notice_count(), 2); /* translation.gbs once, damped_translation.gbs once */
+    assert_contains(hx_host_last_notice(), "declares no units", "damped_translation.gbs");
+    assert_int_equal(hx_host_error_count(), 0);
+    hx_session_close(&s);
+    hx_host_set_message_stream(stderr);
+}
+
+static void input_errors_are_reported_once(void **state)
+{
+    (void)state;
+    hx_host_set_message_stream(NULL);
+    const struct {
+        const char *element;
+        const char *needles[3];
+    } cases[] = {
+        {GFO(7, "(7, 20, 10, 101)", "GFOSUB"), {"GFOSUB element 7", "par[0]) is 7", "element code"}},
+        {GFO(8, "(20, 10, 99)", "ABM_BUSHING"), {"ABM_BUSHING element 8", "no Reference_String 99", ".gbs"}},
+        {GFO(9, "(20.5, 10, 101)", "ABM_BUSHING"), {"element 9", "par[0]) is 20.5", "I marker"}},
+        {GFO(10, "(20, 10, 101, 5, 6)", "ABM_BUSHING"), {"element 10", "one too many", "USER parameter"}},
+        {FIE(11, "(1)", "FIESUB"), {"FIESUB element 11", "USER list ends", "Reference_String id"}},
+        {FIE(12, "(3.0, 104)", "FIESUB"), {"FIESUB element 12", "code 3", "not available"}},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        hx_host_reset_messages();
+        char name[32];
+        snprintf(name, sizeof name, "error%zu.xml", k);
+        hx_session s;
+        usrsub_message msg;
+        /* the dependency pass reports it and stops the run */
+        assert_int_equal(hx_session_open(&s, model(name, 1, cases[k].element), &msg), -1);
+        assert_int_equal(hx_host_error_count(), 1);
+        assert_contains(hx_host_last_error(), cases[k].needles[0], cases[k].needles[1],
+                        cases[k].needles[2]);
+    }
+    hx_host_reset_messages();
+    hx_host_set_message_stream(stderr);
+}
+
+static void the_host_refusing_a_query(void **state)
+{
+    (void)state;
+    hx_host_set_message_stream(NULL);
+    hx_host_reset_messages();
+    hx_session s;
+    usrsub_message msg;
+    assert_int_equal(hx_session_open(&s, model("refused.xml", 1, GFO(5, "(1, 999, 10, 101)", "GFOSUB")), &msg), -1);
+    assert_contains(hx_host_last_error(), "GFOSUB element 5", "could not answer DISP(999,10", "output is zero");
+    hx_host_reset_messages();
+    hx_host_set_message_stream(stderr);
+}
+
+static void non_finite_field_state(void **state)
+{
+    (void)state;
+    hx_host_set_message_stream(NULL);
+    hx_session s;
+    open_session(&s, model("nan.xml", 1, FIE(3, "(1, 101)", "FIESUB")));
+    hx_host_reset_messages();
+    double disp[6] = {0, NAN, 0, 0, 0, 0}, velo[6] = {0}, F[6], dfd[36], dfv[36];
+    for (int i = 0; i < 36; ++i)
+        dfd[i] = dfv[i] = 1.0;
+    hx_call_fiesub(&s.bindings.items[0], 0.0, disp, velo, 0, 0, F, dfd, dfv, NULL);
+    assert_contains(hx_host_last_error(), "FIESUB element 3", "disp", "not finite");
+    for (int i = 0; i < 6; ++i)
+        assert_close(F[i], 0.0, 0, 0);
+    for (int i = 0; i < 36; ++i) {
+        assert_close(dfd[i], 0.0, 0, 0);
+        assert_close(dfv[i], 0.0, 0, 0);
+    }
+    hx_host_reset_messages();
+    hx_session_close(&s);
+    hx_host_set_message_stream(stderr);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(default_named_and_field_forms_agree),
+        cmocka_unit_test(queries_only_what_the_bushing_needs),
+        cmocka_unit_test(a_file_is_parsed_once),
+        cmocka_unit_test(input_errors_are_reported_once),
+        cmocka_unit_test(the_host_refusing_a_query),
+        cmocka_unit_test(non_finite_field_state),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,129 @@
+/* Set-up and evaluation of force elements (force_model.h). */
+#include "force_model.h"
+
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "host.h"
+#include "property_cache.h"
+#include "usrsub/user_list.h"
+
+#define PATH_TEXT_MAX 4096
+
+static int read_bushing(const char *path, const double *units, void **property,
+                        usrsub_message *notice, int *has_notice, usrsub_message *msg)
+{
+    usrsub_bushing *b;
+    if (usrsub_bushing_read(path, units, &b, notice, has_notice, msg) != 0)
+        return -1;
+    *property = b;
+    return 0;
+}
+
+static void free_bushing(void *property)
+{
+    usrsub_bushing_free(property);
+}
+
+/* The property file named by the Reference_String whose id is the next value. */
+static const void *property_named(usrsub_user_list *u, const char *what, const char *kind,
+                                  property_read_fn *read, property_free_fn *release,
+                                  element_setup_report *report)
+{
+    int string_id;
+    if (usrsub_user_list_int(u, what, 1, INT_MAX, &string_id, &report->error) != 0)
+        return NULL;
+    char path[PATH_TEXT_MAX];
+    if (host_read_string(string_id, path, (int)sizeof path) != 0) {
+        usrsub_fail(&report->error, "USER parameter %d (par[%d]): there is no Reference_String"
+                    " %d (expected %s)", u->next + u->offset, u->next - 1, string_id, what);
+        return NULL;
+    }
+    double scales[USRSUB_UNIT_COUNT];
+    const int has_units = host_model_units(scales);
+    int has_notice = 0;
+    const void *p = property_cache_get(kind, path, has_units ? scales : NULL, read, release,
+                                       &report->notice, &has_notice, &report->error);
+    if (has_notice)
+        report->has_notice = 1;
+    if (p == NULL)
+        usrsub_message_prefix(&report->error, "Reference_String %d", string_id);
+    return p;
+}
+
+static const char *const code_names = "1 (ABM_BUSHING), 2 (MOUNT_LIMITS) or 3 (FLEX_JOINT)";
+
+void *force_model_setup(const element_signature *sig, void *ctx, element_setup_report *report)
+{
+    const int interface = *(const int *)ctx;
+    usrsub_user_list u;
+    int code = sig->code;
+    if (code == 0) { /* GFOSUB/FIESUB: the code comes first */
+        usrsub_user_list_init(&u, sig->par, sig->npar, 0);
+        char what[96];
+        snprintf(what, sizeof what, "the element code %s", code_names);
+        if (usrsub_user_list_int(&u, what, 1, 3, &code, &report->error) != 0)
+            return NULL;
+        usrsub_user_list_init(&u, sig->par + 1, sig->npar - 1, 1);
+    } else {
+        usrsub_user_list_init(&u, sig->par, sig->npar, 0);
+    }
+    force_model *m = calloc(1, sizeof *m);
+    if (m == NULL) {
+        usrsub_fail(&report->error, "out of memory");
+        return NULL;
+    }
+    m->code = code;
+    if (interface == ELEMENT_GFOSUB &&
+        (usrsub_user_list_int(&u, "the I marker id", 1, INT_MAX, &m->i_marker, &report->error) != 0 ||
+         usrsub_user_list_int(&u, "the J marker id", 1, INT_MAX, &m->j_marker, &report->error) != 0)) {
+        free(m);
+        return NULL;
+    }
+    int status = 0;
+    const char *ends = "the list";
+    switch (code) {
+    case FORCE_BUSHING:
+        m->bushing = property_named(&u, "the Reference_String id of the .gbs bushing file", "gbs",
+                                    read_bushing, free_bushing, report);
+        status = m->bushing != NULL ? 0 : -1;
+        if (status == 0) {
+            m->needs.translation = m->bushing->uses_translation;
+            m->needs.rotation = m->bushing->uses_rotation;
+            m->needs.velocity = m->bushing->uses_velocity;
+        }
+        ends = "an ABM_BUSHING list (markers, .gbs id)";
+        break;
+    default:
+        status = usrsub_fail(&report->error, "element code %d is not available in this build",
+                             code);
+        break;
+    }
+    if (status == 0)
+        status = usrsub_user_list_end(&u, ends, &report->error);
+    if (status != 0) {
+        free(m);
+        return NULL;
+    }
+    return m;
+}
+
+void force_model_release(void *model)
+{
+    free(model); /* the property data belongs to the property cache */
+}
+
+void force_model_evaluate(const force_model *m, const double d[6], const double v[6],
+                          double F[6], double *dFdd, double *dFdv)
+{
+    switch (m->code) {
+    case FORCE_BUSHING:
+        usrsub_bushing_force(m->bushing, d, v, F, dFdd, dFdv);
+        break;
+    default:
+        memset(F, 0, 6 * sizeof(double));
+        break;
+    }
+}
