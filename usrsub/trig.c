@@ -4,11 +4,16 @@
 
 #include <math.h>
 
+/* constants as a double and the rest (hi + lo), so sums keep their last bits */
 #define PI 3.141592653589793
+#define PI_LO 1.2246467991473532e-16
 #define PI_2 1.5707963267948966
+#define PI_2_LO 6.123233995736766e-17
 #define PI_6 0.5235987755982989
+#define PI_6_LO -5.360408832255455e-17
 #define TAN_PI_12 0.2679491924311227
 #define SQRT3 1.7320508075688772
+#define SQRT3_LO 1.0035084221806903e-16
 #define TWO_OVER_PI 0.6366197723675814
 /* pi/2 in three parts (33 + 33 + 53 bits), so n * part is exact for |n| < 2^20 */
 #define PIO2_1 1.5707963267341256
@@ -25,10 +30,10 @@ double usrsub_atan2(double y, double x)
     const double ax = fabs(x), ay = fabs(y);
     const int swap = ay > ax;
     double t = swap ? ax / ay : ay / ax; /* in (0, 1] */
-    double base = 0.0;
+    double base = 0.0, base_lo = 0.0;
     if (t > TAN_PI_12) { /* atan t = pi/6 + atan((t sqrt3 - 1) / (t + sqrt3)) */
-        t = (t * SQRT3 - 1.0) / (t + SQRT3);
-        base = PI_6;
+        t = (fma(t, SQRT3, -1.0) + t * SQRT3_LO) / (t + SQRT3);
+        base = PI_6, base_lo = PI_6_LO;
     }
     const double z = t * t;
     const double p =
@@ -40,11 +45,11 @@ double usrsub_atan2(double y, double x)
                             z * (0.07691819638198708 +
                                  z * (-0.06654945053677658 +
                                       z * (0.05716329894442852 + z * -0.03957893591546196)))))));
-    double a = base + (t + t * z * p);
+    double a = base + (t + (t * z * p + base_lo));
     if (swap)
-        a = PI_2 - a;
+        a = (PI_2 - a) + PI_2_LO;
     if (x < 0.0)
-        a = PI - a;
+        a = (PI - a) + PI_LO;
     return y < 0.0 ? -a : a;
 }
 

@@ -1,6 +1,6 @@
 /*
- * atan2 and sincos, accurate to about one unit in the last place and several
- * times cheaper than the C library's (which are correctly rounded, and slow):
+ * atan2 and sincos within 3 and 2 units in the last place (nearly always 1),
+ * and several times cheaper than the C library's correctly rounded ones:
  * the GFOSUB form turns the host's Euler angles into projection angles on
  * every call. Range reduction as in Cephes and fdlibm; the polynomial
  * coefficients are Chebyshev fits made with mpmath (error below 1e-17 on the
