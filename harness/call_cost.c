@@ -207,6 +207,7 @@ int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int c
                 snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
                 snprintf(r->function, sizeof r->function, "%s", b->names[fn]);
                 r->host_calls = r->dependency_calls = 0;
+                r->force_index = -1;
             }
         } else if (b->kind == HX_BIND_GFOSUB && rows < capacity) {
             hx_call dep, *eval = calloc(1, sizeof *eval);
@@ -225,6 +226,7 @@ int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int c
             snprintf(r->function, sizeof r->function, "%s", b->names[0]);
             r->dependency_calls = dep.host_calls;
             r->host_calls = eval->host_calls;
+            r->force_index = b->index;
         } else if (b->kind == HX_BIND_FIESUB && rows < capacity) {
             fiesub_bench *fb = calloc(1, sizeof *fb);
             fb->fn = b->fiesub, fb->id = b->id, fb->npar = b->npar, fb->par = b->par;
@@ -235,6 +237,7 @@ int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int c
             snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
             snprintf(r->function, sizeof r->function, "%s", b->names[0]);
             r->host_calls = r->dependency_calls = 0;
+            r->force_index = b->index;
         }
     }
     spin_up();
@@ -250,11 +253,14 @@ int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int c
             entries[k].ns[round] = 1e9 * (seconds() - start) / (double)entries[k].calls;
         }
     for (int k = 0; k < rows; ++k) {
-        qsort(entries[k].ns, (size_t)repeats, sizeof(double), compare_doubles);
-        costs[k].median_ns = entries[k].ns[repeats / 2];
-        costs[k].min_ns = entries[k].ns[0];
-        costs[k].max_ns = entries[k].ns[repeats - 1];
-        free(entries[k].ns);
+        costs[k].rounds = entries[k].ns; /* the caller frees them */
+        double *sorted = malloc(sizeof(double) * (size_t)repeats);
+        memcpy(sorted, entries[k].ns, sizeof(double) * (size_t)repeats);
+        qsort(sorted, (size_t)repeats, sizeof(double), compare_doubles);
+        costs[k].median_ns = sorted[repeats / 2];
+        costs[k].min_ns = sorted[0];
+        costs[k].max_ns = sorted[repeats - 1];
+        free(sorted);
     }
     for (int k = 0; k < ncontexts; ++k)
         free(contexts[k]);
@@ -269,4 +275,25 @@ void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count)
         fprintf(f, "%-26s %-20s %12.1f %12.1f %12.1f %10d %10d\n", costs[k].element,
                 costs[k].function, costs[k].median_ns, costs[k].min_ns, costs[k].max_ns,
                 costs[k].host_calls, costs[k].dependency_calls);
+}
+
+void hx_call_costs_free(hx_call_cost *costs, int count)
+{
+    for (int k = 0; k < count; ++k) {
+        free(costs[k].rounds);
+        costs[k].rounds = NULL;
+    }
+}
+
+double hx_added_cost(const hx_call_cost *base, const hx_call_cost *other, int repeats)
+{
+    double *d = malloc(sizeof(double) * (size_t)repeats);
+    if (d == NULL)
+        return NAN;
+    for (int k = 0; k < repeats; ++k)
+        d[k] = other->rounds[k] - base->rounds[k];
+    qsort(d, (size_t)repeats, sizeof(double), compare_doubles);
+    const double median = d[repeats / 2];
+    free(d);
+    return median;
 }

@@ -17,6 +17,8 @@ typedef struct hx_call_cost {
     double median_ns, min_ns, max_ns;
     int host_calls;       /* per evaluation */
     int dependency_calls; /* in the dependency pass */
+    int force_index;      /* the model's force element, or -1 (a coupler) */
+    double *rounds;       /* ns per call in each round, in round order */
 } hx_call_cost;
 
 /* Times each entry of each user element (COUSUB, COUXX and COUXX2 separately).
@@ -24,5 +26,10 @@ typedef struct hx_call_cost {
 int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int capacity);
 
 void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count);
+void hx_call_costs_free(hx_call_cost *costs, int count);
+
+/* Median over rounds of other's cost minus base's in the same round: a slow
+ * spell of the machine cancels out of the difference. */
+double hx_added_cost(const hx_call_cost *base, const hx_call_cost *other, int repeats);
 
 #endif

@@ -10,7 +10,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 
 #include "commands.h"
 #include "element_probe.h"
@@ -30,6 +29,7 @@ typedef struct rig {
     int max_iterations;
     double worst_residual;
     double radius_min[2], radius_max[2]; /* |F| and |d| in the plane of the path */
+    unsigned moving;      /* directions whose deformation or force is not zero */
     int a, b;             /* the path's plane */
 } rig;
 
@@ -54,29 +54,6 @@ static void usage(FILE *f)
             "                            (6, J axes), applied load (6), residual, iterations\n"
             "  --plot PREFIX             PNG plots with gnuplot: PREFIX_force_path.png,\n"
             "                            PREFIX_deformation_path.png, PREFIX_force_deformation.png\n");
-}
-
-static int find_element(const hx_model *m, const char *text, int *index, usrsub_message *msg)
-{
-    int want = -1; /* -1 any, else the interface */
-    const char *number = text;
-    if (strncasecmp(text, "vector:", 7) == 0)
-        want = HX_FORCE_GFOSUB, number = text + 7;
-    else if (strncasecmp(text, "field:", 6) == 0)
-        want = HX_FORCE_FIESUB, number = text + 6;
-    const int id = atoi(number);
-    int found = 0;
-    for (int k = 0; k < m->nforces; ++k)
-        if (m->forces[k].id == id && (want < 0 || (int)m->forces[k].interface == want)) {
-            *index = k;
-            ++found;
-        }
-    if (found == 1)
-        return 0;
-    return usrsub_fail(msg, found ? "element %d is both a Force_Vector_TwoBody and a Force_Field:"
-                                    " write vector:%d or field:%d"
-                                  : "no Force_Vector_TwoBody or Force_Field %d%.0d%.0d",
-                       id, id, id);
 }
 
 static int evaluate(rig *r, double t, const double d[6], const double v[6], double F[6],
@@ -145,6 +122,9 @@ static int solve(rig *r, double t, const double applied[6], const double *d_prev
 
 static void track(rig *r, const double d[6], const double F[6], int first)
 {
+    for (int k = 0; k < 6; ++k)
+        if (d[k] != 0.0 || fabs(F[k]) > 1e-9)
+            r->moving |= 1u << k;
     const double rf = hypot(F[r->a], F[r->b]), rd = hypot(d[r->a], d[r->b]);
     if (first) {
         r->radius_min[0] = r->radius_max[0] = rf;
@@ -256,7 +236,7 @@ int hx_command_rig(int argc, char **argv)
     if (r.b <= r.a)
         r.b = (r.a + 1) % 6;
     hx_session s;
-    if (hx_session_open(&s, argv[optind], &msg) != 0 || find_element(s.model, element, &r.force, &msg) != 0) {
+    if (hx_session_open(&s, argv[optind], &msg) != 0 || hx_model_find_force(s.model, element, &r.force, &msg) != 0) {
         fprintf(stderr, "usrsub-harness rig: %s\n", msg.text);
         if (s.model != NULL)
             hx_session_close(&s);
@@ -264,11 +244,13 @@ int hx_command_rig(int argc, char **argv)
         return 1;
     }
     r.s = &s;
-    char csv_path[4096], prefix[4096];
-    if (out == NULL && plot != NULL)
-        snprintf(csv_path, sizeof csv_path, "%s.csv", hx_session_path(&s, plot, prefix, sizeof prefix));
-    else if (out != NULL)
+    char csv_path[4096], prefix[4096] = "";
+    if (plot != NULL)
+        hx_session_path(&s, plot, prefix, sizeof prefix);
+    if (out != NULL)
         hx_session_path(&s, out, csv_path, sizeof csv_path);
+    else if (plot != NULL)
+        snprintf(csv_path, sizeof csv_path, "%s.csv", prefix);
     if ((out != NULL || plot != NULL) && (r.csv = fopen(csv_path, "w")) == NULL) {
         fprintf(stderr, "usrsub-harness rig: cannot write %s\n", csv_path);
         hx_session_close(&s);
@@ -296,7 +278,7 @@ int hx_command_rig(int argc, char **argv)
     if (status == 0 && plot != NULL) {
         char title[128];
         snprintf(title, sizeof title, "element %d", f->id);
-        plot_status = hx_plot_rig(csv_path, prefix, title, r.a, r.b);
+        plot_status = hx_plot_rig(csv_path, prefix, title, r.a, r.b, r.moving);
         if (plot_status == 1)
             fprintf(stderr, "rig: gnuplot is not installed; no plots\n");
         else if (plot_status == 0)

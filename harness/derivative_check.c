@@ -25,31 +25,48 @@ void hx_worst_update(hx_worst *w, double error, const char *fmt, ...)
     }
 }
 
+/* Error of analytic against a difference quotient (never tighter than its noise). */
+static double quotient_error(double analytic, double fd, double magnitude, double step,
+                             double floor)
+{
+    const double noise = 4.0 * DBL_EPSILON * magnitude / step;
+    return hx_relative_error(analytic, fd, fmax(floor, noise / HX_DERIVATIVE_TOLERANCE));
+}
+
 double hx_check_column(hx_sample_fn *f, void *ctx, double *x, int i, int nout,
                        const double *analytic, const double *floor, double h)
 {
-    double plus[64], minus[64], best[64];
+    enum { MAX_OUT = 64 };
+    double p1[MAX_OUT], m1[MAX_OUT], p2[MAX_OUT], m2[MAX_OUT], f0[MAX_OUT], best[MAX_OUT];
     const double x0 = x[i];
-    if (nout > 64)
-        nout = 64;
+    if (nout > MAX_OUT)
+        nout = MAX_OUT;
     for (int j = 0; j < nout; ++j)
         best[j] = INFINITY;
+    if (f(ctx, x, f0) != 0)
+        return INFINITY;
     for (int refine = 0; refine < 3; ++refine) {
         const double step = h * pow(0.1, refine);
-        x[i] = x0 + step;
-        const int ok_plus = f(ctx, x, plus) == 0;
-        x[i] = x0 - step;
-        const int ok_minus = f(ctx, x, minus) == 0;
-        x[i] = x0;
-        if (!ok_plus || !ok_minus)
-            return INFINITY;
+        const double at[4] = {x0 + step, x0 - step, x0 + 2.0 * step, x0 - 2.0 * step};
+        double *const out[4] = {p1, m1, p2, m2};
+        for (int k = 0; k < 4; ++k) {
+            x[i] = at[k];
+            const int ok = f(ctx, x, out[k]) == 0;
+            x[i] = x0;
+            if (!ok)
+                return INFINITY;
+        }
         int all_pass = 1;
         for (int j = 0; j < nout; ++j) {
-            const double fd = (plus[j] - minus[j]) / (2.0 * step);
-            /* never ask for more than the difference's rounding noise */
-            const double noise = 4.0 * DBL_EPSILON * fmax(fabs(plus[j]), fabs(minus[j])) / step;
-            const double bound = fmax(floor[j], noise / HX_DERIVATIVE_TOLERANCE);
-            best[j] = fmin(best[j], hx_relative_error(analytic[j], fd, bound));
+            const double size = fmax(fmax(fabs(p2[j]), fabs(m2[j])), fabs(f0[j]));
+            const double central = (p1[j] - m1[j]) / (2.0 * step);
+            const double forward = (-3.0 * f0[j] + 4.0 * p1[j] - p2[j]) / (2.0 * step);
+            const double backward = (3.0 * f0[j] - 4.0 * m1[j] + m2[j]) / (2.0 * step);
+            double e = quotient_error(analytic[j], central, size, step, floor[j]);
+            /* one-sided quotients carry 4x the rounding noise of the central one */
+            e = fmin(e, quotient_error(analytic[j], forward, 4.0 * size, step, floor[j]));
+            e = fmin(e, quotient_error(analytic[j], backward, 4.0 * size, step, floor[j]));
+            best[j] = fmin(best[j], e);
             all_pass = all_pass && best[j] <= HX_DERIVATIVE_TOLERANCE;
         }
         if (all_pass)

@@ -1,9 +1,12 @@
 /*
  * Analytic partials against central differences, with a relative error and an
  * absolute floor, and never tighter than the rounding noise of the difference
- * (4 eps max|f| / h). At a kink (a spline knot's jump in the third derivative, a
- * contact switch) the central difference converges only like h; a value that
- * fails at h is retried at h/10 and h/100, and passes when it converges.
+ * (4 eps max|f| / h). Near a kink (a spline knot's jump in the third
+ * derivative) the central difference converges only like h: a value that fails
+ * at h is retried at h/10 and h/100. At a switch point itself (a contact
+ * closing, a damper clipped) the two sides have different slopes; there the
+ * analytic value must match one of the one-sided limits (second-order forward
+ * or backward differences).
  */
 #ifndef HX_DERIVATIVE_CHECK_H
 #define HX_DERIVATIVE_CHECK_H

@@ -72,8 +72,9 @@ static int setup_bodies(hx_dynamics *d, usrsub_message *msg)
     }
     d->nq = nq;
     d->nu = nu;
-    d->aux = nq + nu;
-    d->n = nq + nu + 1;
+    d->load_work = nq + nu;
+    d->element_work = nq + nu + 1;
+    d->n = nq + nu + 2;
     return 0;
 }
 
@@ -208,7 +209,7 @@ static double apply(hx_dynamics *d, int body, const double point[3], const doubl
     return sign * (v3_dot(F, vp) + (T != NULL ? v3_dot(T, f->w) : 0.0));
 }
 
-static double apply_loads(hx_dynamics *d)
+static double apply_loads(hx_dynamics *d, double t)
 {
     const hx_model *m = d->m;
     double power = 0.0;
@@ -218,24 +219,29 @@ static double apply_loads(hx_dynamics *d)
         hx_marker_frame(m, d->s->frames, l->i_marker, &I);
         const int bi = m->markers[l->i_marker].body;
         if (l->kind == HX_LOAD_VECTOR) {
-            double F[3], T[3];
+            double F[3], T[3], f[3], tq[3];
+            for (int i = 0; i < 3; ++i) {
+                f[i] = hx_time_function_at(&l->force[i], t);
+                tq[i] = hx_time_function_at(&l->torque[i], t);
+            }
             hx_marker_frame(m, d->s->frames, l->ref_marker, &ref);
-            m3_apply(F, ref.R, l->force);
-            m3_apply(T, ref.R, l->torque);
+            m3_apply(F, ref.R, f);
+            m3_apply(T, ref.R, tq);
             power += apply(d, bi, I.p, F, T, 1.0);
             continue;
         }
         hx_marker_frame(m, d->s->frames, l->j_marker, &J);
         const int bj = m->markers[l->j_marker].body;
         double F[3] = {0, 0, 0}, T[3] = {0, 0, 0};
+        const double value = hx_time_function_at(&l->value, t);
         if (l->kind == HX_LOAD_SCALAR_TORQUE) {
-            v3_set(T, J.R[2] * l->value, J.R[5] * l->value, J.R[8] * l->value);
+            v3_set(T, J.R[2] * value, J.R[5] * value, J.R[8] * value);
         } else {
             double r[3];
             v3_sub(r, I.p, J.p);
             const double len = v3_norm(r);
             if (len > 0.0)
-                v3_scale(F, r, l->value / len); /* positive pushes I away from J */
+                v3_scale(F, r, value / len); /* positive pushes I away from J */
         }
         power += apply(d, bi, I.p, F, T, 1.0);
         if (!l->action_only)
@@ -252,9 +258,11 @@ static int all_finite(const double *v, int n)
     return 1;
 }
 
-static int apply_elements(hx_dynamics *d, double t)
+/* Applies every force element; *power receives the power of their forces. */
+static int apply_elements(hx_dynamics *d, double t, double *power)
 {
     const hx_model *m = d->m;
+    *power = 0.0;
     for (int k = 0; k < m->nforces; ++k) {
         const hx_force *f = &m->forces[k];
         hx_binding *b = d->force_binding[k];
@@ -282,8 +290,8 @@ static int apply_elements(hx_dynamics *d, double t)
         m3_apply(T, axes, out + 3);
         memcpy(d->element_load + 6 * k, F, sizeof F);
         memcpy(d->element_load + 6 * k + 3, T, sizeof T);
-        apply(d, m->markers[f->i_marker].body, I.p, F, T, 1.0);
-        apply(d, m->markers[f->j_marker].body, I.p, F, T, -1.0); /* reaction at I's point */
+        *power += apply(d, m->markers[f->i_marker].body, I.p, F, T, 1.0);
+        *power += apply(d, m->markers[f->j_marker].body, I.p, F, T, -1.0); /* reaction at I's point */
     }
     return 0;
 }
@@ -395,8 +403,8 @@ int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot)
     for (int k = 0; k < nb; ++k)
         if (d->dof[k].kind != HX_DOF_GROUND)
             v3_axpy(d->force + 3 * k, m->bodies[k].mass / d->ucf, m->gravity);
-    ydot[d->aux] = apply_loads(d);
-    if (apply_elements(d, t) != 0)
+    ydot[d->load_work] = apply_loads(d, t);
+    if (apply_elements(d, t, &ydot[d->element_work]) != 0)
         return -1;
 
     const double *u = y + nq;
@@ -588,7 +596,7 @@ int hx_dynamics_initial_state(hx_dynamics *d, double *y)
     return hx_dynamics_project(d, 0.0, y);
 }
 
-double hx_dynamics_energy(hx_dynamics *d, double t, const double *y, double *kinetic_out)
+hx_energy hx_dynamics_energy(hx_dynamics *d, double t, const double *y)
 {
     const hx_model *m = d->m;
     hx_dynamics_frames(d, t, y);
@@ -614,9 +622,12 @@ double hx_dynamics_energy(hx_dynamics *d, double t, const double *y, double *kin
         hx_element_state(d->s, k, disp, velo);
         elastic += hx_element_potential(d->s, k, t, disp);
     }
-    if (kinetic_out != NULL)
-        *kinetic_out = kinetic / d->ucf;
-    return (kinetic + potential) / d->ucf + elastic - y[d->aux];
+    hx_energy e;
+    e.kinetic = kinetic / d->ucf;
+    e.elastic = elastic;
+    e.total = (kinetic + potential) / d->ucf + elastic - y[d->load_work];
+    e.balance = (kinetic + potential) / d->ucf - y[d->load_work] - y[d->element_work];
+    return e;
 }
 
 void hx_dynamics_advance_positions(hx_dynamics *d, double *y, double h)

@@ -36,7 +36,8 @@ typedef struct hx_dynamics {
     const hx_model *m;
     double ucf;                 /* mass * length / time^2 per force unit */
     hx_body_dof *dof;
-    int nq, nu, n, aux;
+    int nq, nu, n;
+    int load_work, element_work; /* y indices of the work done by loads and by force elements */
     hx_binding **coupler_binding; /* per coupler; NULL for the built-in form */
     hx_binding **force_binding;   /* per force element */
     double *lambda;             /* multipliers of the last evaluation */
@@ -69,10 +70,17 @@ int hx_dynamics_project(hx_dynamics *d, double t, double *y);
 int hx_dynamics_residuals(hx_dynamics *d, double t, const double *y, double *phi,
                           double *phidot);
 
-/* Kinetic + gravity potential + elastic energy of the force elements - work
- * of the loads, in force * length units; kinetic (may be NULL) receives the
- * kinetic part alone. */
-double hx_dynamics_energy(hx_dynamics *d, double t, const double *y, double *kinetic);
+/* The energy of a state, in force * length units. */
+typedef struct hx_energy {
+    double total;     /* kinetic + gravity potential + elastic - work of the loads */
+    double kinetic;
+    double elastic;   /* the force elements' potential at their deformation */
+    double balance;   /* kinetic + gravity potential - work of loads and elements:
+                       * constant whatever the elements do (damping included),
+                       * so its drift is the integrator's alone */
+} hx_energy;
+
+hx_energy hx_dynamics_energy(hx_dynamics *d, double t, const double *y);
 
 /* q <- q + h N(q) u (quaternions by their exact increment), for symplectic Euler. */
 void hx_dynamics_advance_positions(hx_dynamics *d, double *y, double h);

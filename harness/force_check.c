@@ -34,7 +34,7 @@ void hx_sample_element_state(const hx_session *s, int force, int k, double disp[
     if (k == 0)
         return;
     unsigned seed = 2654435761u * (unsigned)k;
-    const double amplitude = 0.5 + 4.5 * (k - 1) / (HX_FORCE_SAMPLES - 2.0);
+    const double amplitude = 0.5 + 9.5 * (k - 1) / (HX_FORCE_SAMPLES - 2.0);
     for (int i = 0; i < 6; ++i) {
         disp[i] += amplitude * scale[i] * jitter(&seed);
         velo[i] += amplitude * scale[6 + i] * jitter(&seed);
@@ -128,51 +128,32 @@ static void perturb_body(hx_frame *f, int c, double delta)
         f->w[c - 9] += delta;
 }
 
-int hx_audit_dependencies(hx_session *s, hx_binding *b)
+/* Body states of the audit's frames that move the force but no declared
+ * query; returns the failures, counting what moves the force. */
+static int audit_states(hx_session *s, hx_binding *b, const hx_frame *base, hx_frame *moved,
+                        const double scale[12], const double out0[6], int *influencing,
+                        int *checked)
 {
     static const char *const states[12] = {"x", "y", "z", "rotation about x", "rotation about y",
                                            "rotation about z", "vx", "vy", "vz", "wx", "wy", "wz"};
     const hx_model *m = s->model;
-    const hx_force *f = &m->forces[b->index];
-    const int nb = m->nbodies;
-    hx_frame *base = malloc(sizeof *base * (size_t)nb), *moved = malloc(sizeof *moved * (size_t)nb);
     int failures = 0;
-    double disp[6], velo[6], scale[12], out0[6], out1[6];
-    /* a deformed, moving state, so that every term is awake */
-    hx_sample_element_state(s, b->index, 3, disp, velo, scale);
-    hx_place_relative(m, s->frames, base, f->i_marker, f->j_marker, disp, velo);
-    for (int k = 0; k < nb; ++k) /* J's body moves too, to expose frame terms */
-        if (!m->bodies[k].is_ground && k != m->markers[f->i_marker].body)
-            for (int c = 6; c < 12; ++c)
-                perturb_body(&base[k], c, 0.3 * scale[c < 9 ? 6 : 9]);
-    hx_call call;
-    hx_binding_call_init(b, &call, 0);
-    if (gfosub_with(s, b, base, &call, out0) != 0)
-        goto done;
     char text[512];
-    if (call.undeclared > 0) {
-        char q[64];
-        printf("  %s %d: FAIL: reads %s outside the dependencies it declared (%s)\n", b->element,
-               b->id, hx_query_text(&call.first_undeclared, q, sizeof q),
-               hx_dependencies_text(&b->deps, text, sizeof text));
-        ++failures;
-    }
-    /* every state the force depends on is reached by a declared query */
-    int checked = 0, influencing = 0;
-    for (int k = 0; k < nb; ++k) {
+    for (int k = 0; k < m->nbodies; ++k) {
         if (m->bodies[k].is_ground)
             continue;
         for (int c = 0; c < 12; ++c) {
-            memcpy(moved, base, sizeof *moved * (size_t)nb);
-            const double delta = 1e-5 * scale[c < 3 ? 0 : c < 6 ? 3 : c < 9 ? 6 : 9];
-            perturb_body(&moved[k], c, delta);
+            memcpy(moved, base, sizeof *moved * (size_t)m->nbodies);
+            perturb_body(&moved[k], c, 1e-5 * scale[c < 3 ? 0 : c < 6 ? 3 : c < 9 ? 6 : 9]);
+            hx_call call;
+            double out1[6];
             hx_binding_call_init(b, &call, 0);
             if (gfosub_with(s, b, moved, &call, out1) != 0)
-                goto done;
-            ++checked;
+                return failures + 1;
+            ++*checked;
             if (!differs(out0, out1, 6, 1e-11))
                 continue;
-            ++influencing;
+            ++*influencing;
             int reached = 0;
             for (int q = 0; q < b->deps.count && !reached; ++q) {
                 const hx_query *dq = &b->deps.query[q];
@@ -189,39 +170,79 @@ int hx_audit_dependencies(hx_session *s, hx_binding *b)
             }
         }
     }
-    /* every declared query is used */
+    return failures;
+}
+
+int hx_audit_dependencies(hx_session *s, hx_binding *b)
+{
+    const hx_model *m = s->model;
+    const hx_force *f = &m->forces[b->index];
+    const int nb = m->nbodies;
+    hx_frame *base = malloc(sizeof *base * (size_t)nb), *moved = malloc(sizeof *moved * (size_t)nb);
+    int failures = 0, checked = 0, influencing = 0;
+    unsigned used[HX_MAX_QUERIES] = {0};
+    int counts[HX_MAX_QUERIES] = {0};
+    char text[512];
+    /* deformed, moving states reaching 10 mm and 0.2 rad, so that every term
+     * (contacts beyond gaps included) is awake in some of them */
+    for (int sample = 1; sample < HX_FORCE_SAMPLES && failures == 0; ++sample) {
+        double disp[6], velo[6], scale[12], out0[6], out1[6];
+        hx_sample_element_state(s, b->index, sample, disp, velo, scale);
+        hx_place_relative(m, s->frames, base, f->i_marker, f->j_marker, disp, velo);
+        for (int k = 0; k < nb; ++k) /* J's body moves too, to expose frame terms */
+            if (!m->bodies[k].is_ground && k != m->markers[f->i_marker].body)
+                for (int c = 6; c < 12; ++c)
+                    perturb_body(&base[k], c, 0.3 * scale[c < 9 ? 6 : 9]);
+        hx_call call;
+        hx_binding_call_init(b, &call, 0);
+        if (gfosub_with(s, b, base, &call, out0) != 0) {
+            ++failures;
+            break;
+        }
+        if (call.undeclared > 0) {
+            char q[64];
+            printf("  %s %d: FAIL: reads %s outside the dependencies it declared (%s)\n",
+                   b->element, b->id, hx_query_text(&call.first_undeclared, q, sizeof q),
+                   hx_dependencies_text(&b->deps, text, sizeof text));
+            ++failures;
+        }
+        failures += audit_states(s, b, base, moved, scale, out0, &influencing, &checked);
+        for (int q = 0; q < b->deps.count; ++q) {
+            double a[6];
+            const hx_query *dq = &b->deps.query[q];
+            counts[q] = hx_answer_query(m, base, dq->fnc, dq->ipar, dq->nsize, a);
+            for (int c = 0; c < counts[q]; ++c) {
+                hx_binding_call_init(b, &call, 0);
+                call.perturb_query = q;
+                call.perturb_component = c;
+                call.perturb_delta = 1e-6 * (1.0 + fabs(a[c]));
+                if (gfosub_with(s, b, base, &call, out1) != 0) {
+                    ++failures;
+                    break;
+                }
+                if (differs(out0, out1, 6, 1e-12))
+                    used[q] |= 1u << c;
+            }
+        }
+    }
     char used_text[512] = "";
     size_t used_len = 0;
     for (int q = 0; q < b->deps.count; ++q) {
-        double a[6];
-        const hx_query *dq = &b->deps.query[q];
-        const int n = hx_answer_query(m, base, dq->fnc, dq->ipar, dq->nsize, a);
-        unsigned used = 0;
-        for (int c = 0; c < n; ++c) {
-            hx_binding_call_init(b, &call, 0);
-            call.perturb_query = q;
-            call.perturb_component = c;
-            call.perturb_delta = 1e-6 * (1.0 + fabs(a[c]));
-            if (gfosub_with(s, b, base, &call, out1) != 0)
-                goto done;
-            if (differs(out0, out1, 6, 1e-12))
-                used |= 1u << c;
-        }
         char qt[64];
+        hx_query_text(&b->deps.query[q], qt, sizeof qt);
         used_len += (size_t)snprintf(used_text + used_len, sizeof used_text - used_len,
-                                     "%s%s uses %d of %d", q ? ", " : "",
-                                     hx_query_text(dq, qt, sizeof qt), __builtin_popcount(used), n);
-        if (used == 0) {
-            printf("  %s %d: FAIL: declares %s but its force does not depend on it\n", b->element,
-                   b->id, qt);
+                                     "%s%s uses %d of %d", q ? ", " : "", qt,
+                                     __builtin_popcount(used[q]), counts[q]);
+        if (used[q] == 0) {
+            printf("  %s %d: FAIL: declares %s but its force depends on it at none of the %d"
+                   " states\n", b->element, b->id, qt, HX_FORCE_SAMPLES - 1);
             ++failures;
         }
     }
-    printf("  %s %d: dependency audit: declared %s; %d of %d body states move the force, all"
-           " reached by a declared query; %s: %s\n", b->element, b->id,
-           hx_dependencies_text(&b->deps, text, sizeof text), influencing, checked,
-           used_text[0] ? used_text : "no queries", failures ? "FAIL" : "pass");
-done:
+    printf("  %s %d: dependency audit at %d states: declared %s; %d of %d body-state changes"
+           " move the force, all reached by a declared query; %s: %s\n", b->element, b->id,
+           HX_FORCE_SAMPLES - 1, hx_dependencies_text(&b->deps, text, sizeof text), influencing,
+           checked, used_text[0] ? used_text : "no queries", failures ? "FAIL" : "pass");
     hx_host_set_frames(s->frames, 0.0);
     free(base);
     free(moved);

@@ -1,13 +1,14 @@
 /*
  * Checks of force elements for usrsub-harness check:
  *  - FIESUB: dfddis and dfdvel against central differences of the field at
- *    the initial state and at sampled deformations around it (0.5 to 5 mm and
- *    0.01 to 0.1 rad, in the model's units), column by column;
+ *    the initial state and at sampled deformations around it (0.5 to 10 mm and
+ *    0.01 to 0.2 rad, in the model's units), column by column;
  *  - GFOSUB: a dependency audit. Every body state (position, orientation,
  *    velocity, angular velocity) the force depends on, by finite differences,
  *    must be reached by a query declared in the dependency pass; every
- *    declared query must change the force when its answer changes; and no
- *    query may be made outside the declared ones.
+ *    declared query must change the force, at one of the sampled states at
+ *    least, when its answer changes; and no query may be made outside the
+ *    declared ones.
  * Each prints its findings and returns 0 (pass) or 1.
  */
 #ifndef HX_FORCE_CHECK_H

@@ -1,6 +1,8 @@
 /* Model look-ups, USER list parsing and release (model.h). */
 #include "model.h"
 
+#include "usrsub/step.h"
+
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -44,6 +46,29 @@ const char *hx_model_string(const hx_model *m, int id)
         if (m->strings[k].id == id)
             return m->strings[k].text;
     return NULL;
+}
+
+int hx_model_find_force(const hx_model *m, const char *text, int *index, usrsub_message *msg)
+{
+    int want = -1; /* -1 any, else the interface */
+    const char *number = text;
+    if (strncasecmp(text, "vector:", 7) == 0)
+        want = HX_FORCE_GFOSUB, number = text + 7;
+    else if (strncasecmp(text, "field:", 6) == 0)
+        want = HX_FORCE_FIESUB, number = text + 6;
+    const int id = atoi(number);
+    int found = 0;
+    for (int k = 0; k < m->nforces; ++k)
+        if (m->forces[k].id == id && (want < 0 || (int)m->forces[k].interface == want)) {
+            *index = k;
+            ++found;
+        }
+    if (found == 1)
+        return 0;
+    return usrsub_fail(msg, found ? "element %d is both a Force_Vector_TwoBody and a Force_Field:"
+                                    " write vector:%d or field:%d"
+                                  : "no Force_Vector_TwoBody or Force_Field %d%.0d%.0d",
+                       id, id, id);
 }
 
 int hx_parse_user_list(const char *text, double **par_out, int *npar_out, usrsub_message *msg)
@@ -145,4 +170,64 @@ void hx_model_free(hx_model *m)
     free(m->path);
     free(m->dir);
     free(m);
+}
+
+double hx_time_function_at(const hx_time_function *f, double t)
+{
+    switch (f->kind) {
+    case 1: return usrsub_step(t, f->a[0], f->a[1], f->a[2], f->a[3]).value;
+    case 2: return usrsub_step5(t, f->a[0], f->a[1], f->a[2], f->a[3]).value;
+    default: return f->a[0];
+    }
+}
+
+int hx_parse_time_function(const char *text, hx_time_function *f)
+{
+    memset(f, 0, sizeof *f);
+    const char *p = text;
+    while (isspace((unsigned char)*p))
+        ++p;
+    int kind = 0;
+    if (strncasecmp(p, "STEP5", 5) == 0)
+        kind = 2, p += 5;
+    else if (strncasecmp(p, "STEP", 4) == 0)
+        kind = 1, p += 4;
+    if (kind == 0) {
+        char *end;
+        errno = 0;
+        f->a[0] = strtod(p, &end);
+        while (isspace((unsigned char)*end))
+            ++end;
+        return end != p && *end == '\0' && errno != ERANGE && isfinite(f->a[0]) ? 0 : -1;
+    }
+    while (isspace((unsigned char)*p))
+        ++p;
+    if (*p++ != '(')
+        return -1;
+    while (isspace((unsigned char)*p))
+        ++p;
+    if (strncasecmp(p, "TIME", 4) != 0)
+        return -1;
+    p += 4;
+    for (int k = 0; k < 4; ++k) {
+        while (isspace((unsigned char)*p))
+            ++p;
+        if (*p++ != ',')
+            return -1;
+        char *end;
+        f->a[k] = strtod(p, &end);
+        if (end == p || !isfinite(f->a[k]))
+            return -1;
+        p = end;
+    }
+    while (isspace((unsigned char)*p))
+        ++p;
+    if (*p++ != ')')
+        return -1;
+    while (isspace((unsigned char)*p))
+        ++p;
+    if (*p != '\0' || !(f->a[2] >= f->a[0]))
+        return -1;
+    f->kind = kind;
+    return 0;
 }

@@ -74,6 +74,16 @@ typedef struct hx_force {
     int line;
 } hx_force;
 
+/* A load's value over time: a number, or STEP/STEP5(TIME, t0, h0, t1, h1). */
+typedef struct hx_time_function {
+    int kind; /* 0 constant, 1 STEP, 2 STEP5 */
+    double a[5]; /* constant: a[0]; steps: t0 h0 t1 h1 */
+} hx_time_function;
+
+double hx_time_function_at(const hx_time_function *f, double t);
+/* Parses a number or STEP(TIME, ...)/STEP5(TIME, ...); 0 or -1. */
+int hx_parse_time_function(const char *text, hx_time_function *f);
+
 enum hx_load_kind {
     HX_LOAD_VECTOR,        /* Force_Vector_OneBody: constant force/torque at a marker */
     HX_LOAD_SCALAR_TORQUE, /* Force_Scalar_TwoBody TORQUE: about J's z axis */
@@ -84,8 +94,8 @@ typedef struct hx_load {
     int id;
     enum hx_load_kind kind;
     int i_marker, j_marker, ref_marker; /* indices, -1 when not used */
-    double force[3], torque[3];         /* vector loads, in ref_marker axes */
-    double value;                       /* scalar loads */
+    hx_time_function force[3], torque[3]; /* vector loads, in ref_marker axes */
+    hx_time_function value;               /* scalar loads */
     int action_only;
     int line;
 } hx_load;
@@ -131,6 +141,10 @@ int hx_model_marker(const hx_model *m, int id);
 int hx_model_body(const hx_model *m, int id);
 int hx_model_joint(const hx_model *m, int id);
 const char *hx_model_string(const hx_model *m, int id);
+/* Index of the force element written ID, vector:ID or field:ID (the prefix
+ * needed when a Force_Vector_TwoBody and a Force_Field share ID); -1 and msg
+ * when there is none or two. */
+int hx_model_find_force(const hx_model *m, const char *text, int *index, usrsub_message *msg);
 
 /* Parses "USER(p1, p2, ...)"; returns 0, or -1 with the reason in msg. */
 int hx_parse_user_list(const char *text, double **par, int *npar, usrsub_message *msg);

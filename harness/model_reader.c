@@ -659,6 +659,26 @@ static hx_load *push_load(element_context *e, raw_refs **refs)
     return l;
 }
 
+/* A load attribute: a number or STEP/STEP5(TIME, t0, h0, t1, h1). */
+static int load_attr(element_context *e, const char *name, int required, hx_time_function *f)
+{
+    const char *text = attr(e, name);
+    if (text == NULL) {
+        if (required) {
+            fail(e->r, e->line, "%s %d: attribute %s is missing", e->name, e->id, name);
+            return -1;
+        }
+        memset(f, 0, sizeof *f);
+        return 0;
+    }
+    if (hx_parse_time_function(text, f) != 0) {
+        fail(e->r, e->line, "%s %d: %s = \"%s\": the harness reads a number or"
+             " STEP(TIME, t0, h0, t1, h1) / STEP5(...) with t1 >= t0", e->name, e->id, name, text);
+        return -1;
+    }
+    return 0;
+}
+
 static void read_vector_load(element_context *e)
 {
     static const char *const known[] = {"id", "type", "marker_id", "ref_marker_id",
@@ -680,7 +700,7 @@ static void read_vector_load(element_context *e)
     static const char *const comps[6] = {"fx_expression", "fy_expression", "fz_expression",
                                          "tx_expression", "ty_expression", "tz_expression"};
     for (int k = 0; k < 6; ++k)
-        if (real_attr(e, comps[k], 0, 0.0, k < 3 ? &l->force[k] : &l->torque[k - 3]) != 0)
+        if (load_attr(e, comps[k], 0, k < 3 ? &l->force[k] : &l->torque[k - 3]) != 0)
             return;
     if (int_attr(e, "marker_id", 1, 0, &refs->ids[0]) == 0)
         int_attr(e, "ref_marker_id", 0, 0, &refs->ids[2]);
@@ -709,7 +729,7 @@ static void read_scalar_load(element_context *e)
     const char *action = attr(e, "is_action_only");
     l->action_only = action != NULL && strcasecmp(action, "TRUE") == 0;
     static const char *const names[] = {"i_marker_id", "j_marker_id"};
-    if (real_attr(e, value_name, 1, 0.0, &l->value) == 0)
+    if (load_attr(e, value_name, 1, &l->value) == 0)
         read_refs(e, refs, names, 2);
 }
 

@@ -18,8 +18,14 @@ int hx_gnuplot(const char *path, const char *script)
     return system(command) == 0 ? 0 : -1;
 }
 
-int hx_plot_rig(const char *csv, const char *prefix, const char *title, int a, int b)
+int hx_plot_rig(const char *csv, const char *prefix, const char *title, int a, int b,
+                unsigned directions)
 {
+    int panels = 0;
+    for (int k = 0; k < 6; ++k)
+        panels += (directions >> k) & 1u;
+    if (panels == 0)
+        directions = 1u << a, panels = 1;
     static const char *const disp[6] = {"x", "y", "z", "ax", "ay", "az"};
     static const char *const load[6] = {"Fx", "Fy", "Fz", "Tx", "Ty", "Tz"};
     char script[8192];
@@ -36,12 +42,15 @@ int hx_plot_rig(const char *csv, const char *prefix, const char *title, int a, i
         "set xlabel '%s'\nset ylabel '%s'\n"
         "plot '%s' using %d:%d with lines lw 2\n"
         "set size noratio\n"
-        "set terminal pngcairo size 1400,900 font ',10'\n"
+        "set terminal pngcairo size %d,%d font ',10'\n"
         "set output '%s_force_deformation.png'\n"
-        "set multiplot layout 2,3 title '%s: force against deformation per direction'\n",
+        "set multiplot layout %d,%d title '%s: force against deformation per direction'\n",
         prefix, title, load[b], load[a], load[a], load[b], csv, 14 + a, 14 + b,
-        prefix, title, disp[b], disp[a], disp[a], disp[b], csv, 2 + a, 2 + b, prefix, title);
+        prefix, title, disp[b], disp[a], disp[a], disp[b], csv, 2 + a, 2 + b,
+        panels > 3 ? 1400 : 480 * panels, panels > 3 ? 900 : 460, prefix, panels > 3 ? 2 : 1,
+        panels > 3 ? 3 : panels, title);
     for (int k = 0; k < 6 && n > 0 && (size_t)n < sizeof script; ++k)
+        if ((directions >> k) & 1u)
         n += snprintf(script + n, sizeof script - (size_t)n,
                       "set title '%s against %s'\nset xlabel '%s'\nset ylabel '%s'\n"
                       "plot '%s' using %d:%d with lines lw 2\n",

@@ -8,7 +8,9 @@ int hx_gnuplot(const char *path, const char *script);
 
 /* The rig's plots from its CSV: PREFIX_force_path.png (the force in the
  * plane of the path), PREFIX_deformation_path.png, PREFIX_force_deformation.png
- * (force against deformation per direction). a and b: the plane's directions. */
-int hx_plot_rig(const char *csv, const char *prefix, const char *title, int a, int b);
+ * (force against deformation for the directions in the mask that move or
+ * carry force). a and b: the plane's directions. */
+int hx_plot_rig(const char *csv, const char *prefix, const char *title, int a, int b,
+                unsigned directions);
 
 #endif

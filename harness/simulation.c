@@ -15,6 +15,13 @@ static double now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* Energy the force elements took out since the start: the work they did not
+ * store as elastic energy (total - balance is elastic + their work). */
+static double hx_dissipated(const hx_energy *e, const hx_energy *e0)
+{
+    return (e0->total - e0->balance) - (e->total - e->balance);
+}
+
 void hx_csv_header(FILE *f, const hx_dynamics *d)
 {
     const hx_model *m = d->m;
@@ -46,10 +53,11 @@ void hx_csv_header(FILE *f, const hx_dynamics *d)
         for (int j = 0; j < 6; ++j)
             fprintf(f, ",force%d.%s", id, loads[j]);
     }
-    fprintf(f, ",energy,phi,phidot\n");
+    fprintf(f, ",energy,dissipated,phi,phidot\n");
 }
 
-int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, double energy)
+int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, const hx_energy *energy,
+               const hx_energy *energy0)
 {
     const hx_model *m = d->m;
     double *ydot = malloc(sizeof(double) * (size_t)d->n);
@@ -94,7 +102,8 @@ int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, double energy
         for (int j = 0; j < 6; ++j)
             fprintf(f, ",%.12g", d->element_load[6 * k + j]);
     }
-    fprintf(f, ",%.15g,%.3g,%.3g\n", energy, phi, phidot);
+    fprintf(f, ",%.15g,%.15g,%.3g,%.3g\n", energy->total, hx_dissipated(energy, energy0), phi,
+            phidot);
     return 0;
 }
 
@@ -127,11 +136,12 @@ static int output(void *ctx, double t, const double *y)
 {
     run_context *rc = ctx;
     hx_dynamics *d = rc->d;
-    double kinetic;
-    const double energy = hx_dynamics_energy(d, t, y, &kinetic);
-    rc->result->energy_scale = fmax(rc->result->energy_scale, fabs(kinetic));
-    rc->result->energy_error_max = fmax(rc->result->energy_error_max, fabs(energy - rc->result->energy0));
-    if (rc->opt->csv != NULL && hx_csv_row(rc->opt->csv, d, t, y, energy) != 0)
+    hx_simulation_result *r = rc->result;
+    const hx_energy e = hx_dynamics_energy(d, t, y);
+    r->energy_scale = fmax(r->energy_scale, fabs(e.kinetic));
+    r->energy_error_max = fmax(r->energy_error_max, fabs(e.total - r->energy0.total));
+    r->balance_error_max = fmax(r->balance_error_max, fabs(e.balance - r->energy0.balance));
+    if (rc->opt->csv != NULL && hx_csv_row(rc->opt->csv, d, t, y, &e, &r->energy0) != 0)
         return 1;
     if (rc->opt->observer != NULL && rc->opt->observer(rc->opt->observer_ctx, d, t, y) != 0)
         return 1;
@@ -164,13 +174,12 @@ int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
         free(y);
         return -1;
     }
-    double kinetic0;
-    result->energy0 = hx_dynamics_energy(d, 0.0, y, &kinetic0);
-    result->energy_scale = fmax(fabs(result->energy0), fabs(kinetic0));
+    result->energy0 = hx_dynamics_energy(d, 0.0, y);
+    result->energy_scale = fmax(fabs(result->energy0.total), fabs(result->energy0.kinetic));
     run_context rc = {d, opt, result, now(), now()};
     if (opt->csv != NULL) {
         hx_csv_header(opt->csv, d);
-        hx_csv_row(opt->csv, d, 0.0, y, result->energy0);
+        hx_csv_row(opt->csv, d, 0.0, y, &result->energy0, &result->energy0);
     }
     if (opt->observer != NULL)
         opt->observer(opt->observer_ctx, d, 0.0, y);
@@ -184,7 +193,8 @@ int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
     (void)evaluations_before;
     if (opt->progress && result->seconds >= 1.0)
         fprintf(stderr, "\n");
-    result->energy_end = hx_dynamics_energy(d, result->stats.t_reached, y, NULL);
+    result->energy_end = hx_dynamics_energy(d, result->stats.t_reached, y);
+    result->dissipated = hx_dissipated(&result->energy_end, &result->energy0);
     result->max_phi = d->max_phi;
     result->max_phidot = d->max_phidot;
     if (d->failed)
@@ -201,7 +211,6 @@ int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
 void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_options *opt,
                            const hx_simulation_result *r)
 {
-    const double e0 = r->energy0;
     (void)d;
     fprintf(f, "run: %s with %s to t = %.6g\n", hx_status_text(r->status),
             hx_method_name(opt->integration.method), r->stats.t_reached);
@@ -212,9 +221,13 @@ void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_op
     if (d->m->ncouplers > 0)
         fprintf(f, "  largest constraint residual |phi| %.3g, |dphi/dt| %.3g\n", r->max_phi,
                 r->max_phidot);
-    fprintf(f, "  energy %.10g -> %.10g, largest error %.3g (%.3g relative)\n", e0,
-            r->energy_end, r->energy_error_max,
-            r->energy_scale > 0.0 ? r->energy_error_max / r->energy_scale : 0.0);
+    const double scale = r->energy_scale > 0.0 ? r->energy_scale : 1.0;
+    fprintf(f, "  energy (kinetic + potential + elastic - work of loads) %.10g -> %.10g\n",
+            r->energy0.total, r->energy_end.total);
+    fprintf(f, "  elements dissipated %.6g; largest energy change %.3g (%.3g relative)\n",
+            r->dissipated, r->energy_error_max, r->energy_error_max / scale);
+    fprintf(f, "  energy balance (dissipation counted): largest error %.3g (%.3g relative)\n",
+            r->balance_error_max, r->balance_error_max / scale);
     fprintf(f, "  (relative to max(|E(0)|, largest kinetic energy) = %.6g)\n", r->energy_scale);
     if (r->stats.stiff)
         fprintf(f, "  dopri5: the problem seems to become stiff at t = %.6g\n", r->stats.t_stiff);

@@ -1,7 +1,7 @@
 /*
  * One simulation of a session's model: the dynamics integrated by the chosen
  * method, CSV rows at the output times, and a summary (steps, evaluations,
- * run time, constraint residuals, energy error).
+ * run time, constraint residuals, energy error and the elements' dissipation).
  */
 #ifndef HX_SIMULATION_H
 #define HX_SIMULATION_H
@@ -26,9 +26,11 @@ typedef struct hx_simulation_result {
     hx_status status;
     hx_integrator_stats stats;
     double seconds;          /* wall time of the integration */
-    double energy0, energy_end;
-    double energy_error_max; /* largest |E(t) - E(0)| at the output times */
-    double energy_scale;     /* max(|E(0)|, largest kinetic energy): relative errors use it */
+    hx_energy energy0, energy_end;
+    double energy_error_max;  /* largest |E(t) - E(0)| at the output times */
+    double balance_error_max; /* the same of the energy balance (dissipation counted) */
+    double energy_scale;      /* max(|E(0)|, largest kinetic energy): relative errors use it */
+    double dissipated;        /* energy the force elements took out by the end */
     double max_phi, max_phidot;
     char message[1024];
 } hx_simulation_result;
@@ -45,6 +47,7 @@ void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_op
 /* The CSV header and one row of a state (re-evaluating the right-hand side at
  * that state, so that multipliers and element loads belong to it). */
 void hx_csv_header(FILE *f, const hx_dynamics *d);
-int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, double energy);
+int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, const hx_energy *energy,
+               const hx_energy *energy0);
 
 #endif

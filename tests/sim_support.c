@@ -111,11 +111,15 @@ double sim_lambda(const sim *s, int row, int coupler)
     return s->path.lambda[row * s->path.ncouplers + coupler];
 }
 
-int sim_rig(const char *model, const char *csv, const char *const *args)
+typedef int command_fn(int argc, char **argv);
+
+/* Runs "usrsub-harness NAME MODEL --out CSV ARGS..." in-process. */
+static int sim_command(command_fn *command, const char *name, const char *model, const char *csv,
+                       const char *const *args)
 {
     char *argv[64];
     int argc = 0;
-    argv[argc++] = "rig";
+    argv[argc++] = (char *)name;
     argv[argc++] = (char *)model_path(model);
     argv[argc++] = "--out";
     argv[argc++] = (char *)csv;
@@ -123,7 +127,17 @@ int sim_rig(const char *model, const char *csv, const char *const *args)
         argv[argc++] = (char *)*a;
     argv[argc] = NULL;
     fflush(stdout);
-    return hx_command_rig(argc, argv);
+    return command(argc, argv);
+}
+
+int sim_rig(const char *model, const char *csv, const char *const *args)
+{
+    return sim_command(hx_command_rig, "rig", model, csv, args);
+}
+
+int sim_run_csv(const char *model, const char *csv, const char *const *args)
+{
+    return sim_command(hx_command_run, "run", model, csv, args);
 }
 
 void csv_read(const char *path, csv_table *t)
@@ -152,6 +166,26 @@ void csv_read(const char *path, csv_table *t)
         t->rows++;
     }
     fclose(f);
+}
+
+int csv_column(const char *path, const char *name)
+{
+    FILE *f = fopen(path, "r");
+    char line[8192];
+    int column = -1;
+    if (f != NULL && fgets(line, sizeof line, f) != NULL) {
+        line[strcspn(line, "\r\n")] = '\0';
+        int c = 0;
+        for (char *save = NULL, *tok = strtok_r(line, ",", &save); tok != NULL;
+             tok = strtok_r(NULL, ",", &save), ++c)
+            if (strcmp(tok, name) == 0) {
+                column = c;
+                break;
+            }
+    }
+    if (f != NULL)
+        fclose(f);
+    return column;
 }
 
 double csv_at(const csv_table *t, int row, int column)

@@ -35,11 +35,14 @@ int sim_joint_u(const sim *s, int joint_id);
 /* Runs "usrsub-harness check" in-process; returns its exit status. */
 int sim_check(const char *model);
 
-#endif
-
 /* Runs "usrsub-harness rig MODEL --out CSV ARGS..." in-process; returns its
  * exit status. */
 int sim_rig(const char *model, const char *csv, const char *const *args);
+/* The same with "usrsub-harness run". */
+int sim_run_csv(const char *model, const char *csv, const char *const *args);
+
+/* Column of a CSV file's header by name (-1 when absent). */
+int csv_column(const char *path, const char *name);
 
 /* A numeric CSV with a header line: rows x columns values (malloc'ed). */
 typedef struct csv_table {
@@ -49,3 +52,5 @@ typedef struct csv_table {
 void csv_read(const char *path, csv_table *t);
 double csv_at(const csv_table *t, int row, int column);
 void csv_free(csv_table *t);
+
+#endif

@@ -32,6 +32,16 @@ static const char *const six_constant =
     "[CONSTANT_DAMPING_FX]\nC = 2\n[CONSTANT_DAMPING_FY]\nC = 3\n[CONSTANT_DAMPING_FZ]\nC = 1\n"
     "[CONSTANT_DAMPING_TX]\nC = 20\n[CONSTANT_DAMPING_TY]\nC = 30\n[CONSTANT_DAMPING_TZ]\nC = 10\n";
 
+static const char *const limits_file =
+    "[HEADER]\nFILE_TYPE = 'gbi'\n[UNITS]\nLENGTH = 'mm'\nANGLE = 'radian'\nFORCE = 'newton'\n"
+    "MASS = 'kg'\nTIME = 'second'\n[MOUNT_LIMITS]\n"
+    "IMPACT_PARAMETERS_TRA_X_POS = 500 2 10 0.5 0.5\nIMPACT_PARAMETERS_TRA_X_NEG = 500 2 10 0.5 0.5\n"
+    "IMPACT_PARAMETERS_TRA_Y_POS = 0 1 0 0 0\nIMPACT_PARAMETERS_TRA_Y_NEG = 0 1 0 0 0\n"
+    "IMPACT_PARAMETERS_TRA_Z_POS = 0 1 0 0 0\nIMPACT_PARAMETERS_TRA_Z_NEG = 0 1 0 0 0\n"
+    "IMPACT_PARAMETERS_ROT_X_POS = 0 1 0 0 0\nIMPACT_PARAMETERS_ROT_X_NEG = 0 1 0 0 0\n"
+    "IMPACT_PARAMETERS_ROT_Y_POS = 0 1 0 0 0\nIMPACT_PARAMETERS_ROT_Y_NEG = 0 1 0 0 0\n"
+    "IMPACT_PARAMETERS_ROT_Z_POS = 0 1 0 0 0\nIMPACT_PARAMETERS_ROT_Z_NEG = 0 1 0 0 0\n";
+
 /* A model: body 2 displaced and turned and moving, held to ground by the
  * given force elements; strings 101..104 name the files. */
 static const char *model(const char *name, int units, const char *elements)
@@ -43,6 +53,7 @@ static const char *model(const char *name, int units, const char *elements)
              "<Reference_String id=\"102\" string=\"%s\"/>\n"
              "<Reference_String id=\"103\" string=\"%s\"/>\n"
              "<Reference_String id=\"104\" string=\"%s\"/>\n"
+             "<Reference_String id=\"105\" string=\"%s\"/>\n"
              "<Body_Ground id=\"1\"/><Reference_Marker id=\"10\" body_id=\"1\"/>\n"
              "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\" inertia_zz=\"1\"\n"
              " v_ic_x=\"3\" v_ic_y=\"-2\" v_ic_z=\"1\" w_ic_x=\"0.3\" w_ic_y=\"-0.2\" w_ic_z=\"0.1\"/>\n"
@@ -53,7 +64,8 @@ static const char *model(const char *name, int units, const char *elements)
              gbs("all.gbs", "'CONSTANT_STIFFNESS' 1 1 1 1 1 1\n'CONSTANT_DAMPING' 1 1 1 1 1 1\n", six_constant),
              gbs("translation.gbs", "'CONSTANT_STIFFNESS' 1 1 1 0 0 0\n", six_constant),
              gbs("damped_translation.gbs", "'CONSTANT_STIFFNESS' 1 1 0 0 0 0\n'CONSTANT_DAMPING' 1 0 0 0 0 0\n", six_constant),
-             gbs("rotation.gbs", "'CONSTANT_STIFFNESS' 0 0 0 0 0 1\n", six_constant), elements);
+             gbs("rotation.gbs", "'CONSTANT_STIFFNESS' 0 0 0 0 0 1\n", six_constant),
+             test_write_file("limits.gbi", limits_file), elements);
     return test_write_file(name, text);
 }
 
@@ -167,9 +179,11 @@ static void input_errors_are_reported_once(void **state)
         {GFO(7, "(7, 20, 10, 101)", "GFOSUB"), {"GFOSUB element 7", "par[0]) is 7", "element code"}},
         {GFO(8, "(20, 10, 99)", "ABM_BUSHING"), {"ABM_BUSHING element 8", "no Reference_String 99", ".gbs"}},
         {GFO(9, "(20.5, 10, 101)", "ABM_BUSHING"), {"element 9", "par[0]) is 20.5", "I marker"}},
-        {GFO(10, "(20, 10, 101, 5, 6)", "ABM_BUSHING"), {"element 10", "one too many", "USER parameter"}},
+        {GFO(10, "(20, 10, 101, 5)", "ABM_BUSHING"), {"element 10", "no Reference_String 5", ".gbi"}},
+        {GFO(13, "(20, 10, 101, 105, 6)", "ABM_BUSHING"), {"element 13", "one too many", "USER parameter 5"}},
+        {FIE(14, "(1, 101, 102)", "FIESUB"), {"FIESUB element 14", "FILE_TYPE is 'gbs'", "expected 'gbi'"}},
         {FIE(11, "(1)", "FIESUB"), {"FIESUB element 11", "USER list ends", "Reference_String id"}},
-        {FIE(12, "(3.0, 104)", "FIESUB"), {"FIESUB element 12", "code 3", "not available"}},
+
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         hx_host_reset_messages();

@@ -5,6 +5,7 @@
  * deformation and evaluate.
  */
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "element_cache.h"
@@ -15,12 +16,19 @@
 static int gfosub_interface = ELEMENT_GFOSUB;
 static int fiesub_interface = ELEMENT_FIESUB;
 
+/* No NaN or Inf among v: on the bits, since a chain of floating-point tests
+ * over 72 partials cost more than the limits it guards. An all-ones exponent
+ * plus one carries into the sign bit. */
 static int all_finite(const double *v, int n)
 {
-    double s = 0.0;
-    for (int k = 0; k < n; ++k)
-        s += v[k] * 0.0; /* NaN or Inf make the sum NaN */
-    return s == 0.0;
+    const uint64_t exponent = 0x7ff0000000000000u, one = 0x0010000000000000u;
+    uint64_t carry = 0;
+    for (int k = 0; k < n; ++k) {
+        uint64_t bits;
+        memcpy(&bits, &v[k], sizeof bits);
+        carry |= (bits & exponent) + one;
+    }
+    return (carry >> 63) == 0;
 }
 
 static int arguments_ok(const char *routine, const int *id, const double *par, const int *npar)
@@ -80,6 +88,15 @@ static void gfosub_entry(const char *routine, int code, int *id, double *time, d
     }
 }
 
+static void zero_field(double *field, double *dfddis, double *dfdvel)
+{
+    memset(field, 0, 6 * sizeof(double));
+    if (dfddis != NULL) {
+        memset(dfddis, 0, 36 * sizeof(double));
+        memset(dfdvel, 0, 36 * sizeof(double));
+    }
+}
+
 static void fiesub_entry(const char *routine, int code, int *id, double *time, double *par,
                          int *npar, double *disp, double *velo, int *dflag, int *iflag,
                          double *field, double *dfddis, double *dfdvel)
@@ -87,22 +104,24 @@ static void fiesub_entry(const char *routine, int code, int *id, double *time, d
     (void)time, (void)dflag, (void)iflag;
     if (field == NULL)
         return;
-    memset(field, 0, 6 * sizeof(double));
     const int partials = dfddis != NULL && dfdvel != NULL;
-    if (partials) {
-        memset(dfddis, 0, 36 * sizeof(double));
-        memset(dfdvel, 0, 36 * sizeof(double));
-    }
-    if (!arguments_ok(routine, id, par, npar))
+    /* the evaluation writes every output; each way out before it zeros them */
+    if (!arguments_ok(routine, id, par, npar)) {
+        zero_field(field, partials ? dfddis : NULL, dfdvel);
         return;
+    }
     if (disp == NULL || velo == NULL) {
+        zero_field(field, partials ? dfddis : NULL, dfdvel);
         entry_report_error(routine, *id, "called without disp or velo");
         return;
     }
     const force_model *m = model_of(routine, ELEMENT_FIESUB, code, *id, par, *npar);
-    if (m == NULL)
+    if (m == NULL) {
+        zero_field(field, partials ? dfddis : NULL, dfdvel);
         return;
+    }
     if (!all_finite(disp, 6) || !all_finite(velo, 6)) {
+        zero_field(field, partials ? dfddis : NULL, dfdvel);
         entry_report_error(routine, *id, "disp (%g %g %g %g %g %g) or velo (%g %g %g %g %g %g)"
                            " is not finite; the output is zero", disp[0], disp[1], disp[2],
                            disp[3], disp[4], disp[5], velo[0], velo[1], velo[2], velo[3],
@@ -111,11 +130,7 @@ static void fiesub_entry(const char *routine, int code, int *id, double *time, d
     }
     force_model_evaluate(m, disp, velo, field, partials ? dfddis : NULL, partials ? dfdvel : NULL);
     if (!all_finite(field, 6) || (partials && (!all_finite(dfddis, 36) || !all_finite(dfdvel, 36)))) {
-        memset(field, 0, 6 * sizeof(double));
-        if (partials) {
-            memset(dfddis, 0, 36 * sizeof(double));
-            memset(dfdvel, 0, 36 * sizeof(double));
-        }
+        zero_field(field, partials ? dfddis : NULL, dfdvel);
         entry_report_error(routine, *id, "the force at disp (%g %g %g %g %g %g) is not finite (a"
                            " state out of any sensible range); the output is zero", disp[0],
                            disp[1], disp[2], disp[3], disp[4], disp[5]);

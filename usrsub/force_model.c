@@ -27,6 +27,21 @@ static void free_bushing(void *property)
     usrsub_bushing_free(property);
 }
 
+static int read_limits(const char *path, const double *units, void **property,
+                       usrsub_message *notice, int *has_notice, usrsub_message *msg)
+{
+    usrsub_mount_limits *m;
+    if (usrsub_mount_limits_read(path, units, &m, notice, has_notice, msg) != 0)
+        return -1;
+    *property = m;
+    return 0;
+}
+
+static void free_limits(void *property)
+{
+    usrsub_mount_limits_free(property);
+}
+
 /* The property file named by the Reference_String whose id is the next value. */
 static const void *property_named(usrsub_user_list *u, const char *what, const char *kind,
                                   property_read_fn *read, property_free_fn *release,
@@ -54,6 +69,24 @@ static const void *property_named(usrsub_user_list *u, const char *what, const c
 }
 
 static const char *const code_names = "1 (ABM_BUSHING), 2 (MOUNT_LIMITS) or 3 (FLEX_JOINT)";
+
+/* Mount limits named by the next value; a file with no active side is
+ * dropped, so that the element runs exactly as without it. */
+static int limits_named(force_model *m, usrsub_user_list *u, element_setup_report *report)
+{
+    const usrsub_mount_limits *l = property_named(u, "the Reference_String id of the .gbi"
+                                                  " mount-limits file", "gbi", read_limits,
+                                                  free_limits, report);
+    if (l == NULL)
+        return -1;
+    if (l->nsides > 0) {
+        m->limits = l;
+        m->needs.translation |= l->uses_translation;
+        m->needs.rotation |= l->uses_rotation;
+        m->needs.velocity |= l->uses_velocity;
+    }
+    return 0;
+}
 
 void *force_model_setup(const element_signature *sig, void *ctx, element_setup_report *report)
 {
@@ -94,7 +127,13 @@ void *force_model_setup(const element_signature *sig, void *ctx, element_setup_r
             m->needs.rotation = m->bushing->uses_rotation;
             m->needs.velocity = m->bushing->uses_velocity;
         }
-        ends = "an ABM_BUSHING list (markers, .gbs id)";
+        if (status == 0 && u.next < u.npar)
+            status = limits_named(m, &u, report);
+        ends = "an ABM_BUSHING list (markers, .gbs id, optional .gbi id)";
+        break;
+    case FORCE_MOUNT_LIMITS:
+        status = limits_named(m, &u, report);
+        ends = "a MOUNT_LIMITS list (markers, .gbi id)";
         break;
     default:
         status = usrsub_fail(&report->error, "element code %d is not available in this build",
@@ -124,6 +163,12 @@ void force_model_evaluate(const force_model *m, const double d[6], const double 
         break;
     default:
         memset(F, 0, 6 * sizeof(double));
+        if (dFdd != NULL) {
+            memset(dFdd, 0, 36 * sizeof(double));
+            memset(dFdv, 0, 36 * sizeof(double));
+        }
         break;
     }
+    if (m->limits != NULL) /* on the raw deformation: never offset, scaled or coupled */
+        usrsub_mount_limits_add(m->limits, d, v, F, dFdd, dFdv);
 }

@@ -9,6 +9,7 @@
 #include "deformation.h"
 #include "element_cache.h"
 #include "usrsub/bushing.h"
+#include "usrsub/mount_limits.h"
 
 enum force_code { FORCE_BUSHING = 1, FORCE_MOUNT_LIMITS = 2, FORCE_FLEX_JOINT = 3 };
 
@@ -16,6 +17,7 @@ typedef struct force_model {
     int code;                      /* enum force_code */
     int i_marker, j_marker;        /* GFOSUB form */
     const usrsub_bushing *bushing; /* shared; NULL when unused */
+    const usrsub_mount_limits *limits; /* shared; NULL when none is active */
     deformation_needs needs;
 } force_model;
 
