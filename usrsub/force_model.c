@@ -42,6 +42,21 @@ static void free_limits(void *property)
     usrsub_mount_limits_free(property);
 }
 
+static int read_joint(const char *path, const double *units, void **property,
+                      usrsub_message *notice, int *has_notice, usrsub_message *msg)
+{
+    usrsub_flex_joint *j;
+    if (usrsub_flex_joint_read(path, units, &j, notice, has_notice, msg) != 0)
+        return -1;
+    *property = j;
+    return 0;
+}
+
+static void free_joint(void *property)
+{
+    usrsub_flex_joint_free(property);
+}
+
 /* The property file named by the Reference_String whose id is the next value. */
 static const void *property_named(usrsub_user_list *u, const char *what, const char *kind,
                                   property_read_fn *read, property_free_fn *release,
@@ -135,9 +150,19 @@ void *force_model_setup(const element_signature *sig, void *ctx, element_setup_r
         status = limits_named(m, &u, report);
         ends = "a MOUNT_LIMITS list (markers, .gbi id)";
         break;
+    case FORCE_FLEX_JOINT:
+        m->joint = property_named(&u, "the Reference_String id of the .gfj flexible-joint file",
+                                  "gfj", read_joint, free_joint, report);
+        status = m->joint != NULL ? 0 : -1;
+        if (status == 0) {
+            m->needs.translation = m->joint->uses_translation;
+            m->needs.rotation = m->joint->uses_rotation;
+            m->needs.velocity = m->joint->uses_velocity;
+        }
+        ends = "a FLEX_JOINT list (markers, .gfj id)";
+        break;
     default:
-        status = usrsub_fail(&report->error, "element code %d is not available in this build",
-                             code);
+        status = usrsub_fail(&report->error, "element code %d is not one of %s", code, code_names);
         break;
     }
     if (status == 0)
@@ -160,6 +185,9 @@ void force_model_evaluate(const force_model *m, const double d[6], const double 
     switch (m->code) {
     case FORCE_BUSHING:
         usrsub_bushing_force(m->bushing, d, v, F, dFdd, dFdv);
+        break;
+    case FORCE_FLEX_JOINT:
+        usrsub_flex_joint_force(m->joint, d, v, F, dFdd, dFdv);
         break;
     default:
         memset(F, 0, 6 * sizeof(double));

@@ -9,6 +9,7 @@
 #include "deformation.h"
 #include "element_cache.h"
 #include "usrsub/bushing.h"
+#include "usrsub/flex_joint.h"
 #include "usrsub/mount_limits.h"
 
 enum force_code { FORCE_BUSHING = 1, FORCE_MOUNT_LIMITS = 2, FORCE_FLEX_JOINT = 3 };
@@ -18,6 +19,7 @@ typedef struct force_model {
     int i_marker, j_marker;        /* GFOSUB form */
     const usrsub_bushing *bushing; /* shared; NULL when unused */
     const usrsub_mount_limits *limits; /* shared; NULL when none is active */
+    const usrsub_flex_joint *joint;    /* shared; NULL when unused */
     deformation_needs needs;
 } force_model;
 
@@ -27,7 +29,8 @@ typedef struct force_model {
 void *force_model_setup(const element_signature *sig, void *ctx, element_setup_report *report);
 void force_model_release(void *model);
 
-/* Force and torque on I in J axes; partials (may be NULL) column-major. */
+/* Force and torque on I in J axes; partials (may be NULL) column-major.
+ * Writes every output. */
 void force_model_evaluate(const force_model *m, const double d[6], const double v[6],
                           double F[6], double *dFdd, double *dFdv);
 
