@@ -186,7 +186,15 @@ typedef struct timed_entry {
 
 int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int capacity)
 {
-    timed_entry entries[256];
+    return hx_measure_call_costs_with(s, repeats, costs, capacity, NULL, 0);
+}
+
+int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
+                               hx_timed_body *extra, int nextra)
+{
+    timed_entry entries[256 + 4];
+    if (nextra > 4)
+        nextra = 4;
     void *contexts[256];
     int rows = 0, ncontexts = 0;
     if (capacity > 256)
@@ -240,18 +248,25 @@ int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int c
             r->force_index = b->index;
         }
     }
+    const int timed = rows + nextra;
+    for (int k = 0; k < nextra; ++k)
+        entries[rows + k] = (timed_entry){extra[k].run, extra[k].ctx, 0, NULL};
     spin_up();
-    for (int k = 0; k < rows; ++k) {
+    for (int k = 0; k < timed; ++k) {
         entries[k].calls = calibrate(entries[k].run, entries[k].ctx);
         entries[k].ns = malloc(sizeof(double) * (size_t)repeats);
     }
     /* rounds of one batch per entry: a slow spell of the machine falls on all alike */
     for (int round = 0; round < repeats; ++round)
-        for (int k = 0; k < rows; ++k) {
+        for (int k = 0; k < timed; ++k) {
             const double start = seconds();
             entries[k].run(entries[k].ctx, entries[k].calls);
             entries[k].ns[round] = 1e9 * (seconds() - start) / (double)entries[k].calls;
         }
+    for (int k = 0; k < nextra; ++k) {
+        memcpy(extra[k].rounds, entries[rows + k].ns, sizeof(double) * (size_t)repeats);
+        free(entries[rows + k].ns);
+    }
     for (int k = 0; k < rows; ++k) {
         costs[k].rounds = entries[k].ns; /* the caller frees them */
         double *sorted = malloc(sizeof(double) * (size_t)repeats);

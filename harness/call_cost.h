@@ -25,6 +25,17 @@ typedef struct hx_call_cost {
  * Returns the number of rows written into costs (at most capacity). */
 int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int capacity);
 
+/* Further bodies timed in the same rounds as the entries (one call per
+ * iteration), e.g. a right-hand side that calls them. */
+typedef struct hx_timed_body {
+    void (*run)(void *ctx, long calls);
+    void *ctx;
+    double *rounds; /* out: ns per call in each round (repeats values, caller's array) */
+} hx_timed_body;
+
+int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
+                               hx_timed_body *extra, int nextra);
+
 void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count);
 void hx_call_costs_free(hx_call_cost *costs, int count);
 

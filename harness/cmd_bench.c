@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "call_cost.h"
+#include "rhs_cost.h"
 #include "commands.h"
 #include "session.h"
 
@@ -95,9 +96,20 @@ int hx_command_bench(int argc, char **argv)
             return 2;
         }
     hx_call_cost *costs = calloc(256, sizeof *costs);
-    const int n = costs != NULL ? hx_measure_call_costs(&s, repeats, costs, 256) : 0;
+    hx_rhs_cost rc;
+    int n = 0;
+    if (costs == NULL || hx_measure_rhs_cost(&s, repeats, costs, 256, &n, &rc, &msg) != 0) {
+        fprintf(stderr, "usrsub-harness bench: %s\n", costs ? msg.text : "out of memory");
+        free(costs);
+        hx_session_close(&s);
+        return 1;
+    }
     printf("cost per call (median of %d batches):\n", repeats);
     hx_print_call_costs(stdout, costs, n);
+    printf("right-hand side: %.1f ns per evaluation: the %d user entry calls in it %.1f ns, the"
+           " harness's own share %.1f ns (%.0f %% of the user entries)\n", rc.rhs_ns,
+           rc.user_calls, rc.user_ns, rc.harness_ns,
+           rc.user_ns > 0.0 ? 100.0 * rc.harness_ns / rc.user_ns : 0.0);
     for (int k = 0; k < ncompare; ++k) {
         const hx_call_cost *base = cost_of(costs, n, comparisons[k].base);
         const hx_call_cost *other = cost_of(costs, n, comparisons[k].other);

@@ -1,7 +1,10 @@
 /* Equations of motion of the harness (dynamics.h). */
 #include "dynamics.h"
 
+#include "host.h"
+
 #include <math.h>
+#include <stdint.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,6 +13,8 @@
 #include "element_probe.h"
 #include "linalg.h"
 #include "vecmath.h"
+
+static const hx_frame world_axes = {{0, 0, 0}, {1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 0}, {0, 0, 0}};
 
 #define PROJECTION_ITERATIONS 25
 #define PHI_TOLERANCE 1e-13
@@ -110,6 +115,31 @@ int hx_dynamics_init(hx_dynamics *d, hx_session *s, usrsub_message *msg)
         d->coupler_binding[k] = hx_binding_of_coupler(&s->bindings, k);
     for (int k = 0; k < nf; ++k)
         d->force_binding[k] = hx_binding_of_force(&s->bindings, k);
+    /* the frames an element needs, kept by the host per state (set in
+     * hx_dynamics_frames): looked up once here rather than per evaluation */
+    d->element_frames = calloc((size_t)(3 * nf + 1), sizeof *d->element_frames);
+    d->world_aligned = calloc((size_t)(nf + 1), 1);
+    d->element_bodies = calloc((size_t)(2 * nf + 1), sizeof *d->element_bodies);
+    if (d->element_frames == NULL || d->world_aligned == NULL || d->element_bodies == NULL)
+        return usrsub_fail(msg, "out of memory");
+    for (int k = 0; k < nf; ++k) {
+        const hx_force *f = &m->forces[k];
+        const int axes = f->interface == HX_FORCE_GFOSUB ? f->ref_marker : f->j_marker;
+        d->element_frames[3 * k] = hx_host_marker_slot(f->i_marker);
+        d->element_frames[3 * k + 1] = hx_host_marker_slot(f->j_marker);
+        d->element_frames[3 * k + 2] = axes >= 0 ? hx_host_marker_slot(axes) : &world_axes;
+        for (int i = 0; i < 3; ++i)
+            if (d->element_frames[3 * k + i] == NULL)
+                return usrsub_fail(msg, "force element %d: the host keeps no frame of its markers",
+                                   f->id);
+        int aligned = axes < 0 || m->bodies[m->markers[axes].body].is_ground;
+        for (int i = 0; aligned && axes >= 0 && i < 9; ++i)
+            aligned = m->markers[axes].R0[i] == (i % 4 == 0 ? 1.0 : 0.0);
+        d->world_aligned[k] = (unsigned char)aligned;
+        const int bi = m->markers[f->i_marker].body, bj = m->markers[f->j_marker].body;
+        d->element_bodies[2 * k] = m->bodies[bi].is_ground ? -1 : bi;
+        d->element_bodies[2 * k + 1] = m->bodies[bj].is_ground ? -1 : bj;
+    }
     return 0;
 }
 
@@ -120,6 +150,9 @@ void hx_dynamics_free(hx_dynamics *d)
     free(d->force_binding);
     free(d->lambda);
     free(d->element_load);
+    free(d->element_frames);
+    free(d->world_aligned);
+    free(d->element_bodies);
     free(d->force);
     free(d->torque);
     free(d->scratch);
@@ -191,22 +224,34 @@ static int check_stop(hx_dynamics *d, const hx_binding *b, double t)
 }
 
 /* Adds a force F (and couple T) acting at a world point of a body; returns its power. */
+/* Adds F at point (and T) to a moving body's force and torque about its
+ * centre; returns their power. */
+static inline double push(hx_dynamics *d, int body, const double point[3], const double F[3],
+                          const double T[3], double sign)
+{
+    const hx_frame *f = &d->s->frames[body];
+    double r[3], moment[3], vp[3];
+    v3_sub(r, point, f->p);
+    v3_cross(moment, r, F);
+    double power = 0.0;
+    if (T != NULL) {
+        v3_add(moment, moment, T); /* one update of the torque, not two */
+        power = v3_dot(T, f->w);
+    }
+    double *force = d->force + 3 * body, *torque = d->torque + 3 * body;
+    v3_axpy(force, sign, F);
+    v3_axpy(torque, sign, moment);
+    v3_cross(vp, f->w, r);
+    v3_add(vp, vp, f->v);
+    return sign * (v3_dot(F, vp) + power);
+}
+
 static double apply(hx_dynamics *d, int body, const double point[3], const double F[3],
                     const double T[3], double sign)
 {
     if (d->dof[body].kind == HX_DOF_GROUND)
         return 0.0;
-    const hx_frame *f = &d->s->frames[body];
-    double r[3], rxF[3], vp[3];
-    v3_sub(r, point, f->p);
-    v3_cross(rxF, r, F);
-    v3_axpy(d->force + 3 * body, sign, F);
-    v3_axpy(d->torque + 3 * body, sign, rxF);
-    if (T != NULL)
-        v3_axpy(d->torque + 3 * body, sign, T);
-    v3_cross(vp, f->w, r);
-    v3_add(vp, vp, f->v);
-    return sign * (v3_dot(F, vp) + (T != NULL ? v3_dot(T, f->w) : 0.0));
+    return push(d, body, point, F, T, sign);
 }
 
 static double apply_loads(hx_dynamics *d, double t)
@@ -215,47 +260,54 @@ static double apply_loads(hx_dynamics *d, double t)
     double power = 0.0;
     for (int k = 0; k < m->nloads; ++k) {
         const hx_load *l = &m->loads[k];
-        hx_frame I, J, ref;
-        hx_marker_frame(m, d->s->frames, l->i_marker, &I);
+        hx_frame scratch[3];
+        const hx_frame *I = hx_host_marker_frame(d->s->frames, l->i_marker, &scratch[0]);
         const int bi = m->markers[l->i_marker].body;
         if (l->kind == HX_LOAD_VECTOR) {
-            double F[3], T[3], f[3], tq[3];
-            for (int i = 0; i < 3; ++i) {
-                f[i] = hx_time_function_at(&l->force[i], t);
-                tq[i] = hx_time_function_at(&l->torque[i], t);
+            double F[3], T[3], f[3] = {0, 0, 0}, tq[3] = {0, 0, 0};
+            for (int i = 0; i < 3; ++i) { /* components left out are constant zeros */
+                if (l->force[i].kind != 0 || l->force[i].a[0] != 0.0)
+                    f[i] = hx_time_function_at(&l->force[i], t);
+                if (l->torque[i].kind != 0 || l->torque[i].a[0] != 0.0)
+                    tq[i] = hx_time_function_at(&l->torque[i], t);
             }
-            hx_marker_frame(m, d->s->frames, l->ref_marker, &ref);
-            m3_apply(F, ref.R, f);
-            m3_apply(T, ref.R, tq);
-            power += apply(d, bi, I.p, F, T, 1.0);
+            const hx_frame *ref = hx_host_marker_frame(d->s->frames, l->ref_marker, &scratch[2]);
+            m3_apply(F, ref->R, f);
+            m3_apply(T, ref->R, tq);
+            power += apply(d, bi, I->p, F, T, 1.0);
             continue;
         }
-        hx_marker_frame(m, d->s->frames, l->j_marker, &J);
+        const hx_frame *J = hx_host_marker_frame(d->s->frames, l->j_marker, &scratch[1]);
         const int bj = m->markers[l->j_marker].body;
         double F[3] = {0, 0, 0}, T[3] = {0, 0, 0};
         const double value = hx_time_function_at(&l->value, t);
         if (l->kind == HX_LOAD_SCALAR_TORQUE) {
-            v3_set(T, J.R[2] * value, J.R[5] * value, J.R[8] * value);
+            v3_set(T, J->R[2] * value, J->R[5] * value, J->R[8] * value);
         } else {
             double r[3];
-            v3_sub(r, I.p, J.p);
+            v3_sub(r, I->p, J->p);
             const double len = v3_norm(r);
             if (len > 0.0)
                 v3_scale(F, r, value / len); /* positive pushes I away from J */
         }
-        power += apply(d, bi, I.p, F, T, 1.0);
+        power += apply(d, bi, I->p, F, T, 1.0);
         if (!l->action_only)
-            power += apply(d, bj, J.p, F, T, -1.0);
+            power += apply(d, bj, J->p, F, T, -1.0);
     }
     return power;
 }
 
+/* No NaN or Inf in v (on the bits: an all-ones exponent plus one carries
+ * into the sign bit; no branch per value). */
 static int all_finite(const double *v, int n)
 {
-    for (int k = 0; k < n; ++k)
-        if (!isfinite(v[k]))
-            return 0;
-    return 1;
+    uint64_t carry = 0;
+    for (int k = 0; k < n; ++k) {
+        uint64_t bits;
+        memcpy(&bits, &v[k], sizeof bits);
+        carry |= (bits & 0x7ff0000000000000u) + 0x0010000000000000u;
+    }
+    return (carry >> 63) == 0;
 }
 
 /* Applies every force element; *power receives the power of their forces. */
@@ -266,32 +318,35 @@ static int apply_elements(hx_dynamics *d, double t, double *power)
     for (int k = 0; k < m->nforces; ++k) {
         const hx_force *f = &m->forces[k];
         hx_binding *b = d->force_binding[k];
-        hx_frame I, J;
-        hx_marker_frame(m, d->s->frames, f->i_marker, &I);
-        hx_marker_frame(m, d->s->frames, f->j_marker, &J);
-        double out[6] = {0}, axes[9];
+        const hx_frame *I = d->element_frames[3 * k], *J = d->element_frames[3 * k + 1];
+        const double *axes = d->element_frames[3 * k + 2]->R;
+        double out[6] = {0};
         if (f->interface == HX_FORCE_GFOSUB) {
             hx_call_gfosub(b, t, 0, 0, out, NULL);
-            hx_frame ref;
-            hx_marker_frame(m, d->s->frames, f->ref_marker, &ref);
-            m3_copy(axes, ref.R);
         } else {
             double disp[6], velo[6], dfd[36], dfv[36];
-            hx_field_state(&I, &J, disp, velo);
+            hx_field_state(I, J, disp, velo);
             hx_call_fiesub(b, t, disp, velo, 0, 0, out, dfd, dfv, NULL);
-            m3_copy(axes, J.R);
         }
         if (check_stop(d, b, t) != 0)
             return -1;
-        if (!all_finite(out, 6))
+        /* x - x is NaN for NaN and for an infinity, 0 otherwise */
+        if (!((out[0] - out[0]) + (out[1] - out[1]) + (out[2] - out[2]) + (out[3] - out[3]) +
+                  (out[4] - out[4]) + (out[5] - out[5]) == 0.0))
             return fail_run(d, "%s %d returned a non-finite force at t = %g", b->element, b->id, t);
-        double F[3], T[3];
-        m3_apply(F, axes, out);
-        m3_apply(T, axes, out + 3);
-        memcpy(d->element_load + 6 * k, F, sizeof F);
-        memcpy(d->element_load + 6 * k + 3, T, sizeof T);
-        *power += apply(d, m->markers[f->i_marker].body, I.p, F, T, 1.0);
-        *power += apply(d, m->markers[f->j_marker].body, I.p, F, T, -1.0); /* reaction at I's point */
+        double *F = d->element_load + 6 * k, *T = F + 3;
+        if (d->world_aligned[k]) {
+            v3_copy(F, out);
+            v3_copy(T, out + 3);
+        } else {
+            m3_apply(F, axes, out);
+            m3_apply(T, axes, out + 3);
+        }
+        const int bi = d->element_bodies[2 * k], bj = d->element_bodies[2 * k + 1];
+        if (bi >= 0)
+            *power += push(d, bi, I->p, F, T, 1.0);
+        if (bj >= 0)
+            *power += push(d, bj, I->p, F, T, -1.0); /* reaction at I's point */
     }
     return 0;
 }

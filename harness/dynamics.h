@@ -42,6 +42,11 @@ typedef struct hx_dynamics {
     hx_binding **force_binding;   /* per force element */
     double *lambda;             /* multipliers of the last evaluation */
     double *element_load;       /* 6 per force element: F, T on I, world axes */
+    const hx_frame **element_frames; /* 3 per force element: I, J, and the axes of its
+                                      * result (ref or J), in the host's marker cache */
+    unsigned char *world_aligned;    /* per force element: its result axes are the world's
+                                      * for good (on ground, unturned) */
+    int *element_bodies;             /* 2 per force element: the I and J bodies, -1 for ground */
     double *force, *torque;     /* per body, world, torque about the cm */
     double *scratch;
     long evaluations;

@@ -18,11 +18,15 @@ static const hx_frame *host_frames;
 static double host_time;
 static _Thread_local hx_call *current;
 
-/* World frames of the markers user elements name, computed once per state
- * (when the frames are set) rather than once per query. */
+/* World frames of the markers elements and loads name, computed once per
+ * state (when the frames are set) rather than once per query; those on ground
+ * once per model. */
+enum { MARKER_UNWATCHED, MARKER_MOVING, MARKER_ON_GROUND };
 static hx_frame *marker_cache;
 static unsigned char *marker_watched;
 static const hx_frame *marker_cache_frames;
+static int ground_markers_ready;
+static int *moving_markers, moving_count; /* the watched markers not on ground */
 
 static pthread_mutex_t message_lock = PTHREAD_MUTEX_INITIALIZER;
 static FILE *message_stream;
@@ -32,6 +36,13 @@ static char stop_message[HX_TEXT_MAX];
 static int error_count, notice_count;
 static char last_error[HX_TEXT_MAX], last_notice[HX_TEXT_MAX];
 
+static void watch_marker(const hx_model *m, int index)
+{
+    if (index >= 0 && index < m->nmarkers)
+        marker_watched[index] =
+            m->bodies[m->markers[index].body].is_ground ? MARKER_ON_GROUND : MARKER_MOVING;
+}
+
 void hx_host_attach(const hx_model *m)
 {
     host_model = m;
@@ -39,20 +50,28 @@ void hx_host_attach(const hx_model *m)
     marker_cache_frames = NULL;
     free(marker_cache);
     free(marker_watched);
+    free(moving_markers);
     marker_cache = NULL;
     marker_watched = NULL;
+    moving_markers = NULL;
+    moving_count = 0;
     if (m == NULL || m->nmarkers == 0)
         return;
     marker_cache = calloc((size_t)m->nmarkers, sizeof *marker_cache);
     marker_watched = calloc((size_t)m->nmarkers, 1);
+    ground_markers_ready = 0;
     if (marker_cache == NULL || marker_watched == NULL)
         return;
-    for (int k = 0; k < m->nforces; ++k) {
-        marker_watched[m->forces[k].i_marker] = 1;
-        marker_watched[m->forces[k].j_marker] = 1;
-        if (m->forces[k].ref_marker >= 0)
-            marker_watched[m->forces[k].ref_marker] = 1;
-    }
+    for (int k = 0; k < m->nforces; ++k)
+        watch_marker(m, m->forces[k].i_marker), watch_marker(m, m->forces[k].j_marker),
+            watch_marker(m, m->forces[k].ref_marker);
+    for (int k = 0; k < m->nloads; ++k)
+        watch_marker(m, m->loads[k].i_marker), watch_marker(m, m->loads[k].j_marker),
+            watch_marker(m, m->loads[k].ref_marker);
+    moving_markers = malloc(sizeof *moving_markers * (size_t)m->nmarkers);
+    for (int k = 0; moving_markers != NULL && k < m->nmarkers; ++k)
+        if (marker_watched[k] == MARKER_MOVING)
+            moving_markers[moving_count++] = k;
 }
 
 void hx_host_set_frames(const hx_frame *bodies, double time)
@@ -62,10 +81,32 @@ void hx_host_set_frames(const hx_frame *bodies, double time)
     marker_cache_frames = NULL;
     if (host_model == NULL || bodies == NULL || marker_cache == NULL || marker_watched == NULL)
         return;
-    for (int k = 0; k < host_model->nmarkers; ++k)
-        if (marker_watched[k])
-            hx_marker_frame(host_model, bodies, k, &marker_cache[k]);
+    if (!ground_markers_ready || moving_markers == NULL) {
+        for (int k = 0; k < host_model->nmarkers; ++k)
+            if (marker_watched[k])
+                hx_marker_frame(host_model, bodies, k, &marker_cache[k]);
+        ground_markers_ready = 1;
+    } else {
+        for (int n = 0; n < moving_count; ++n)
+            hx_marker_frame(host_model, bodies, moving_markers[n], &marker_cache[moving_markers[n]]);
+    }
     marker_cache_frames = bodies;
+}
+
+const hx_frame *hx_host_marker_slot(int index)
+{
+    if (index < 0 || marker_watched == NULL || host_model == NULL || index >= host_model->nmarkers ||
+        !marker_watched[index])
+        return NULL;
+    return &marker_cache[index];
+}
+
+const hx_frame *hx_host_marker_frame(const hx_frame *bodies, int index, hx_frame *scratch)
+{
+    if (index >= 0 && bodies == marker_cache_frames && marker_watched[index])
+        return &marker_cache[index];
+    hx_marker_frame(host_model, bodies, index, scratch);
+    return scratch;
 }
 
 void hx_call_init(hx_call *c, const char *element, int id, int dependency_pass,

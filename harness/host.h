@@ -51,6 +51,12 @@ typedef struct hx_call {
 void hx_host_attach(const hx_model *m);
 /* Frames the host answers from (kept by pointer, not copied). */
 void hx_host_set_frames(const hx_frame *bodies, double time);
+/* World frame of marker index (-1: the world) at bodies: the cached one when
+ * bodies are the frames set last, else computed into scratch. */
+const hx_frame *hx_host_marker_frame(const hx_frame *bodies, int index, hx_frame *scratch);
+/* The cache slot of marker index (NULL when the host does not keep it): it
+ * holds the marker's world frame at the frames set last, for the session. */
+const hx_frame *hx_host_marker_slot(int index);
 
 void hx_call_init(hx_call *c, const char *element, int id, int dependency_pass,
                   hx_dependencies *declared);

@@ -16,14 +16,21 @@ void hx_marker_frame(const hx_model *m, const hx_frame *bodies, int marker, hx_f
     }
     const hx_marker *mk = &m->markers[marker];
     const hx_frame *b = &bodies[mk->body];
-    double r[3];
+    if (mk->local_axes)
+        m3_copy(out->R, b->R);
+    else
+        m3_mul(out->R, b->R, mk->R_local);
+    v3_copy(out->w, b->w);
+    if (mk->at_body_origin) {
+        v3_copy(out->p, b->p);
+        v3_copy(out->v, b->v);
+        return;
+    }
+    double r[3], wr[3];
     m3_apply(r, b->R, mk->r_local);
     v3_add(out->p, b->p, r);
-    m3_mul(out->R, b->R, mk->R_local);
-    double wr[3];
     v3_cross(wr, b->w, r);
     v3_add(out->v, b->v, wr);
-    v3_copy(out->w, b->w);
 }
 
 void hx_initial_frames(const hx_model *m, hx_frame *bodies)

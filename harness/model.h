@@ -28,6 +28,8 @@ typedef struct hx_marker {
     double R0[9];        /* world orientation at t = 0 */
     double r_local[3];   /* position in the body's frame */
     double R_local[9];   /* orientation in the body's frame */
+    int local_axes;      /* R_local is the identity: the marker turns with the body's axes */
+    int at_body_origin;  /* r_local is zero */
     int line;
 } hx_marker;
 

@@ -8,6 +8,7 @@
 #include <expat.h>
 #include <libgen.h>
 #include <limits.h>
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -888,6 +889,15 @@ static int resolve_bodies(reader *r)
         v3_sub(d, mk->pos0, b->p0);
         m3_tapply(mk->r_local, b->R0, d);
         m3_tmul(mk->R_local, b->R0, mk->R0);
+        /* the common cases, marked so that frames skip their products; an
+         * orientation equal to the body's up to rounding is taken as equal */
+        double off = 0.0;
+        for (int i = 0; i < 9; ++i)
+            off = fmax(off, fabs(mk->R_local[i] - (i % 4 == 0 ? 1.0 : 0.0)));
+        mk->local_axes = off <= 4.0 * DBL_EPSILON;
+        if (mk->local_axes)
+            m3_identity(mk->R_local);
+        mk->at_body_origin = mk->r_local[0] == 0.0 && mk->r_local[1] == 0.0 && mk->r_local[2] == 0.0;
     }
     return 0;
 }
