@@ -1,10 +1,12 @@
 /* usrsub-harness run: integrate a model's dynamics. */
 #include <getopt.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
 #include "commands.h"
 #include "simulation.h"
+#include "stability.h"
 
 static void usage(FILE *f)
 {
@@ -20,6 +22,18 @@ static void usage(FILE *f)
             "  --rtol R, --atol A  dopri5 tolerances (default 1e-6, 1e-9)\n"
             "  --max-step H        dopri5's largest step\n"
             "  --quiet             no progress line\n");
+}
+
+static int stability_at_start(hx_dynamics *d, hx_stability *st)
+{
+    usrsub_message msg;
+    double *y = calloc((size_t)d->n, sizeof(double));
+    const int status = y != NULL && hx_dynamics_initial_state(d, y) == 0 &&
+                               hx_estimate_stability(d, 0.0, y, st, &msg) == 0
+                           ? 0
+                           : -1;
+    free(y);
+    return status;
 }
 
 int hx_command_run(int argc, char **argv)
@@ -87,9 +101,23 @@ int hx_command_run(int argc, char **argv)
         hx_session_close(&s);
         return 1;
     }
+    /* a fixed step beyond the stability limit of the fastest mode: say so before */
+    hx_stability st;
+    const int fixed = so.integration.method != HX_METHOD_DOPRI5;
+    const int limited = fixed && stability_at_start(&d, &st) == 0;
+    const double limit = limited ? st.max_step[so.integration.method] : INFINITY;
+    if (limited && so.integration.step > limit)
+        fprintf(stderr, "run: warning: the step %g is above %s's stability limit %.3g for the"
+                " model's fastest mode (lambda = %.4g + %.4gi at t = 0): expect the run to"
+                " diverge\n", so.integration.step, hx_method_name(so.integration.method), limit,
+                st.re, st.im);
     hx_simulation_result result;
     const int status = hx_simulate(&d, &so, NULL, &result);
     hx_simulation_summary(stdout, &d, &so, &result);
+    if (result.status == HX_INTEGRATION_UNSTABLE && limited)
+        printf("  the step %g %s the stability limit %.3g of %s at t = 0 (|lambda| = %.4g)\n",
+               so.integration.step, so.integration.step > limit ? "exceeds" : "is within",
+               limit, hx_method_name(so.integration.method), st.magnitude);
     if (so.csv != NULL)
         fclose(so.csv);
     hx_dynamics_free(&d);

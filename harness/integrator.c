@@ -71,8 +71,17 @@ typedef struct run {
     const hx_integrator_options *opt;
     hx_integrator_stats *stats;
     double limit; /* unstable above this norm */
-    double next_output;
+    double t0;
+    long outputs; /* output times emitted: the next is t0 + (outputs + 1) interval */
 } run;
+
+/* The next output time (counted, not summed, so that the last one lands on
+ * the end however many there are). */
+static double next_output(const run *r)
+{
+    const double t = r->t0 + (double)(r->outputs + 1) * r->opt->output_interval;
+    return fabs(t - r->opt->t_end) <= 1e-9 * r->opt->output_interval ? r->opt->t_end : t;
+}
 
 static int evaluate(run *r, double t, const double *y, double *ydot)
 {
@@ -359,18 +368,19 @@ static hx_status integrate_dopri5(run *r, double t0, double *y)
         int stop = 0;
         if (opt->output != NULL) {
             if (opt->output_interval > 0.0) {
-                while (!stop && r->next_output <= t1 + 1e-12 * fabs(h)) {
-                    const double th = (r->next_output - t) / h;
+                double to;
+                while (!stop && (to = next_output(r)) <= t1 + 1e-12 * fabs(h)) {
+                    const double th = (to - t) / h;
                     const double th1 = 1.0 - th;
                     for (int i = 0; i < n; ++i)
                         yout[i] = r1[i] + th * (r2[i] + th1 * (r3[i] + th * (r4[i] + th1 * r5[i])));
-                    if (o->project != NULL && o->project(o->ctx, r->next_output, yout) < 0) {
+                    if (o->project != NULL && o->project(o->ctx, to, yout) < 0) {
                         status = HX_INTEGRATION_FAILED;
                         stop = 1;
                         break;
                     }
-                    stop = opt->output(o->ctx, r->next_output, yout) != 0;
-                    r->next_output += opt->output_interval;
+                    stop = opt->output(o->ctx, to, yout) != 0;
+                    r->outputs++;
                 }
             }
         }
@@ -420,7 +430,7 @@ hx_status hx_integrate(const hx_ode *ode, double t0, double *y, const hx_integra
 {
     memset(stats, 0, sizeof *stats);
     stats->t_reached = t0;
-    run r = {ode, opt, stats, 0.0, t0 + opt->output_interval};
+    run r = {ode, opt, stats, 0.0, t0, 0};
     const int m = ode->nq + ode->nu > 0 ? ode->nq + ode->nu : ode->n;
     r.limit = (opt->growth_limit > 0.0 ? opt->growth_limit : 1e12) * (1.0 + norm(y, m));
     if (opt->method == HX_METHOD_SYMPLECTIC_EULER && ode->advance == NULL)

@@ -137,12 +137,14 @@ static int output(void *ctx, double t, const double *y)
     run_context *rc = ctx;
     hx_dynamics *d = rc->d;
     hx_simulation_result *r = rc->result;
-    const hx_energy e = hx_dynamics_energy(d, t, y);
-    r->energy_scale = fmax(r->energy_scale, fabs(e.kinetic));
-    r->energy_error_max = fmax(r->energy_error_max, fabs(e.total - r->energy0.total));
-    r->balance_error_max = fmax(r->balance_error_max, fabs(e.balance - r->energy0.balance));
-    if (rc->opt->csv != NULL && hx_csv_row(rc->opt->csv, d, t, y, &e, &r->energy0) != 0)
-        return 1;
+    if (!rc->opt->skip_energy || rc->opt->csv != NULL) {
+        const hx_energy e = hx_dynamics_energy(d, t, y);
+        r->energy_scale = fmax(r->energy_scale, fabs(e.kinetic));
+        r->energy_error_max = fmax(r->energy_error_max, fabs(e.total - r->energy0.total));
+        r->balance_error_max = fmax(r->balance_error_max, fabs(e.balance - r->energy0.balance));
+        if (rc->opt->csv != NULL && hx_csv_row(rc->opt->csv, d, t, y, &e, &r->energy0) != 0)
+            return 1;
+    }
     if (rc->opt->observer != NULL && rc->opt->observer(rc->opt->observer_ctx, d, t, y) != 0)
         return 1;
     if (rc->opt->progress) {

@@ -20,6 +20,7 @@ typedef struct hx_simulation_options {
     int progress;            /* print a progress line on runs longer than a second */
     hx_observer_fn *observer;
     void *observer_ctx;
+    int skip_energy;         /* no energy at the output times (timed runs; no CSV) */
 } hx_simulation_options;
 
 typedef struct hx_simulation_result {
