@@ -136,6 +136,10 @@ typedef struct hx_model {
 /* Reads a model; warnings (unsupported elements) go to `warnings` (may be NULL).
  * Returns NULL with "file:line: what" in msg on an error. */
 hx_model *hx_model_read(const char *path, FILE *warnings, usrsub_message *msg);
+/* The same from text in memory; name stands for the file in messages, and the
+ * model's folder is that of name. */
+hx_model *hx_model_parse(const char *text, size_t length, const char *name, FILE *warnings,
+                         usrsub_message *msg);
 void hx_model_free(hx_model *m);
 
 /* Index of the marker with this id, or -1. Marker id 0 is the world frame (-1). */

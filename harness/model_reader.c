@@ -1047,26 +1047,37 @@ static int resolve(reader *r)
     return 0;
 }
 
-static int parse_file(reader *r)
+/* Feeds the XML to expat: from the file at r->path, or from text when not NULL. */
+static int parse_source(reader *r, const char *text, size_t length)
 {
-    FILE *f = fopen(r->path, "rb");
-    if (f == NULL) {
+    FILE *f = NULL;
+    if (text == NULL && (f = fopen(r->path, "rb")) == NULL) {
         usrsub_fail(r->msg, "%s: cannot open the model: %s", r->path, strerror(errno));
         return -1;
     }
     r->parser = XML_ParserCreate(NULL);
     if (r->parser == NULL) {
-        fclose(f);
+        if (f != NULL)
+            fclose(f);
         usrsub_fail(r->msg, "%s: out of memory", r->path);
         return -1;
     }
     XML_SetUserData(r->parser, r);
     XML_SetStartElementHandler(r->parser, on_start);
     char buffer[16384];
+    size_t offset = 0;
     int done = 0;
     while (!done && !r->failed) {
-        const size_t n = fread(buffer, 1, sizeof buffer, f);
-        done = n < sizeof buffer;
+        size_t n;
+        if (f != NULL) {
+            n = fread(buffer, 1, sizeof buffer, f);
+            done = n < sizeof buffer;
+        } else {
+            n = length - offset < sizeof buffer ? length - offset : sizeof buffer;
+            memcpy(buffer, text + offset, n);
+            offset += n;
+            done = offset == length;
+        }
         if (XML_Parse(r->parser, buffer, (int)n, done) == XML_STATUS_ERROR && !r->failed) {
             usrsub_fail(r->msg, "%s:%lu: malformed XML: %s", r->path,
                         (unsigned long)XML_GetCurrentLineNumber(r->parser),
@@ -1076,11 +1087,13 @@ static int parse_file(reader *r)
     }
     XML_ParserFree(r->parser);
     r->parser = NULL;
-    fclose(f);
+    if (f != NULL)
+        fclose(f);
     return r->failed ? -1 : 0;
 }
 
-hx_model *hx_model_read(const char *path, FILE *warnings, usrsub_message *msg)
+static hx_model *read_model(const char *path, const char *text, size_t length, FILE *warnings,
+                            usrsub_message *msg)
 {
     hx_model *m = calloc(1, sizeof *m);
     if (m == NULL) {
@@ -1091,14 +1104,14 @@ hx_model *hx_model_read(const char *path, FILE *warnings, usrsub_message *msg)
     for (int k = 0; k < USRSUB_UNIT_COUNT; ++k)
         m->unit_scales[k] = 1.0;
     char real[PATH_MAX];
-    m->path = strdup(realpath(path, real) != NULL ? real : path);
+    m->path = strdup(text == NULL && realpath(path, real) != NULL ? real : path);
     char *copy = m->path != NULL ? strdup(m->path) : NULL;
     m->dir = copy != NULL ? strdup(dirname(copy)) : NULL;
     free(copy);
     reader r = {.path = path, .warnings = warnings, .m = m, .msg = msg};
     int status = (m->path == NULL || m->dir == NULL) ? usrsub_fail(msg, "out of memory") : 0;
     if (status == 0)
-        status = parse_file(&r);
+        status = parse_source(&r, text, length);
     if (status == 0)
         status = resolve(&r);
     free(r.rmarkers);
@@ -1112,4 +1125,15 @@ hx_model *hx_model_read(const char *path, FILE *warnings, usrsub_message *msg)
         return NULL;
     }
     return m;
+}
+
+hx_model *hx_model_read(const char *path, FILE *warnings, usrsub_message *msg)
+{
+    return read_model(path, NULL, 0, warnings, msg);
+}
+
+hx_model *hx_model_parse(const char *text, size_t length, const char *name, FILE *warnings,
+                         usrsub_message *msg)
+{
+    return read_model(name, text != NULL ? text : "", text != NULL ? length : 0, warnings, msg);
 }

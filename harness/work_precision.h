@@ -42,7 +42,7 @@ typedef struct hx_wp_result {
     hx_wp_point point[HX_WP_MAX_POINTS];
     int analytic;               /* the reference is a closed form */
     double reference_error;     /* numerical reference: its two runs apart */
-    char reference[256];        /* how the reference was made */
+    char reference[1024];       /* how the reference was made */
     hx_stability stability;     /* at the initial state */
 } hx_wp_result;
 

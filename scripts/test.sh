@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Sets up, then builds and runs every test: the normal build and the
-# AddressSanitizer + UndefinedBehaviorSanitizer build.
+# Sets up, then builds and runs every test: the normal build; the
+# AddressSanitizer + UndefinedBehaviorSanitizer build; the ThreadSanitizer
+# build on the concurrency tests; valgrind on unloading and reloading the
+# library; and a brief run of each libFuzzer target (FUZZ_SECONDS, default 20).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/setup.sh"
@@ -13,4 +15,16 @@ echo "== build and test (RelWithDebInfo)"
 echo "== build and test (AddressSanitizer + UndefinedBehaviorSanitizer)"
 "$root/scripts/build.sh" build-asan -DUSRSUB_SANITIZE=ON
 (cd "$root/build-asan" && ASAN_OPTIONS=detect_leaks=1 ctest --output-on-failure -j "$cores")
+
+echo "== build and test (ThreadSanitizer: threads setting up and calling every entry)"
+"$root/scripts/build.sh" build-tsan -DUSRSUB_THREAD_SANITIZER=ON
+(cd "$root/build-tsan" && TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" \
+   ctest --output-on-failure -R "test_concurrency|test_element_cache|test_reload")
+
+echo "== valgrind: unload and reload leak nothing"
+(cd "$root/build" && MS_USERDLL_DIR="$root/build" valgrind -q --leak-check=full \
+   --errors-for-leak-kinds=definite,indirect --error-exitcode=1 ./test_reload >/dev/null)
+
+echo "== fuzz (brief: ${FUZZ_SECONDS:-20} s per target)"
+"$root/scripts/fuzz.sh" "${FUZZ_SECONDS:-20}"
 echo "== all tests passed"

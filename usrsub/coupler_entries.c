@@ -69,13 +69,13 @@ static void report_bad_call(coupler_output what, const int *id, const double *pa
     const int element = id != NULL ? *id : 0;
     if (id == NULL || ndisp == NULL || disp == NULL || npar == NULL || *npar < 0 ||
         (*npar > 0 && par == NULL)) {
-        entry_report_error(routine_names[what], element, "called with a missing argument (id,"
+        entry_report_error(routine_names[what], element, NULL, "called with a missing argument (id,"
                            " par, npar, disp or ndisp) or a negative npar");
         return;
     }
     for (int k = 0; k < n; ++k)
         if (!isfinite(disp[k])) {
-            entry_report_error(routine_names[what], element, "disp[%d] (joint %d of %d) is %g:"
+            entry_report_error(routine_names[what], element, "state", "disp[%d] (joint %d of %d) is %g:"
                                " a joint displacement must be finite; the output is zero", k,
                                k + 1, n, disp[k]);
             return;
@@ -119,6 +119,18 @@ static void coupler_entry(coupler_output what, const int *id, const double *par,
     case COUPLER_PHI: *out = usrsub_coupler_phi(c, disp); break;
     case COUPLER_GRADIENT: usrsub_coupler_gradient(c, disp, out); break;
     case COUPLER_HESSIAN: usrsub_coupler_hessian(c, disp, out); break;
+    }
+    /* finite displacements far outside the data can still overflow (1e308 times
+     * a slope): never pass an infinity on */
+    const int count = output_count(what, n);
+    double check = 0.0;
+    for (int k = 0; k < count; ++k)
+        check += out[k] * 0.0;
+    if (check != 0.0) {
+        zero(out, count);
+        entry_report_error(routine_names[what], *id, "result", "the output at disp (%g %g %g) is"
+                           " not finite (a displacement out of any sensible range); the output"
+                           " is zero", disp[0], disp[1], n > 2 ? disp[2] : 0.0);
     }
 }
 

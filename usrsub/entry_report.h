@@ -12,8 +12,12 @@
 void entry_report_setup(const char *routine, int id, int set_up_now, const void *model,
                         const element_setup_report *report);
 
-/* An input error found during a call (a non-finite state, a bad argument). */
-void entry_report_error(const char *routine, int id, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
+/* An input error found during a call (a non-finite state, a bad argument, a
+ * query the host refused), reported once per routine, element and kind (a
+ * string constant naming the problem; NULL: every time, for calls that break
+ * the calling convention): a host that goes on calling after an error is not
+ * flooded with the same sentence. */
+void entry_report_error(const char *routine, int id, const char *kind, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
 
 #endif

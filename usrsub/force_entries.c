@@ -35,7 +35,7 @@ static int arguments_ok(const char *routine, const int *id, const double *par, c
 {
     if (id != NULL && npar != NULL && *npar >= 0 && (*npar == 0 || par != NULL))
         return 1;
-    entry_report_error(routine, id != NULL ? *id : 0, "called with a missing argument (id,"
+    entry_report_error(routine, id != NULL ? *id : 0, NULL, "called with a missing argument (id,"
                        " par or npar) or a negative npar");
     return 0;
 }
@@ -69,12 +69,12 @@ static void gfosub_entry(const char *routine, int code, int *id, double *time, d
     double d[6] = {0, 0, 0, 0, 0, 0}, v[6] = {0, 0, 0, 0, 0, 0};
     char failed[64];
     if (measure_deformation(m->i_marker, m->j_marker, m->needs, d, v, failed) != 0) {
-        entry_report_error(routine, *id, "the host could not answer %s (markers %d and %d);"
+        entry_report_error(routine, *id, "query", "the host could not answer %s (markers %d and %d);"
                            " the output is zero", failed, m->i_marker, m->j_marker);
         return;
     }
     if (!all_finite(d, 6) || !all_finite(v, 6)) {
-        entry_report_error(routine, *id, "the host's deformation (%g %g %g %g %g %g) or rate"
+        entry_report_error(routine, *id, "state", "the host's deformation (%g %g %g %g %g %g) or rate"
                            " (%g %g %g %g %g %g) is not finite; the output is zero", d[0], d[1],
                            d[2], d[3], d[4], d[5], v[0], v[1], v[2], v[3], v[4], v[5]);
         return;
@@ -82,7 +82,7 @@ static void gfosub_entry(const char *routine, int code, int *id, double *time, d
     force_model_evaluate(m, d, v, result, NULL, NULL);
     if (!all_finite(result, 6)) {
         memset(result, 0, 6 * sizeof(double));
-        entry_report_error(routine, *id, "the force at deformation (%g %g %g %g %g %g) is not"
+        entry_report_error(routine, *id, "result", "the force at deformation (%g %g %g %g %g %g) is not"
                            " finite (a state out of any sensible range); the output is zero",
                            d[0], d[1], d[2], d[3], d[4], d[5]);
     }
@@ -112,7 +112,7 @@ static void fiesub_entry(const char *routine, int code, int *id, double *time, d
     }
     if (disp == NULL || velo == NULL) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
-        entry_report_error(routine, *id, "called without disp or velo");
+        entry_report_error(routine, *id, NULL, "called without disp or velo");
         return;
     }
     const force_model *m = model_of(routine, ELEMENT_FIESUB, code, *id, par, *npar);
@@ -122,7 +122,7 @@ static void fiesub_entry(const char *routine, int code, int *id, double *time, d
     }
     if (!all_finite(disp, 6) || !all_finite(velo, 6)) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
-        entry_report_error(routine, *id, "disp (%g %g %g %g %g %g) or velo (%g %g %g %g %g %g)"
+        entry_report_error(routine, *id, "state", "disp (%g %g %g %g %g %g) or velo (%g %g %g %g %g %g)"
                            " is not finite; the output is zero", disp[0], disp[1], disp[2],
                            disp[3], disp[4], disp[5], velo[0], velo[1], velo[2], velo[3],
                            velo[4], velo[5]);
@@ -131,7 +131,7 @@ static void fiesub_entry(const char *routine, int code, int *id, double *time, d
     force_model_evaluate(m, disp, velo, field, partials ? dfddis : NULL, partials ? dfdvel : NULL);
     if (!all_finite(field, 6) || (partials && (!all_finite(dfddis, 36) || !all_finite(dfdvel, 36)))) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
-        entry_report_error(routine, *id, "the force at disp (%g %g %g %g %g %g) is not finite (a"
+        entry_report_error(routine, *id, "result", "the force at disp (%g %g %g %g %g %g) is not finite (a"
                            " state out of any sensible range); the output is zero", disp[0],
                            disp[1], disp[2], disp[3], disp[4], disp[5]);
     }

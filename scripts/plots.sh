@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# plots.sh: regenerates the README's plots and benchmark numbers into docs/
+# (PNG plots, CSV data, and docs/bench.txt with the commands' own output).
+# Timings are medians of repeated runs pinned to one processor; they vary
+# with the machine (the README says which one gave its numbers).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+"$root/scripts/setup.sh"
+"$root/scripts/build.sh" build
+export MS_USERDLL_DIR="$root/build"
+h="$root/build/usrsub-harness"
+ex="$root/harness/examples"
+out="$root/docs"
+mkdir -p "$out"
+omega=6.283185307179586
+
+echo "== the seed's coupling examples (bushing rig)"
+"$h" rig "$ex/bushing_coupling.xml" --element 1 --circle 5,$omega --end 1 --step 0.005 \
+    --plot "$out/coupling_example1_coupled" >/dev/null
+"$h" rig "$ex/bushing_coupling.xml" --element 2 --circle 5,$omega --end 1 --step 0.005 \
+    --plot "$out/coupling_example1_uncoupled" >/dev/null
+"$h" rig "$ex/bushing_coupling.xml" --element 1 --force-circle 125,$omega --end 1 --step 0.005 \
+    --plot "$out/coupling_example2" >/dev/null
+"$h" rig "$ex/bushing_coupling.xml" --element 3 --force-circle 125,$omega --end 1 --step 0.005 \
+    --plot "$out/coupling_example3" >/dev/null
+
+echo "== mount limits: force against deflection through both limits"
+for e in 1 2; do
+  "$h" rig "$ex/mount_limits_rig.xml" --element $e --line x,-6,6 --end 1 --step 0.002 \
+      --out "$out/limits_x_$e.csv" >/dev/null
+  "$h" rig "$ex/mount_limits_rig.xml" --element $e --line az,-0.5,0.5 --end 1 --step 0.002 \
+      --out "$out/limits_az_$e.csv" >/dev/null
+done
+gnuplot <<GP
+set datafile separator ','
+set terminal pngcairo size 1100,450 font ',11'
+set output '$out/mount_limits_rig.png'
+set multiplot layout 1,2 title 'mount limits (mount_limits.gbi) on a rig: the limits alone, and added to a linear bushing'
+set grid
+set key top right
+set title 'x: gap 3 mm, K = 5000 N/mm^2, E = 2'
+set xlabel 'x (mm)'; set ylabel 'Fx (N)'
+set arrow 1 from 3, graph 0 to 3, graph 1 nohead dt 2
+set arrow 2 from -3, graph 0 to -3, graph 1 nohead dt 2
+plot '$out/limits_x_1.csv' using 2:14 with lines lw 2 title 'limits alone', \
+     '$out/limits_x_2.csv' using 2:14 with lines lw 2 title 'bushing + limits'
+set title 'az: gap 0.3 rad, K = 1e6 N mm/rad, E = 1'
+set xlabel 'az (rad)'; set ylabel 'Tz (N mm)'
+set arrow 1 from 0.3, graph 0 to 0.3, graph 1 nohead dt 2
+set arrow 2 from -0.3, graph 0 to -0.3, graph 1 nohead dt 2
+plot '$out/limits_az_1.csv' using 7:19 with lines lw 2 title 'limits alone', \
+     '$out/limits_az_2.csv' using 7:19 with lines lw 2 title 'bushing + limits'
+unset multiplot
+GP
+
+echo "== powertrain: deflection against time, gap marked"
+"$h" run "$ex/powertrain.xml" --end 1 --integrator dopri5 --rtol 1e-8 --atol 1e-10 \
+    --output-interval 0.001 --out "$out/powertrain.csv" --quiet > "$out/powertrain_run.txt"
+gnuplot <<GP
+set datafile separator ','
+set datafile columnheaders
+set terminal pngcairo size 900,500 font ',11'
+set output '$out/powertrain.png'
+set title 'powertrain (150 kg on three mounts with limits): 1500 N m of engine torque from t = 0.4 s'
+set grid
+set xlabel 't (s)'; set ylabel 'vertical mount deflection (mm)'
+set key bottom left
+set arrow 1 from graph 0, first 2.5 to graph 1, first 2.5 nohead dt 2 lc rgb 'red'
+set arrow 2 from graph 0, first -2.5 to graph 1, first -2.5 nohead dt 2 lc rgb 'red'
+set label 1 'gap +2.5 mm' at 0.02, 2.8 tc rgb 'red'
+set label 2 'gap -2.5 mm' at 0.02, -2.8 tc rgb 'red'
+plot '$out/powertrain.csv' using 1:(column('force1.dz')) with lines lw 2 title 'left mount', \
+     '$out/powertrain.csv' using 1:(column('force2.dz')) with lines lw 2 title 'right mount', \
+     '$out/powertrain.csv' using 1:(column('force3.dz')) with lines lw 2 title 'rear torque rod'
+GP
+
+echo "== work-precision of the reference models"
+{
+  for m in damped_oscillator normal_modes geared_oscillator; do
+    echo "### $m.xml"
+    "$h" bench "$ex/$m.xml" --work-precision --out "$out/$m" | grep -v "^wrote"
+  done
+} > "$out/work_precision.txt"
+
+echo "== cost per call and the harness's share"
+{
+  echo "### bench_coupler.xml";  "$h" bench "$ex/bench_coupler.xml" --repeats 41
+  echo "### bench_bushing.xml";  "$h" bench "$ex/bench_bushing.xml" --repeats 41
+  echo "### bench_limits.xml";   "$h" bench "$ex/bench_limits.xml" --repeats 41 \
+      --compare vector:1,vector:2 --compare field:3,field:4 --compare field:3,field:7 \
+      --compare field:8,field:9
+  echo "### flex_joint_rig.xml"; "$h" bench "$ex/flex_joint_rig.xml" --repeats 41
+  echo "### powertrain.xml";     "$h" bench "$ex/powertrain.xml" --repeats 41
+  echo "### stiff_mount.xml";    "$h" bench "$ex/stiff_mount.xml" --repeats 5
+} > "$out/bench.txt"
+
+echo "== long runs"
+{
+  echo "### normal_modes.xml";    "$h" bench "$ex/normal_modes.xml" --repeats 3 --long-run 1000000
+  echo "### geared_pendulums.xml"; "$h" bench "$ex/geared_pendulums.xml" --repeats 3 \
+      --long-run 1000000 --step 1e-4
+} > "$out/long_runs.txt"
+echo "== wrote $out"

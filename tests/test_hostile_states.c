@@ -1,0 +1,219 @@
+/*
+ * Non-finite and extreme states into every entry: NaN, +-Inf, +-1e308,
+ * denormals, exact zeros (r = 0 of a coupled bushing) and mixes of them, as
+ * disp and velo (FIESUB, couplers) or as the host's answers (GFOSUB, through
+ * bodies placed there). Every output is finite, always: the entry either
+ * copes or reports an error and returns zeros. Never NaN or Inf out.
+ */
+#include <dlfcn.h>
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "host.h"
+#include "kinematics.h"
+#include "model.h"
+#include "test_support.h"
+#include "usrsub/solver_abi.h"
+
+static const double values[] = {NAN, INFINITY, -INFINITY, 1e308, -1e308, 4.9e-324, -4.9e-324,
+                                DBL_MIN, 0.0, -0.0, 1e-300, 1e150, 3.0};
+#define NVALUES ((int)(sizeof values / sizeof values[0]))
+
+static int all_finite(const double *v, int n)
+{
+    for (int k = 0; k < n; ++k)
+        if (!isfinite(v[k]))
+            return 0;
+    return 1;
+}
+
+static void *library;
+static hx_model *model;
+
+static void set_up(void)
+{
+    char text[4096];
+    snprintf(text, sizeof text,
+             "<MotionSolve><Model>\n"
+             "<Param_Unit force_unit=\"NEWTON\" mass_unit=\"KILOGRAM\" length_unit=\"MILLIMETER\" time_unit=\"SECOND\"/>\n"
+             "<Reference_String id=\"401\" string=\"" EXAMPLES_DIR "/bench_bushing.gbs\"/>\n"
+             "<Reference_String id=\"402\" string=\"" EXAMPLES_DIR "/mount_limits.gbi\"/>\n"
+             "<Reference_String id=\"403\" string=\"" EXAMPLES_DIR "/flex_coupled.gfj\"/>\n"
+             "<Reference_String id=\"404\" string=\"" EXAMPLES_DIR "/steering_ratio.tbl\"/>\n"
+             "<Reference_String id=\"405\" string=\"" EXAMPLES_DIR "/coupled_isotropic.gbs\"/>\n"
+             "<Body_Ground id=\"1\"/><Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+             "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\" inertia_zz=\"1\"/>\n"
+             "<Reference_Marker id=\"20\" body_id=\"2\"/>\n"
+             "</Model></MotionSolve>\n");
+    usrsub_message msg;
+    model = hx_model_read(test_write_file("hostile.xml", text), NULL, &msg);
+    if (model == NULL)
+        fail_msg("%s", msg.text);
+    hx_host_attach(model);
+    library = dlopen(USRSUB_LIBRARY, RTLD_NOW | RTLD_LOCAL);
+    if (library == NULL)
+        fail_msg("%s", dlerror());
+}
+
+static void tear_down(void)
+{
+    dlclose(library);
+    hx_host_attach(NULL);
+    hx_model_free(model);
+}
+
+static const struct {
+    int ndisp, npar;
+    double par[24];
+} couplers[] = {
+    {2, 4, {1, 20, 1, 40}},                                     /* linear */
+    {2, 10, {2, 3, 0, 1, 0, 0.2, 5, 1.5, 1.0, 0.0}},            /* polynomial, sine */
+    {3, 13, {3, 3, -1, -2, 0, 0, 1, 3, 4, 404, 0.5, 1, 2}},     /* inline spline, file, linear */
+};
+
+static void couplers_take_any_disp(void **state)
+{
+    (void)state;
+    hx_host_set_message_stream(NULL);
+    set_up();
+    usrsub_coupler_fn *fn[3] = {(usrsub_coupler_fn *)dlsym(library, "COUSUB"),
+                                (usrsub_coupler_fn *)dlsym(library, "COUXX"),
+                                (usrsub_coupler_fn *)dlsym(library, "COUXX2")};
+    int calls = 0;
+    for (size_t c = 0; c < sizeof couplers / sizeof couplers[0]; ++c) {
+        int npar = couplers[c].npar;
+        for (int a = 0; a < NVALUES; ++a)
+            for (int b = 0; b < NVALUES; b += 3)
+                for (int w = 0; w < 3; ++w) {
+                    double par[24], disp[3] = {values[a], values[b], values[(a + b) % NVALUES]};
+                    memcpy(par, couplers[c].par, sizeof par);
+                    int id = 500 + (int)c, nd = couplers[c].ndisp, flag = 0;
+                    double t = 0.0, out[9];
+                    fn[w](&id, &t, par, &npar, disp, &nd, &flag, out);
+                    const int count = w == 0 ? 1 : w == 1 ? nd : nd * nd;
+                    if (!all_finite(out, count))
+                        fail_msg("%s coupler %zu at disp (%g %g %g): a non-finite output",
+                                 w == 0 ? "COUSUB" : w == 1 ? "COUXX" : "COUXX2", c, disp[0],
+                                 disp[1], disp[2]);
+                    ++calls;
+                }
+    }
+    tear_down();
+    hx_host_reset_messages();
+    hx_host_set_message_stream(stderr);
+    printf("couplers: %d calls, every output finite\n", calls);
+}
+
+static const struct {
+    const char *entry;
+    int npar;
+    double par[4];
+} fields[] = {
+    {"FIESUB", 2, {1, 401}},         /* splines, damping, cylindrical coupling */
+    {"FIESUB", 2, {1, 405}},         /* cubic, spherical coupling */
+    {"FIESUB", 3, {1, 401, 402}},    /* with mount limits */
+    {"MOUNT_LIMITS_FIELD", 1, {402}},
+    {"FLEX_JOINT_FIELD", 1, {403}},
+    {"ABM_BUSHING_FIELD", 1, {405}},
+};
+
+static void field_entries_take_any_state(void **state)
+{
+    (void)state;
+    hx_host_set_message_stream(NULL);
+    set_up();
+    long calls = 0;
+    for (size_t e = 0; e < sizeof fields / sizeof fields[0]; ++e) {
+        usrsub_fiesub_fn *fn = (usrsub_fiesub_fn *)dlsym(library, fields[e].entry);
+        assert_non_null(fn);
+        for (int a = 0; a < NVALUES; ++a)
+            for (int slot = 0; slot < 12; ++slot)
+                for (int mix = 0; mix < 3; ++mix) {
+                    /* one hostile value in one slot, over a plain, a zero or a huge state */
+                    const double base = mix == 0 ? 0.3 : mix == 1 ? 0.0 : 1e200;
+                    double disp[6], velo[6], F[6], J[72];
+                    for (int i = 0; i < 6; ++i)
+                        disp[i] = base * (i < 3 ? 1.0 : 0.1), velo[i] = base;
+                    (slot < 6 ? disp : velo)[slot % 6] = values[a];
+                    double par[4];
+                    memcpy(par, fields[e].par, sizeof par);
+                    int id = 600 + (int)e, npar = fields[e].npar, dflag = 0, iflag = 0;
+                    double t = 0.0;
+                    fn(&id, &t, par, &npar, disp, velo, &dflag, &iflag, F, J, J + 36);
+                    if (!all_finite(F, 6) || !all_finite(J, 72))
+                        fail_msg("%s USER(%g, ...): a non-finite output with %s[%d] = %g over %g",
+                                 fields[e].entry, par[0], slot < 6 ? "disp" : "velo", slot % 6,
+                                 values[a], base);
+                    ++calls;
+                }
+    }
+    tear_down();
+    hx_host_reset_messages();
+    hx_host_set_message_stream(stderr);
+    printf("field entries: %ld calls, every output finite\n", calls);
+}
+
+static void gfosub_entries_take_any_host_answer(void **state)
+{
+    (void)state;
+    hx_host_set_message_stream(NULL);
+    set_up();
+    static const struct {
+        const char *entry;
+        int npar;
+        double par[6];
+    } forces[] = {
+        {"GFOSUB", 4, {1, 20, 10, 401}}, {"GFOSUB", 5, {1, 20, 10, 401, 402}},
+        {"MOUNT_LIMITS", 3, {20, 10, 402}}, {"FLEX_JOINT", 3, {20, 10, 403}},
+        {"ABM_BUSHING", 3, {20, 10, 405}},
+    };
+    hx_frame frames[2];
+    long calls = 0;
+    for (size_t e = 0; e < sizeof forces / sizeof forces[0]; ++e) {
+        usrsub_gfosub_fn *fn = (usrsub_gfosub_fn *)dlsym(library, forces[e].entry);
+        assert_non_null(fn);
+        for (int a = 0; a < NVALUES; ++a)
+            for (int slot = 0; slot < 12; ++slot) {
+                /* body 2 placed with one hostile position, angle or velocity */
+                hx_initial_frames(model, frames);
+                hx_frame *f = &frames[1];
+                if (slot < 3)
+                    f->p[slot] = values[a];
+                else if (slot < 6)
+                    for (int i = 0; i < 3; ++i) /* a hostile rotation matrix row */
+                        f->R[3 * (slot - 3) + i] = values[a];
+                else if (slot < 9)
+                    f->v[slot - 6] = values[a];
+                else
+                    f->w[slot - 9] = values[a];
+                hx_host_set_frames(frames, 0.0);
+                double par[6], out[6];
+                memcpy(par, forces[e].par, sizeof par);
+                int id = 700 + (int)e, npar = forces[e].npar, dflag = 0, iflag = 0;
+                double t = 0.0;
+                fn(&id, &t, par, &npar, &dflag, &iflag, out);
+                if (!all_finite(out, 6))
+                    fail_msg("%s: a non-finite output with state slot %d = %g", forces[e].entry,
+                             slot, values[a]);
+                ++calls;
+            }
+    }
+    hx_host_set_frames(NULL, 0.0);
+    tear_down();
+    hx_host_reset_messages();
+    hx_host_set_message_stream(stderr);
+    printf("GFOSUB-form entries: %ld calls, every output finite\n", calls);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(couplers_take_any_disp),
+        cmocka_unit_test(field_entries_take_any_state),
+        cmocka_unit_test(gfosub_entries_take_any_host_answer),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
