@@ -181,6 +181,13 @@ int hx_estimate_stability(hx_dynamics *d, double t, const double *y, hx_stabilit
         return usrsub_fail(msg, "the right-hand side failed while linearizing: %s", d->message);
     }
     out->magnitude = hypot(out->re, out->im);
+    /* central differences are good to about 1e-6 of |lambda|: a real or an
+     * imaginary part below that is their noise (an undamped mode must not
+     * come out slightly growing, nor a damped one slightly oscillating) */
+    if (fabs(out->re) < 1e-5 * out->magnitude)
+        out->re = 0.0;
+    if (fabs(out->im) < 1e-5 * out->magnitude)
+        out->im = 0.0;
     out->evaluations = c.evaluations;
     for (int k = 0; k < HX_METHOD_COUNT; ++k)
         out->max_step[k] = hx_stable_step((hx_method)k, out->re, out->im);

@@ -92,6 +92,8 @@ echo "== cost per call and the harness's share"
   echo "### flex_joint_rig.xml"; "$h" bench "$ex/flex_joint_rig.xml" --repeats 41
   echo "### powertrain.xml";     "$h" bench "$ex/powertrain.xml" --repeats 41
   echo "### stiff_mount.xml";    "$h" bench "$ex/stiff_mount.xml" --repeats 5
+  echo "### flex_revolute.xml";  "$h" bench "$ex/flex_revolute.xml" --repeats 5
+  echo "### revolute_pendulum.xml"; "$h" bench "$ex/revolute_pendulum.xml" --repeats 5
 } > "$out/bench.txt"
 
 echo "== long runs"
