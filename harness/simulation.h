@@ -27,6 +27,8 @@ typedef struct hx_simulation_result {
     hx_status status;
     hx_integrator_stats stats;
     double seconds;          /* wall time of the integration */
+    double output_seconds;   /* of which at the output times (energy, CSV rows, observer) */
+    long outputs;
     hx_energy energy0, energy_end;
     double energy_error_max;  /* largest |E(t) - E(0)| at the output times */
     double balance_error_max; /* the same of the energy balance (dissipation counted) */
