@@ -110,22 +110,13 @@ static long calibrate(void (*fn)(void *, long), void *ctx)
     }
 }
 
-static int model_string(void *ctx, int id, char *text, int capacity)
-{
-    const char *s = hx_model_string(ctx, id);
-    if (s == NULL)
-        return -1;
-    snprintf(text, (size_t)capacity, "%s", s);
-    return 0;
-}
-
 /* Coupler inputs across each term's data (as check samples them). */
 static void coupler_points(hx_session *s, hx_binding *b, int n, coupler_bench *cb)
 {
     usrsub_coupler c;
     usrsub_message msg;
     const int decoded =
-        usrsub_coupler_decode(&c, b->par, b->npar, n, model_string, s->model, &msg) == 0;
+        usrsub_coupler_decode(&c, b->par, b->npar, n, hx_model_string_copy, s->model, &msg) == 0;
     for (int i = 0; i < n; ++i) {
         double lo = -1.0, hi = 1.0;
         if (decoded)

@@ -117,15 +117,6 @@ static int sample_coupler(void *ctx, const double *x, double *out)
     return all_finite(out, cs->which == 0 ? 1 : cs->n) ? 0 : -1;
 }
 
-static int model_string(void *ctx, int id, char *text, int capacity)
-{
-    const char *s = hx_model_string(ctx, id);
-    if (s == NULL)
-        return -1;
-    snprintf(text, (size_t)capacity, "%s", s);
-    return 0;
-}
-
 /* Sampling intervals: each term's data (spline knots, 10 % beyond both ends,
  * to cover the linear extension), else the initial coordinate +- 1. The USER
  * list is read with the library's own grammar (include/usrsub/coupler.h); a
@@ -136,7 +127,7 @@ static void coupler_ranges(const hx_session *s, const hx_binding *b, int n, cons
     usrsub_coupler c;
     usrsub_message msg;
     const int decoded =
-        usrsub_coupler_decode(&c, b->par, b->npar, n, model_string, s->model, &msg) == 0;
+        usrsub_coupler_decode(&c, b->par, b->npar, n, hx_model_string_copy, s->model, &msg) == 0;
     for (int i = 0; i < n; ++i) {
         double a, z;
         if (decoded && usrsub_coupler_term_range(&c.term[i], &a, &z)) {

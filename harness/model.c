@@ -6,6 +6,7 @@
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -69,6 +70,15 @@ int hx_model_find_force(const hx_model *m, const char *text, int *index, usrsub_
                                     " write vector:%d or field:%d"
                                   : "no Force_Vector_TwoBody or Force_Field %d%.0d%.0d",
                        id, id, id);
+}
+
+int hx_model_string_copy(void *model, int id, char *text, int capacity)
+{
+    const char *s = hx_model_string(model, id);
+    if (s == NULL)
+        return -1;
+    snprintf(text, (size_t)capacity, "%s", s);
+    return 0;
 }
 
 int hx_parse_user_list(const char *text, double **par_out, int *npar_out, usrsub_message *msg)

@@ -147,6 +147,9 @@ int hx_model_marker(const hx_model *m, int id);
 int hx_model_body(const hx_model *m, int id);
 int hx_model_joint(const hx_model *m, int id);
 const char *hx_model_string(const hx_model *m, int id);
+/* The same copied into text (the library's string look-up callback: model is
+ * an hx_model); 0, or -1 when there is no such string. */
+int hx_model_string_copy(void *model, int id, char *text, int capacity);
 /* Index of the force element written ID, vector:ID or field:ID (the prefix
  * needed when a Force_Vector_TwoBody and a Force_Field share ID); -1 and msg
  * when there is none or two. */

@@ -6,6 +6,8 @@
 #include <string.h>
 
 #include "commands.h"
+#include "host.h"
+#include "kinematics.h"
 #include "test_support.h"
 
 static const char *model_path(const char *model)
@@ -166,6 +168,45 @@ void csv_read(const char *path, csv_table *t)
         t->rows++;
     }
     fclose(f);
+}
+
+void host_model_attach(host_model *h, const char *name, const char *xml)
+{
+    usrsub_message msg;
+    h->model = hx_model_read(test_write_file(name, xml), NULL, &msg);
+    if (h->model == NULL)
+        fail_msg("%s", msg.text);
+    h->frames = calloc((size_t)h->model->nbodies, sizeof *h->frames);
+    assert_non_null(h->frames);
+    hx_initial_frames(h->model, h->frames);
+    hx_host_attach(h->model);
+    hx_host_set_frames(h->frames, 0.0);
+}
+
+void host_model_detach(host_model *h)
+{
+    hx_host_attach(NULL);
+    hx_model_free(h->model);
+    free(h->frames);
+    h->model = NULL;
+    h->frames = NULL;
+}
+
+void expect_one_setup_error(const char *model_path, const char *const needles[3])
+{
+    hx_host_set_message_stream(NULL);
+    hx_host_reset_messages();
+    hx_session s;
+    usrsub_message msg;
+    /* the dependency pass reports it and stops the run */
+    if (hx_session_open(&s, model_path, &msg) == 0) {
+        hx_session_close(&s);
+        fail_msg("%s opened, though one of its elements is faulty", model_path);
+    }
+    assert_int_equal(hx_host_error_count(), 1);
+    assert_contains(hx_host_last_error(), needles[0], needles[1], needles[2]);
+    hx_host_reset_messages();
+    hx_host_set_message_stream(stderr);
 }
 
 int csv_column(const char *path, const char *name)

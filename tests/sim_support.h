@@ -41,6 +41,30 @@ int sim_rig(const char *model, const char *csv, const char *const *args);
 /* The same with "usrsub-harness run". */
 int sim_run_csv(const char *model, const char *csv, const char *const *args);
 
+/* Force elements between marker 20 (I) and 10 (J) of the tests' models, on the
+ * library being tested: GFO(id, "(USER list)", "ENTRY") and the same FIE. */
+#define GFO(id, list, fnc)                                                                      \
+    "<Force_Vector_TwoBody id=\"" #id "\" type=\"ForceAndTorque\" i_marker_id=\"20\" "          \
+    "j_floating_marker_id=\"10\" ref_marker_id=\"10\" usrsub_param_string=\"USER" list "\" "    \
+    "usrsub_fnc_name=\"" fnc "\" usrsub_dll_name=\"" USRSUB_LIBRARY "\"/>\n"
+#define FIE(id, list, fnc)                                                                      \
+    "<Force_Field id=\"" #id "\" i_marker_id=\"20\" j_marker_id=\"10\" usrsub_param_string=\"USER" \
+    list "\" usrsub_fnc_name=\"" fnc "\" usrsub_dll_name=\"" USRSUB_LIBRARY "\"/>\n"
+
+/* A model from XML text (written to the temporary folder as name) attached
+ * to the harness host, its bodies at their initial frames: entries of a
+ * library loaded directly then query it, as they would a solver. */
+typedef struct host_model {
+    hx_model *model;
+    hx_frame *frames;
+} host_model;
+void host_model_attach(host_model *h, const char *name, const char *xml);
+void host_model_detach(host_model *h);
+
+/* A model with one faulty element: its session does not open, and the host
+ * got exactly one error, holding every needle. */
+void expect_one_setup_error(const char *model_path, const char *const needles[3]);
+
 /* Column of a CSV file's header by name (-1 when absent). */
 int csv_column(const char *path, const char *name);
 

@@ -14,6 +14,7 @@
 #include "host.h"
 #include "kinematics.h"
 #include "model.h"
+#include "sim_support.h"
 #include "test_support.h"
 #include "usrsub/solver_abi.h"
 
@@ -114,14 +115,8 @@ static void threads_agree_with_one_thread(void **state)
              " v_ic_x=\"3\" v_ic_y=\"-1\" w_ic_z=\"0.4\"/>\n"
              "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"4.5\" pos_y=\"-0.5\" pos_z=\"0.2\"/>\n"
              "</Model></MotionSolve>\n");
-    usrsub_message msg;
-    hx_model *m = hx_model_read(test_write_file("threads.xml", text), NULL, &msg);
-    if (m == NULL)
-        fail_msg("%s", msg.text);
-    hx_frame frames[2];
-    hx_initial_frames(m, frames);
-    hx_host_attach(m);
-    hx_host_set_frames(frames, 0.0); /* the host's state: read-only from here on */
+    host_model host; /* the host's state: read-only from here on */
+    host_model_attach(&host, "threads.xml", text);
 
     /* the single-threaded answer, from a fresh library */
     entries en;
@@ -155,8 +150,7 @@ static void threads_agree_with_one_thread(void **state)
     printf("%d threads x %d rounds over %d elements: identical to one thread\n", compared, ROUNDS,
            ELEMENTS);
     free(expected);
-    hx_host_attach(NULL);
-    hx_model_free(m);
+    host_model_detach(&host);
 }
 
 int main(void)

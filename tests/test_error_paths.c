@@ -17,12 +17,12 @@
 #include "kinematics.h"
 #include "model.h"
 #include "session.h"
+#include "sim_support.h"
 #include "test_support.h"
 #include "usrsub/solver_abi.h"
 
 static void *library;
-static hx_model *model;
-static hx_frame *frames;
+static host_model host;
 
 static const char *const good_gbs =
     "[HEADER]\nFILE_TYPE = 'gbs'\n[UNITS]\nLENGTH = 'mm'\nANGLE = 'radian'\nFORCE = 'newton'\n"
@@ -78,14 +78,7 @@ static void set_up(void)
              "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\" inertia_zz=\"1\"/>\n"
              "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"1\"/>\n"
              "</Model></MotionSolve>\n", strings());
-    usrsub_message msg;
-    model = hx_model_read(test_write_file("host.xml", text), NULL, &msg);
-    if (model == NULL)
-        fail_msg("%s", msg.text);
-    frames = calloc((size_t)model->nbodies, sizeof *frames);
-    hx_initial_frames(model, frames);
-    hx_host_attach(model);
-    hx_host_set_frames(frames, 0.0);
+    host_model_attach(&host, "host.xml", text);
     library = dlopen(USRSUB_LIBRARY, RTLD_NOW | RTLD_LOCAL);
     if (library == NULL)
         fail_msg("%s", dlerror());
@@ -94,9 +87,7 @@ static void set_up(void)
 static void tear_down(void)
 {
     dlclose(library);
-    hx_host_attach(NULL);
-    hx_model_free(model);
-    free(frames);
+    host_model_detach(&host);
 }
 
 typedef struct error_case {

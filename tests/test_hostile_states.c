@@ -15,6 +15,7 @@
 #include "host.h"
 #include "kinematics.h"
 #include "model.h"
+#include "sim_support.h"
 #include "test_support.h"
 #include "usrsub/solver_abi.h"
 
@@ -31,7 +32,7 @@ static int all_finite(const double *v, int n)
 }
 
 static void *library;
-static hx_model *model;
+static host_model host;
 
 static void set_up(void)
 {
@@ -48,11 +49,7 @@ static void set_up(void)
              "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\" inertia_zz=\"1\"/>\n"
              "<Reference_Marker id=\"20\" body_id=\"2\"/>\n"
              "</Model></MotionSolve>\n");
-    usrsub_message msg;
-    model = hx_model_read(test_write_file("hostile.xml", text), NULL, &msg);
-    if (model == NULL)
-        fail_msg("%s", msg.text);
-    hx_host_attach(model);
+    host_model_attach(&host, "hostile.xml", text);
     library = dlopen(USRSUB_LIBRARY, RTLD_NOW | RTLD_LOCAL);
     if (library == NULL)
         fail_msg("%s", dlerror());
@@ -61,8 +58,7 @@ static void set_up(void)
 static void tear_down(void)
 {
     dlclose(library);
-    hx_host_attach(NULL);
-    hx_model_free(model);
+    host_model_detach(&host);
 }
 
 static const struct {
@@ -178,7 +174,7 @@ static void gfosub_entries_take_any_host_answer(void **state)
         for (int a = 0; a < NVALUES; ++a)
             for (int slot = 0; slot < 12; ++slot) {
                 /* body 2 placed with one hostile position, angle or velocity */
-                hx_initial_frames(model, frames);
+                hx_initial_frames(host.model, frames);
                 hx_frame *f = &frames[1];
                 if (slot < 3)
                     f->p[slot] = values[a];

@@ -13,6 +13,7 @@
 #include "host.h"
 #include "kinematics.h"
 #include "model.h"
+#include "sim_support.h"
 #include "test_support.h"
 #include "usrsub/solver_abi.h"
 
@@ -29,14 +30,8 @@ static void reload_sets_up_afresh(void **state)
              "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\" inertia_zz=\"1\"/>\n"
              "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"1\"/>\n"
              "</Model></MotionSolve>\n");
-    usrsub_message msg;
-    hx_model *m = hx_model_read(test_write_file("reload.xml", text), NULL, &msg);
-    if (m == NULL)
-        fail_msg("%s", msg.text);
-    hx_frame frames[2];
-    hx_initial_frames(m, frames);
-    hx_host_attach(m);
-    hx_host_set_frames(frames, 0.0);
+    host_model host;
+    host_model_attach(&host, "reload.xml", text);
     hx_host_set_message_stream(NULL);
     double first[3][6];
     for (int load = 0; load < 3; ++load) {
@@ -71,8 +66,7 @@ static void reload_sets_up_afresh(void **state)
     }
     hx_host_reset_messages();
     hx_host_set_message_stream(stderr);
-    hx_host_attach(NULL);
-    hx_model_free(m);
+    host_model_detach(&host);
 }
 
 int main(void)
