@@ -1,11 +1,11 @@
 /*
  * The harness's own cost per right-hand-side evaluation. The evaluation is
  * timed twice in the same rounds: as it is, and with every user entry swapped
- * for a stand-in that only replays the outputs the entry gave at that state.
- * The second is the harness's share (the equations of motion, frames, force
- * application, and the calls themselves); the difference is what the user
- * entries cost inside a real evaluation (their host queries included, as in
- * the cost per call). Taking both round by round lets a slow spell of the
+ * for a stand-in that only replays the outputs the entry gave at that state,
+ * and the stand-ins are timed alone. The second less the third is the
+ * harness's share (the equations of motion, frames, force application, the
+ * calls); the rest of the first is what the user entries cost inside a real
+ * evaluation (their host queries included, as in the cost per call). Taking both round by round lets a slow spell of the
  * machine cancel out.
  */
 #ifndef HX_RHS_COST_H
@@ -16,8 +16,8 @@
 
 typedef struct hx_rhs_cost {
     double rhs_ns;     /* median per evaluation */
-    double harness_ns; /* median per evaluation with stand-in entries */
-    double user_ns;    /* median over rounds of the difference */
+    double harness_ns; /* median over rounds of (stand-in evaluation - stand-ins alone) */
+    double user_ns;    /* median over rounds of (evaluation - harness) */
     int user_calls;    /* entry calls per evaluation */
 } hx_rhs_cost;
 
