@@ -82,15 +82,19 @@ echo "== work-precision of the reference models"
   done
 } > "$out/work_precision.txt"
 
-echo "== cost per call and the harness's share"
+echo "== cost per call and the harness's share (three runs: the machine's speed wanders)"
 {
-  echo "### bench_coupler.xml";  "$h" bench "$ex/bench_coupler.xml" --repeats 41
-  echo "### bench_bushing.xml";  "$h" bench "$ex/bench_bushing.xml" --repeats 41
-  echo "### bench_limits.xml";   "$h" bench "$ex/bench_limits.xml" --repeats 41 \
-      --compare vector:1,vector:2 --compare field:3,field:4 --compare field:3,field:7 \
-      --compare field:8,field:9
-  echo "### flex_joint_rig.xml"; "$h" bench "$ex/flex_joint_rig.xml" --repeats 41
-  echo "### powertrain.xml";     "$h" bench "$ex/powertrain.xml" --repeats 41
+  for run in 1 2 3; do
+    echo "######## run $run"
+    echo "### bench_coupler.xml";  "$h" bench "$ex/bench_coupler.xml" --repeats 41
+    echo "### bench_bushing.xml";  "$h" bench "$ex/bench_bushing.xml" --repeats 41
+    echo "### bench_limits.xml";   "$h" bench "$ex/bench_limits.xml" --repeats 41 \
+        --compare vector:1,vector:2 --compare field:3,field:4 --compare field:3,field:7 \
+        --compare field:8,field:9
+    echo "### flex_joint_rig.xml"; "$h" bench "$ex/flex_joint_rig.xml" --repeats 41
+    echo "### powertrain.xml";     "$h" bench "$ex/powertrain.xml" --repeats 41
+  done
+  echo "######## stability"
   echo "### stiff_mount.xml";    "$h" bench "$ex/stiff_mount.xml" --repeats 5
   echo "### flex_revolute.xml";  "$h" bench "$ex/flex_revolute.xml" --repeats 5
   echo "### revolute_pendulum.xml"; "$h" bench "$ex/revolute_pendulum.xml" --repeats 5
