@@ -27,6 +27,12 @@ static int compare_doubles(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+double hx_median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, compare_doubles);
+    return v[n / 2];
+}
+
 /* ---- the timed bodies ------------------------------------------------------------ */
 
 typedef struct coupler_bench {
@@ -262,8 +268,7 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
         costs[k].rounds = entries[k].ns; /* the caller frees them */
         double *sorted = malloc(sizeof(double) * (size_t)repeats);
         memcpy(sorted, entries[k].ns, sizeof(double) * (size_t)repeats);
-        qsort(sorted, (size_t)repeats, sizeof(double), compare_doubles);
-        costs[k].median_ns = sorted[repeats / 2];
+        costs[k].median_ns = hx_median(sorted, repeats);
         costs[k].min_ns = sorted[0];
         costs[k].max_ns = sorted[repeats - 1];
         free(sorted);
@@ -298,8 +303,7 @@ double hx_added_cost(const hx_call_cost *base, const hx_call_cost *other, int re
         return NAN;
     for (int k = 0; k < repeats; ++k)
         d[k] = other->rounds[k] - base->rounds[k];
-    qsort(d, (size_t)repeats, sizeof(double), compare_doubles);
-    const double median = d[repeats / 2];
+    const double median = hx_median(d, repeats);
     free(d);
     return median;
 }

@@ -37,6 +37,10 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
                                hx_timed_body *extra, int nextra);
 
 void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count);
+
+/* The median of n timings (sorts v in place; v[0] and v[n-1] are then the
+ * extremes). */
+double hx_median(double *v, int n);
 void hx_call_costs_free(hx_call_cost *costs, int count);
 
 /* Median over rounds of other's cost minus base's in the same round: a slow

@@ -330,9 +330,7 @@ static int apply_elements(hx_dynamics *d, double t, double *power)
         }
         if (check_stop(d, b, t) != 0)
             return -1;
-        /* x - x is NaN for NaN and for an infinity, 0 otherwise */
-        if (!((out[0] - out[0]) + (out[1] - out[1]) + (out[2] - out[2]) + (out[3] - out[3]) +
-                  (out[4] - out[4]) + (out[5] - out[5]) == 0.0))
+        if (!all_finite(out, 6))
             return fail_run(d, "%s %d returned a non-finite force at t = %g", b->element, b->id, t);
         double *F = d->element_load + 6 * k, *T = F + 3;
         if (d->world_aligned[k]) {

@@ -366,8 +366,8 @@ static const hx_frame *marker_world(const hx_model *m, const hx_frame *bodies, i
     const int index = hx_model_marker(m, id);
     if (index < 0)
         return NULL;
-    if (bodies == marker_cache_frames && m == host_model && marker_watched[index])
-        return &marker_cache[index];
+    if (m == host_model)
+        return hx_host_marker_frame(bodies, index, scratch);
     hx_marker_frame(m, bodies, index, scratch);
     return scratch;
 }

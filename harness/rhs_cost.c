@@ -190,18 +190,6 @@ static void run_standins(void *ctx, long calls)
     b->sink += sink;
 }
 
-static int compare_doubles(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, compare_doubles);
-    return v[n / 2];
-}
-
 int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
                         int *ncosts, hx_rhs_cost *out, usrsub_message *msg)
 {
@@ -230,9 +218,9 @@ int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int cap
             harness[r] = replay[r] - alone_ns[r];
             user[r] = real[r] - harness[r];
         }
-        out->rhs_ns = median(real, repeats);
-        out->harness_ns = median(harness, repeats);
-        out->user_ns = median(user, repeats);
+        out->rhs_ns = hx_median(real, repeats);
+        out->harness_ns = hx_median(harness, repeats);
+        out->user_ns = hx_median(user, repeats);
     }
     free(y);
     free(ydot);

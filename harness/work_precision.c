@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "call_cost.h"
 #include "linear_reference.h"
 #include "plot.h"
 #include "simulation.h"
@@ -125,12 +126,6 @@ static int simulate(hx_dynamics *d, hx_method method, double setting, double t_e
     return hx_simulate(d, &so, NULL, result);
 }
 
-static int compare_doubles(const void *a, const void *b)
-{
-    const double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 static void measure_point(hx_dynamics *d, const reference_grid *g, const hx_wp_options *o,
                           hx_method method, double setting, hx_wp_point *p)
 {
@@ -152,8 +147,7 @@ static void measure_point(hx_dynamics *d, const reference_grid *g, const hx_wp_o
         seconds[k] = result.seconds;
     }
     const int timed = result.status == HX_INTEGRATION_OK ? repeats : 1;
-    qsort(seconds, (size_t)timed, sizeof(double), compare_doubles);
-    p->seconds = seconds[timed / 2];
+    p->seconds = hx_median(seconds, timed);
 }
 
 /* ---- the reference ----------------------------------------------------------------------- */

@@ -1,6 +1,7 @@
 /* Helpers of the simulating tests (sim_support.h). */
 #include "sim_support.h"
 
+#include <dlfcn.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -190,6 +191,14 @@ void host_model_detach(host_model *h)
     free(h->frames);
     h->model = NULL;
     h->frames = NULL;
+}
+
+void *load_library(void)
+{
+    void *library = dlopen(USRSUB_LIBRARY, RTLD_NOW | RTLD_LOCAL);
+    if (library == NULL)
+        fail_msg("%s", dlerror());
+    return library;
 }
 
 void expect_one_setup_error(const char *model_path, const char *const needles[3])

@@ -60,6 +60,9 @@ typedef struct host_model {
 } host_model;
 void host_model_attach(host_model *h, const char *name, const char *xml);
 void host_model_detach(host_model *h);
+/* dlopen of the library being tested, as a solver loads it; fails the test
+ * when it cannot. */
+void *load_library(void);
 
 /* A model with one faulty element: its session does not open, and the host
  * got exactly one error, holding every needle. */

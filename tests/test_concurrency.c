@@ -89,9 +89,7 @@ static void *work(void *arg)
 
 static void *load(entries *en)
 {
-    void *lib = dlopen(USRSUB_LIBRARY, RTLD_NOW | RTLD_LOCAL);
-    if (lib == NULL)
-        fail_msg("%s", dlerror());
+    void *lib = load_library();
     en->coupler[0] = (usrsub_coupler_fn *)dlsym(lib, "COUSUB");
     en->coupler[1] = (usrsub_coupler_fn *)dlsym(lib, "COUXX");
     en->coupler[2] = (usrsub_coupler_fn *)dlsym(lib, "COUXX2");

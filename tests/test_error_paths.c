@@ -79,9 +79,7 @@ static void set_up(void)
              "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"1\"/>\n"
              "</Model></MotionSolve>\n", strings());
     host_model_attach(&host, "host.xml", text);
-    library = dlopen(USRSUB_LIBRARY, RTLD_NOW | RTLD_LOCAL);
-    if (library == NULL)
-        fail_msg("%s", dlerror());
+    library = load_library();
 }
 
 static void tear_down(void)

@@ -50,9 +50,7 @@ static void set_up(void)
              "<Reference_Marker id=\"20\" body_id=\"2\"/>\n"
              "</Model></MotionSolve>\n");
     host_model_attach(&host, "hostile.xml", text);
-    library = dlopen(USRSUB_LIBRARY, RTLD_NOW | RTLD_LOCAL);
-    if (library == NULL)
-        fail_msg("%s", dlerror());
+    library = load_library();
 }
 
 static void tear_down(void)

@@ -36,9 +36,7 @@ static void reload_sets_up_afresh(void **state)
     double first[3][6];
     for (int load = 0; load < 3; ++load) {
         hx_host_reset_messages();
-        void *lib = dlopen(USRSUB_LIBRARY, RTLD_NOW | RTLD_LOCAL);
-        if (lib == NULL)
-            fail_msg("%s", dlerror());
+        void *lib = load_library();
         usrsub_gfosub_fn *gfosub = (usrsub_gfosub_fn *)dlsym(lib, "GFOSUB");
         usrsub_fiesub_fn *fiesub = (usrsub_fiesub_fn *)dlsym(lib, "FIESUB");
         usrsub_coupler_fn *cousub = (usrsub_coupler_fn *)dlsym(lib, "COUSUB");

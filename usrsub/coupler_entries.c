@@ -3,12 +3,11 @@
  * element (element cache), then a call is a few flops per term.
  */
 #include <math.h>
-#include <stdint.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "element_cache.h"
 #include "entry_report.h"
+#include "finite.h"
 #include "host.h"
 #include "usrsub/coupler.h"
 #include "usrsub/solver_abi.h"
@@ -127,13 +126,7 @@ static void coupler_entry(coupler_output what, const int *id, const double *par,
      * diagonal (the rest written as exact zeros): its diagonal is what can overflow. */
     const int count = output_count(what, n);
     const int checked = what == COUPLER_PHI ? 1 : n, stride = what == COUPLER_HESSIAN ? n + 1 : 1;
-    uint64_t carry = 0; /* an all-ones exponent plus one carries into the sign bit */
-    for (int k = 0; k < checked; ++k) {
-        uint64_t bits;
-        memcpy(&bits, &out[k * stride], sizeof bits);
-        carry |= (bits & 0x7ff0000000000000u) + 0x0010000000000000u;
-    }
-    if (carry >> 63) {
+    if (!all_finite_strided(out, checked, stride)) {
         zero(out, count);
         entry_report_error(routine_names[what], *id, "result", "the output at disp (%g %g %g) is"
                            " not finite (a displacement out of any sensible range); the output"

@@ -5,31 +5,16 @@
  * deformation and evaluate.
  */
 #include <math.h>
-#include <stdint.h>
 #include <string.h>
 
 #include "element_cache.h"
 #include "entry_report.h"
+#include "finite.h"
 #include "force_model.h"
 #include "usrsub/solver_abi.h"
 
 static int gfosub_interface = ELEMENT_GFOSUB;
 static int fiesub_interface = ELEMENT_FIESUB;
-
-/* No NaN or Inf among v: on the bits, since a chain of floating-point tests
- * over 72 partials cost more than the limits it guards. An all-ones exponent
- * plus one carries into the sign bit. */
-static int all_finite(const double *v, int n)
-{
-    const uint64_t exponent = 0x7ff0000000000000u, one = 0x0010000000000000u;
-    uint64_t carry = 0;
-    for (int k = 0; k < n; ++k) {
-        uint64_t bits;
-        memcpy(&bits, &v[k], sizeof bits);
-        carry |= (bits & exponent) + one;
-    }
-    return (carry >> 63) == 0;
-}
 
 static int arguments_ok(const char *routine, const int *id, const double *par, const int *npar)
 {
