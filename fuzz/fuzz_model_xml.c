@@ -6,13 +6,13 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "model.h"
+#include "model/model.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    usrsub_message msg;
+    hx_message msg;
     hx_model *m = hx_model_parse((const char *)data, size, "/tmp/fuzz.xml", NULL, &msg);
     if (m != NULL)
         hx_model_free(m);

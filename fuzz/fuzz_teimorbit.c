@@ -8,10 +8,10 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#include "usrsub/bushing.h"
-#include "usrsub/flex_joint.h"
-#include "usrsub/mount_limits.h"
-#include "usrsub/teimorbit.h"
+#include "usrsub/readers/bushing_reader.h"
+#include "usrsub/readers/flex_joint_reader.h"
+#include "usrsub/readers/mount_limits_reader.h"
+#include "usrsub/readers/teimorbit.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -24,8 +24,8 @@ static void remove_scratch(void)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    usrsub_message msg, notice;
-    int has_notice;
+    usrsub_message msg;
+    usrsub_read_report report = {0};
     usrsub_teim_file *f;
     if (usrsub_teim_parse((const char *)data, size, "fuzz", &f, &msg) == 0)
         usrsub_teim_free(f);
@@ -41,13 +41,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fclose(out);
     static const double mm_n_kg_s_rad[5] = {1e-3, 1.0, 1.0, 1.0, 1.0};
     usrsub_bushing *b;
-    if (usrsub_bushing_read(path, mm_n_kg_s_rad, &b, &notice, &has_notice, &msg) == 0)
+    if (usrsub_bushing_read(path, mm_n_kg_s_rad, &b, &report, &msg) == 0)
         usrsub_bushing_free(b);
     usrsub_mount_limits *l;
-    if (usrsub_mount_limits_read(path, NULL, &l, &notice, &has_notice, &msg) == 0)
+    if (usrsub_mount_limits_read(path, NULL, &l, &report, &msg) == 0)
         usrsub_mount_limits_free(l);
     usrsub_flex_joint *j;
-    if (usrsub_flex_joint_read(path, mm_n_kg_s_rad, &j, &notice, &has_notice, &msg) == 0)
+    if (usrsub_flex_joint_read(path, mm_n_kg_s_rad, &j, &report, &msg) == 0)
         usrsub_flex_joint_free(j);
     return 0;
 }

@@ -14,17 +14,19 @@
 #include <string.h>
 
 #include "element_cache.h"
-#include "../harness/host.h" /* the harness host (usrsub/host.h is the library adapter) */
-#include "kinematics.h"
-#include "model.h"
+#include "host/call.h" /* the harness as host (entries/host.h is the library's adapter) */
+#include "model/model.h"
 #include "property_cache.h"
+#include "state/state.h"
 #include "usrsub/solver_abi.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 
 static hx_model *model;
-static hx_frame frames[2];
+static hx_state state;
+static hx_messages messages;
+static hx_call call;
 
 int LLVMFuzzerInitialize(int *argc, char ***argv)
 {
@@ -43,16 +45,17 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
         " v_ic_x=\"3\" w_ic_z=\"0.5\"/>\n"
         "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"1.5\" pos_y=\"-0.5\"/>\n"
         "</Model></MotionSolve>\n";
-    usrsub_message msg;
+    hx_message msg;
     model = hx_model_parse(text, sizeof text - 1, "/tmp/fuzz_host.xml", NULL, &msg);
     if (model == NULL) {
         fprintf(stderr, "fuzz_user_lists: %s\n", msg.text);
         abort();
     }
-    hx_initial_frames(model, frames);
-    hx_host_attach(model);
-    hx_host_set_frames(frames, 0.0);
-    hx_host_set_message_stream(NULL);
+    if (hx_state_init(&state, model) != 0)
+        abort();
+    hx_messages_init(&messages, NULL);
+    hx_call_init(&call, "fuzzed element", 0, "entry", model, &state, &messages, 0, NULL);
+    hx_host_bind(&call);
     return 0;
 }
 

@@ -2,7 +2,7 @@
 #ifndef BUSHING_SUPPORT_H
 #define BUSHING_SUPPORT_H
 
-#include "usrsub/bushing.h"
+#include "usrsub/core/bushing.h"
 
 /* All directions inactive, neutral preload/offset/scale, EPSILON 1e-9. */
 void bushing_init(usrsub_bushing *b, int coupling);

@@ -5,10 +5,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
-#include "commands.h"
-#include "host.h"
-#include "kinematics.h"
+#include "cmd/commands.h"
+#include "state/measures.h"
 #include "test_support.h"
 
 static const char *model_path(const char *model)
@@ -46,8 +46,8 @@ void sim_run(sim *s, const char *model, hx_method method, double h, double t_end
              double output_interval)
 {
     memset(s, 0, sizeof *s);
-    usrsub_message msg;
-    if (hx_session_open(&s->session, model_path(model), &msg) != 0)
+    hx_message msg;
+    if (hx_session_open(&s->session, model_path(model), stderr, &msg) != 0)
         fail_msg("%s", msg.text);
     if (hx_dynamics_init(&s->dynamics, &s->session, &msg) != 0)
         fail_msg("%s", msg.text);
@@ -173,24 +173,24 @@ void csv_read(const char *path, csv_table *t)
 
 void host_model_attach(host_model *h, const char *name, const char *xml)
 {
-    usrsub_message msg;
+    hx_message msg;
     h->model = hx_model_read(test_write_file(name, xml), NULL, &msg);
     if (h->model == NULL)
         fail_msg("%s", msg.text);
-    h->frames = calloc((size_t)h->model->nbodies, sizeof *h->frames);
-    assert_non_null(h->frames);
-    hx_initial_frames(h->model, h->frames);
-    hx_host_attach(h->model);
-    hx_host_set_frames(h->frames, 0.0);
+    if (hx_state_init(&h->state, h->model) != 0)
+        fail_msg("out of memory");
+    hx_messages_init(&h->messages, stderr);
+    hx_call_init(&h->call, "test element", 0, "entry", h->model, &h->state, &h->messages, 0, NULL);
+    hx_host_bind(&h->call);
 }
 
 void host_model_detach(host_model *h)
 {
-    hx_host_attach(NULL);
+    hx_host_unbind();
+    hx_messages_destroy(&h->messages);
+    hx_state_free(&h->state);
     hx_model_free(h->model);
-    free(h->frames);
     h->model = NULL;
-    h->frames = NULL;
 }
 
 void *load_library(void)
@@ -203,19 +203,30 @@ void *load_library(void)
 
 void expect_one_setup_error(const char *model_path, const char *const needles[3])
 {
-    hx_host_set_message_stream(NULL);
-    hx_host_reset_messages();
-    hx_session s;
-    usrsub_message msg;
+    /* a session's parts by hand, so that its messages can be counted */
+    hx_message msg;
+    hx_model *m = hx_model_read(model_path, NULL, &msg);
+    if (m == NULL)
+        fail_msg("%s", msg.text);
+    hx_state state;
+    hx_messages messages;
+    hx_bindings bindings;
+    char start[4096];
+    assert_non_null(getcwd(start, sizeof start));
+    assert_int_equal(chdir(m->dir), 0); /* relative property files, as a session sees them */
+    assert_int_equal(hx_state_init(&state, m), 0);
+    hx_messages_init(&messages, NULL);
+    if (hx_bind(m, &messages, &bindings, &msg) != 0)
+        fail_msg("%s", msg.text);
     /* the dependency pass reports it and stops the run */
-    if (hx_session_open(&s, model_path, &msg) == 0) {
-        hx_session_close(&s);
-        fail_msg("%s opened, though one of its elements is faulty", model_path);
-    }
-    assert_int_equal(hx_host_error_count(), 1);
-    assert_contains(hx_host_last_error(), needles[0], needles[1], needles[2]);
-    hx_host_reset_messages();
-    hx_host_set_message_stream(stderr);
+    assert_int_equal(hx_dependency_passes(&bindings, &state), -1);
+    assert_int_equal(messages.errors, 1);
+    assert_contains(messages.last_error, needles[0], needles[1], needles[2]);
+    hx_bindings_free(&bindings);
+    hx_messages_destroy(&messages);
+    hx_state_free(&state);
+    hx_model_free(m);
+    assert_int_equal(chdir(start), 0);
 }
 
 int csv_column(const char *path, const char *name)

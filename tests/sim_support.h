@@ -2,7 +2,7 @@
 #ifndef SIM_SUPPORT_H
 #define SIM_SUPPORT_H
 
-#include "simulation.h"
+#include "sim/simulation.h"
 
 typedef struct trajectory {
     int n;          /* state size */
@@ -51,12 +51,14 @@ int sim_run_csv(const char *model, const char *csv, const char *const *args);
     "<Force_Field id=\"" #id "\" i_marker_id=\"20\" j_marker_id=\"10\" usrsub_param_string=\"USER" \
     list "\" usrsub_fnc_name=\"" fnc "\" usrsub_dll_name=\"" USRSUB_LIBRARY "\"/>\n"
 
-/* A model from XML text (written to the temporary folder as name) attached
- * to the harness host, its bodies at their initial frames: entries of a
- * library loaded directly then query it, as they would a solver. */
+/* A model from XML text (written to the temporary folder as name) bound to
+ * the harness host, its bodies at their initial frames: entries of a library
+ * loaded directly then query it, as they would a solver's. */
 typedef struct host_model {
     hx_model *model;
-    hx_frame *frames;
+    hx_state state;
+    hx_messages messages; /* printed on stderr unless the test silences them */
+    hx_call call;         /* bound: entries called directly answer from state */
 } host_model;
 void host_model_attach(host_model *h, const char *name, const char *xml);
 void host_model_detach(host_model *h);

@@ -12,13 +12,13 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "commands.h"
-#include "linear_reference.h"
-#include "long_run.h"
+#include "cmd/commands.h"
+#include "tools/bench/linear_reference.h"
+#include "tools/bench/long_run.h"
 #include "sim_support.h"
-#include "stability.h"
+#include "tools/bench/stability.h"
 #include "test_support.h"
-#include "work_precision.h"
+#include "tools/bench/work_precision.h"
 
 static void stability_limits_of_each_method(void **state)
 {
@@ -43,11 +43,11 @@ static void stability_limits_of_each_method(void **state)
 
 static void open_dynamics(sim *s, const char *model, double *y)
 {
-    usrsub_message msg;
+    hx_message msg;
     memset(s, 0, sizeof *s);
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", EXAMPLES_DIR, model);
-    if (hx_session_open(&s->session, path, &msg) != 0 ||
+    if (hx_session_open(&s->session, path, stderr, &msg) != 0 ||
         hx_dynamics_init(&s->dynamics, &s->session, &msg) != 0)
         fail_msg("%s", msg.text);
     assert_int_equal(hx_dynamics_initial_state(&s->dynamics, y), 0);
@@ -60,7 +60,7 @@ static void fastest_mode_of_the_damped_oscillator(void **state)
     double y[64];
     open_dynamics(&s, "damped_oscillator.xml", y);
     hx_stability st;
-    usrsub_message msg;
+    hx_message msg;
     assert_int_equal(hx_estimate_stability(&s.dynamics, 0.0, y, &st, &msg), 0);
     /* z: k = 500 N/mm, c = 0.6 N s/mm on 2 kg: omega = 500 rad/s, -c/2m = -150 1/s */
     assert_close(st.magnitude, 500.0, 1e-6, 0);
@@ -95,7 +95,7 @@ static void a_step_beyond_the_limit_is_reported_unstable(void **state)
     double y[64];
     open_dynamics(&s, "stiff_mount.xml", y);
     hx_stability st;
-    usrsub_message msg;
+    hx_message msg;
     assert_int_equal(hx_estimate_stability(&s.dynamics, 0.0, y, &st, &msg), 0);
     sim_close(&s);
     assert_close(st.magnitude, sqrt(1e9), 1e-4, 0); /* 1e6 N/mm on 1 kg */
@@ -113,9 +113,9 @@ static void a_step_beyond_the_limit_is_reported_unstable(void **state)
     snprintf(path, sizeof path, "%s/stiff_mount.xml", EXAMPLES_DIR);
     char step[32];
     snprintf(step, sizeof step, "%g", 1.5 * limit);
-    char *argv[] = {"run", path, "--end", "0.01", "--step", step, "--quiet", NULL};
+    char *argv[] = {"run", path, "--end", "0.01", "--integrator", "rk4", "--step", step, "--quiet", NULL};
     fflush(stdout);
-    assert_int_equal(hx_command_run(7, argv), 1);
+    assert_int_equal(hx_command_run(9, argv), 1);
 }
 
 static void closed_forms_match_tight_adaptive_runs(void **state)
@@ -128,7 +128,7 @@ static void closed_forms_match_tight_adaptive_runs(void **state)
         double y0[64], yref[64], y[64];
         open_dynamics(&s, models[k], y0);
         hx_linear_reference ref;
-        usrsub_message msg;
+        hx_message msg;
         if (hx_linear_reference_build(&s.dynamics, &ref, &msg) != 0)
             fail_msg("%s: %s", models[k], msg.text);
         if (k == 2) /* (2000 + 6000 / 4) theta'' = -2e5 theta, in kg mm^2 and N mm */
@@ -160,7 +160,7 @@ static void closed_forms_match_tight_adaptive_runs(void **state)
     double y[64];
     open_dynamics(&s, "powertrain.xml", y);
     hx_linear_reference ref;
-    usrsub_message msg;
+    hx_message msg;
     assert_int_equal(hx_linear_reference_build(&s.dynamics, &ref, &msg), -1);
     assert_contains(msg.text, "closed form only");
     sim_close(&s);
@@ -179,8 +179,8 @@ static void work_precision_orders_and_dopri5_against_rk4(void **state)
 {
     (void)state;
     hx_session s;
-    usrsub_message msg;
-    if (hx_session_open(&s, EXAMPLES_DIR "/damped_oscillator.xml", &msg) != 0)
+    hx_message msg;
+    if (hx_session_open(&s, EXAMPLES_DIR "/damped_oscillator.xml", stderr, &msg) != 0)
         fail_msg("%s", msg.text);
     hx_wp_options o = {0.1, 1, 0};
     static hx_wp_result r;
@@ -212,8 +212,8 @@ static void long_runs_keep_energy_and_constraints(void **state)
 {
     (void)state;
     hx_session s;
-    usrsub_message msg;
-    if (hx_session_open(&s, EXAMPLES_DIR "/normal_modes.xml", &msg) != 0)
+    hx_message msg;
+    if (hx_session_open(&s, EXAMPLES_DIR "/normal_modes.xml", stderr, &msg) != 0)
         fail_msg("%s", msg.text);
     hx_long_run se, rk;
     const double step = 0.2 / 412.3; /* a fifth over the fastest mode */
@@ -229,7 +229,7 @@ static void long_runs_keep_energy_and_constraints(void **state)
     assert_true(rk.error_last > 3.0 * rk.error_first);
     assert_true(rk.drift < 0.0);
     /* a coupled model keeps its constraint */
-    if (hx_session_open(&s, EXAMPLES_DIR "/geared_pendulums.xml", &msg) != 0)
+    if (hx_session_open(&s, EXAMPLES_DIR "/geared_pendulums.xml", stderr, &msg) != 0)
         fail_msg("%s", msg.text);
     hx_long_run coupled;
     assert_int_equal(hx_long_run_measure(&s, HX_METHOD_RK4, 100000, 1e-3, &coupled, &msg), 0);

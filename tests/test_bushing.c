@@ -1,5 +1,5 @@
 /*
- * The bushing law (INTERFACE.md 3.2, 3.3): each characteristic against hand
+ * The bushing law (docs/interface.md §3.2, §3.3): each characteristic against hand
  * values, the cubic's fit conditions, the coupled force's signs on every
  * half-axis with rates, spherical isotropy, the seed's coupling numbers,
  * behaviour at r = 0, preload/offset/scale, and the 6x6 partials against

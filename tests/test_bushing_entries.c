@@ -9,10 +9,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "binding.h"
-#include "element_probe.h"
-#include "host.h"
-#include "session.h"
+#include "host/binding.h"
+#include "host/session.h"
+#include "state/measures.h"
 #include "sim_support.h"
 #include "test_support.h"
 
@@ -73,8 +72,8 @@ static const char *model(const char *name, int units, const char *elements)
 
 static void open_session(hx_session *s, const char *path)
 {
-    usrsub_message msg;
-    if (hx_session_open(s, path, &msg) != 0)
+    hx_message msg;
+    if (hx_session_open(s, path, stderr, &msg) != 0)
         fail_msg("%s", msg.text);
 }
 
@@ -87,11 +86,11 @@ static void default_named_and_field_forms_agree(void **state)
                            FIE(3, "(1, 101)", "FIESUB") FIE(4, "(101)", "ABM_BUSHING_FIELD")));
     double F[4][6];
     for (int k = 0; k < 2; ++k)
-        hx_call_gfosub(&s.bindings.items[k], 0.0, 0, 0, F[k], NULL);
+        hx_call_gfosub(&s.bindings.items[k], &s.state, 0, 0, F[k], NULL);
     double disp[6], velo[6], dfd[36], dfv[36];
-    hx_element_state(&s, 2, disp, velo);
+    hx_force_deformation(&s.state, 2, disp, velo);
     for (int k = 2; k < 4; ++k)
-        hx_call_fiesub(&s.bindings.items[k], 0.0, disp, velo, 0, 0, F[k], dfd, dfv, NULL);
+        hx_call_fiesub(&s.bindings.items[k], &s.state, disp, velo, 0, 0, F[k], dfd, dfv, NULL);
     for (int k = 1; k < 4; ++k)
         for (int i = 0; i < 6; ++i)
             assert_close(F[k][i], F[0][i], 1e-12, 1e-12);
@@ -106,13 +105,13 @@ static int deps_of(hx_session *s, int k, char *text, size_t size)
     hx_binding *b = &s->bindings.items[k];
     hx_call call;
     double out[6];
-    hx_binding_call_init(b, &call, 1);
-    hx_call_gfosub(b, 0.0, 0, 1, out, &call);
+    hx_binding_call_init(b, &call, 0, &s->state, 1);
+    hx_call_gfosub(b, &s->state, 0, 1, out, &call);
     const int dependency_calls = call.host_calls;
-    hx_binding_call_init(b, &call, 0);
-    hx_call_gfosub(b, 0.0, 0, 0, out, &call);
+    hx_binding_call_init(b, &call, 0, &s->state, 0);
+    hx_call_gfosub(b, &s->state, 0, 0, out, &call);
     assert_int_equal(call.host_calls, dependency_calls); /* the same queries in both passes */
-    assert_int_equal(call.undeclared, 0);
+    assert_int_equal(call.undeclared.count, 0);
     hx_dependencies_text(&b->deps, text, size);
     return call.host_calls;
 }
@@ -135,10 +134,10 @@ static void queries_only_what_the_bushing_needs(void **state)
     assert_string_equal(text, "RDISP(20,10)");
     /* inactive directions return 0 */
     double out[6];
-    hx_call_gfosub(&s.bindings.items[1], 0.0, 0, 0, out, NULL);
+    hx_call_gfosub(&s.bindings.items[1], &s.state, 0, 0, out, NULL);
     for (int i = 3; i < 6; ++i)
         assert_close(out[i], 0.0, 0, 0);
-    hx_call_gfosub(&s.bindings.items[3], 0.0, 0, 0, out, NULL);
+    hx_call_gfosub(&s.bindings.items[3], &s.state, 0, 0, out, NULL);
     for (int i = 0; i < 5; ++i)
         assert_close(out[i], 0.0, 0, 0);
     assert_true(fabs(out[5]) > 0.0);
@@ -148,18 +147,18 @@ static void queries_only_what_the_bushing_needs(void **state)
 static void a_file_is_parsed_once(void **state)
 {
     (void)state;
-    hx_host_reset_messages();
-    hx_host_set_message_stream(NULL);
     /* without model units each parse says "values used as they are" once */
     hx_session s;
-    open_session(&s, model("once.xml", 0,
-                           GFO(1, "(1, 20, 10, 102)", "GFOSUB") GFO(2, "(1, 20, 10, 102)", "GFOSUB")
-                           FIE(3, "(1, 102)", "FIESUB") GFO(4, "(1, 20, 10, 103)", "GFOSUB")));
-    assert_int_equal(hx_host_notice_count(), 2); /* translation.gbs once, damped_translation.gbs once */
-    assert_contains(hx_host_last_notice(), "declares no units", "damped_translation.gbs");
-    assert_int_equal(hx_host_error_count(), 0);
+    hx_message msg;
+    if (hx_session_open(&s, model("once.xml", 0,
+                                  GFO(1, "(1, 20, 10, 102)", "GFOSUB") GFO(2, "(1, 20, 10, 102)", "GFOSUB")
+                                  FIE(3, "(1, 102)", "FIESUB") GFO(4, "(1, 20, 10, 103)", "GFOSUB")),
+                        NULL, &msg) != 0)
+        fail_msg("%s", msg.text);
+    assert_int_equal(s.messages.notices, 2); /* translation.gbs once, damped_translation.gbs once */
+    assert_contains(s.messages.last_notice, "declares no units", "damped_translation.gbs");
+    assert_int_equal(s.messages.errors, 0);
     hx_session_close(&s);
-    hx_host_set_message_stream(stderr);
 }
 
 static void input_errors_are_reported_once(void **state)
@@ -188,37 +187,30 @@ static void input_errors_are_reported_once(void **state)
 static void the_host_refusing_a_query(void **state)
 {
     (void)state;
-    hx_host_set_message_stream(NULL);
-    hx_host_reset_messages();
     hx_session s;
-    usrsub_message msg;
-    assert_int_equal(hx_session_open(&s, model("refused.xml", 1, GFO(5, "(1, 999, 10, 101)", "GFOSUB")), &msg), -1);
-    assert_contains(hx_host_last_error(), "GFOSUB element 5", "could not answer DISP(999,10", "output is zero");
-    hx_host_reset_messages();
-    hx_host_set_message_stream(stderr);
+    hx_message msg;
+    assert_int_equal(hx_session_open(&s, model("refused.xml", 1, GFO(5, "(1, 999, 10, 101)", "GFOSUB")), NULL, &msg), -1);
+    assert_contains(msg.text, "GFOSUB element 5", "could not answer DISP(999,10", "output is zero");
 }
 
 static void non_finite_field_state(void **state)
 {
     (void)state;
-    hx_host_set_message_stream(NULL);
     hx_session s;
     open_session(&s, model("nan.xml", 1, FIE(3, "(1, 101)", "FIESUB")));
-    hx_host_reset_messages();
+    s.messages.stream = NULL;
     double disp[6] = {0, NAN, 0, 0, 0, 0}, velo[6] = {0}, F[6], dfd[36], dfv[36];
     for (int i = 0; i < 36; ++i)
         dfd[i] = dfv[i] = 1.0;
-    hx_call_fiesub(&s.bindings.items[0], 0.0, disp, velo, 0, 0, F, dfd, dfv, NULL);
-    assert_contains(hx_host_last_error(), "FIESUB element 3", "disp", "not finite");
+    hx_call_fiesub(&s.bindings.items[0], &s.state, disp, velo, 0, 0, F, dfd, dfv, NULL);
+    assert_contains(s.messages.last_error, "FIESUB element 3", "disp", "not finite");
     for (int i = 0; i < 6; ++i)
         assert_close(F[i], 0.0, 0, 0);
     for (int i = 0; i < 36; ++i) {
         assert_close(dfd[i], 0.0, 0, 0);
         assert_close(dfv[i], 0.0, 0, 0);
     }
-    hx_host_reset_messages();
     hx_session_close(&s);
-    hx_host_set_message_stream(stderr);
 }
 
 int main(void)

@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "test_support.h"
-#include "usrsub/bushing.h"
+#include "usrsub/readers/bushing_reader.h"
 
 static const double model_mm_n_kg_s[5] = {1e-3, 1.0, 1.0, 1.0, 1.0};
 
@@ -35,7 +35,11 @@ static int read_gbs(const char *name, const char *const *pieces, const double *u
     char text[8192] = "";
     for (const char *const *p = pieces; *p != NULL; ++p)
         strncat(text, *p, sizeof text - strlen(text) - 1);
-    return usrsub_bushing_read(test_write_file(name, text), units, b, notice, has_notice, msg);
+    usrsub_read_report report = {0};
+    const int status = usrsub_bushing_read(test_write_file(name, text), units, b, &report, msg);
+    *notice = report.notice;
+    *has_notice = report.has_notice;
+    return status;
 }
 
 #define GBS(name, units, ...)                                                                 \
@@ -184,7 +188,8 @@ static void errors_name_what_is_wrong(void **state)
     assert_contains(msg.text, "[CUBIC_STIFFNESS_FX]", "EN < RN < O < RP < EP");
     assert_int_equal(GBS("twice.gbs", model_mm_n_kg_s, h, "[GLOBAL]\n[GLOBAL]\n"), -1);
     assert_contains(msg.text, "line 13", "[GLOBAL] appears again (first at line 12)");
-    assert_int_equal(usrsub_bushing_read("/nonexistent/x.gbs", NULL, &b, &notice, &has_notice, &msg), -1);
+    usrsub_read_report report = {0};
+    assert_int_equal(usrsub_bushing_read("/nonexistent/x.gbs", NULL, &b, &report, &msg), -1);
     assert_contains(msg.text, "cannot open '/nonexistent/x.gbs'");
 }
 

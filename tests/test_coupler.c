@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "test_support.h"
-#include "usrsub/coupler.h"
+#include "usrsub/readers/coupler_reader.h"
 
 /* Reference_String 100 -> the table file written by a test, 200 -> a missing file. */
 static char table_path[512];

@@ -8,20 +8,19 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "host.h"
-#include "loader.h"
-#include "model.h"
+#include "host/loader.h"
+#include "sim_support.h"
 #include "test_support.h"
-#include "usrsub/spline.h"
+#include "usrsub/core/spline.h"
 
 static hx_loader loader;
 static usrsub_coupler_fn *cousub, *couxx, *couxx2;
-static hx_model *model;
+static host_model host;
 
 static int load(void **state)
 {
     (void)state;
-    usrsub_message msg;
+    hx_message msg;
     void *lib = hx_loader_open(&loader, USRSUB_LIBRARY, &msg);
     assert_non_null(lib);
     cousub = (usrsub_coupler_fn *)hx_loader_symbol(lib, USRSUB_LIBRARY, "COUSUB", &msg);
@@ -32,18 +31,15 @@ static int load(void **state)
     snprintf(xml, sizeof xml,
              "<MotionSolve><Model><Body_Ground id=\"1\"/>"
              "<Reference_String id=\"100\" string=\"%s\"/></Model></MotionSolve>", table);
-    model = hx_model_read(test_write_file("strings.xml", xml), NULL, &msg);
-    assert_non_null(model);
-    hx_host_attach(model);
-    hx_host_set_message_stream(NULL);
+    host_model_attach(&host, "strings.xml", xml);
+    host.messages.stream = NULL;
     return 0;
 }
 
 static int unload(void **state)
 {
     (void)state;
-    hx_host_attach(NULL);
-    hx_model_free(model);
+    host_model_detach(&host);
     hx_loader_close_all(&loader);
     return 0;
 }
@@ -61,7 +57,7 @@ static void call(usrsub_coupler_fn *fn, int id, const double *par, int npar, con
 static void values_and_full_hessian(void **state)
 {
     (void)state;
-    hx_host_reset_messages();
+    hx_messages_reset(&host.messages);
     /* 2 M1 + (1 + M2^2) + table(M3), the table (Reference_String 100) at M3 = 0.5 */
     const double par[] = {1, 2, 2, 2, 1, 0, 1, 4, 100, 1.0};
     const double disp[3] = {0.25, -3.0, 0.5};
@@ -69,15 +65,15 @@ static void values_and_full_hessian(void **state)
     for (int k = 0; k < 9; ++k)
         H[k] = 99.0;
     hx_call record;
-    hx_call_init(&record, "coupler", 3, 1, NULL);
-    hx_host_begin_call(&record);
+    hx_call_init(&record, "coupler", 3, "COUSUB", host.model, &host.state, &host.messages, 1, NULL);
+    hx_host_bind(&record);
     call(cousub, 3, par, 10, disp, 3, 1, &phi); /* dependency pass: no queries */
-    hx_host_end_call();
+    hx_host_bind(&host.call);
     assert_int_equal(record.host_calls, 0);
     call(cousub, 3, par, 10, disp, 3, 0, &phi);
     call(couxx, 3, par, 10, disp, 3, 0, g);
     call(couxx2, 3, par, 10, disp, 3, 0, H);
-    assert_int_equal(hx_host_error_count(), 0);
+    assert_int_equal(host.messages.errors, 0);
     assert_close(g[0], 2.0, 0, 0);
     assert_close(g[1], -6.0, 0, 1e-14);
     /* full 3x3, column-major: diagonal G'' and zeros elsewhere */
@@ -103,19 +99,19 @@ static void values_and_full_hessian(void **state)
 static void input_error_reported_once_with_zeros(void **state)
 {
     (void)state;
-    hx_host_reset_messages();
+    hx_messages_reset(&host.messages);
     const double bad[] = {1, 1, 2, 9, 1, 1, 1, 1, 1, 1, 1, 1, 1};
     const double disp[2] = {0.1, 0.2};
     double phi = 123.0, g[2] = {5, 5}, H[4] = {5, 5, 5, 5};
     call(cousub, 7, bad, 13, disp, 2, 0, &phi);
-    assert_int_equal(hx_host_error_count(), 1);
-    assert_contains(hx_host_last_error(), "COUSUB element 7", "term 2 (code 2)", "par[3]) is 9",
+    assert_int_equal(host.messages.errors, 1);
+    assert_contains(host.messages.last_error, "COUSUB element 7", "term 2 (code 2)", "par[3]) is 9",
                     "0 to 6");
-    assert_true(hx_host_stop_requested()); /* reported with "STOP" */
+    assert_true(host.messages.stop); /* reported with "STOP" */
     assert_close(phi, 0.0, 0, 0);
     call(couxx, 7, bad, 13, disp, 2, 0, g);
     call(couxx2, 7, bad, 13, disp, 2, 0, H);
-    assert_int_equal(hx_host_error_count(), 1); /* once per element, not per call */
+    assert_int_equal(host.messages.errors, 1); /* once per element, not per call */
     for (int k = 0; k < 2; ++k)
         assert_close(g[k], 0.0, 0, 0);
     for (int k = 0; k < 4; ++k)
@@ -124,50 +120,50 @@ static void input_error_reported_once_with_zeros(void **state)
     const double good[] = {1, 1, 1, 3};
     call(cousub, 7, good, 4, disp, 2, 0, &phi);
     assert_close(phi, 0.1 + 0.6, 0, 1e-15);
-    assert_int_equal(hx_host_error_count(), 1);
-    hx_host_reset_messages();
+    assert_int_equal(host.messages.errors, 1);
+    hx_messages_reset(&host.messages);
 }
 
 static void non_finite_displacement_gives_zeros_and_an_error(void **state)
 {
     (void)state;
-    hx_host_reset_messages();
+    hx_messages_reset(&host.messages);
     const double par[] = {1, 1, 1, 3};
     const double disp[2] = {0.1, NAN};
     double phi = 1.0, g[2] = {1, 1};
     call(cousub, 8, par, 4, disp, 2, 0, &phi);
     assert_close(phi, 0.0, 0, 0);
-    assert_contains(hx_host_last_error(), "COUSUB element 8", "disp[1]", "must be finite");
+    assert_contains(host.messages.last_error, "COUSUB element 8", "disp[1]", "must be finite");
     call(couxx, 8, par, 4, disp, 2, 0, g);
     assert_close(g[0], 0.0, 0, 0);
     assert_close(g[1], 0.0, 0, 0);
-    assert_int_equal(hx_host_error_count(), 2);
+    assert_int_equal(host.messages.errors, 2);
     const double inf[2] = {INFINITY, 0.0};
     double H[4] = {1, 1, 1, 1};
     call(couxx2, 8, par, 4, inf, 2, 0, H);
     for (int k = 0; k < 4; ++k)
         assert_close(H[k], 0.0, 0, 0);
-    assert_contains(hx_host_last_error(), "COUXX2 element 8", "disp[0]");
-    hx_host_reset_messages();
+    assert_contains(host.messages.last_error, "COUXX2 element 8", "disp[0]");
+    hx_messages_reset(&host.messages);
 }
 
 static void ndisp_outside_two_to_three(void **state)
 {
     (void)state;
-    hx_host_reset_messages();
+    hx_messages_reset(&host.messages);
     const double par[] = {1, 1, 1, 1, 1, 1, 1, 1};
     const double disp[3] = {1, 2, 3};
     double phi = 5.0;
     call(cousub, 9, par, 8, disp, 4, 0, &phi);
     assert_close(phi, 0.0, 0, 0);
-    assert_contains(hx_host_last_error(), "COUSUB element 9", "ndisp is 4");
-    hx_host_reset_messages();
+    assert_contains(host.messages.last_error, "COUSUB element 9", "ndisp is 4");
+    hx_messages_reset(&host.messages);
 }
 
 static void missing_arguments_do_not_crash(void **state)
 {
     (void)state;
-    hx_host_reset_messages();
+    hx_messages_reset(&host.messages);
     double phi = 2.0, t = 0.0, disp[2] = {0, 0};
     int nd = 2, np = 2, flag = 0, id = 4;
     double par[2] = {1, 1};
@@ -178,9 +174,9 @@ static void missing_arguments_do_not_crash(void **state)
     cousub(&id, &t, par, &np, disp, &nd, &flag, NULL);
     int negative = -3;
     cousub(&id, &t, par, &negative, disp, &nd, &flag, &phi);
-    assert_int_equal(hx_host_error_count(), 4);
-    assert_contains(hx_host_last_error(), "element 4", "negative npar");
-    hx_host_reset_messages();
+    assert_int_equal(host.messages.errors, 4);
+    assert_contains(host.messages.last_error, "element 4", "negative npar");
+    hx_messages_reset(&host.messages);
 }
 
 int main(void)

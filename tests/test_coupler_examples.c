@@ -11,8 +11,8 @@
 
 #include "sim_support.h"
 #include "test_support.h"
-#include "usrsub/spline.h"
-#include "usrsub/table_file.h"
+#include "usrsub/core/spline.h"
+#include "usrsub/readers/table_file.h"
 
 #define UCF 1000.0 /* mm, kg, s, N */
 

@@ -10,10 +10,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "binding.h"
-#include "element_probe.h"
-#include "host.h"
-#include "session.h"
+#include "host/binding.h"
+#include "host/session.h"
+#include "state/measures.h"
 #include "sim_support.h"
 #include "test_support.h"
 
@@ -62,21 +61,19 @@ static const char *model(const char *name, const char *elements)
 
 static void open_session(hx_session *s, const char *path)
 {
-    usrsub_message msg;
-    if (hx_session_open(s, path, &msg) != 0)
+    hx_message msg;
+    if (hx_session_open(s, path, stderr, &msg) != 0)
         fail_msg("%s", msg.text);
 }
 
 static void each_column_of_k_and_d(void **state)
 {
     (void)state;
-    hx_host_set_message_stream(NULL);
-    hx_host_reset_messages();
     hx_session s;
     open_session(&s, model("columns.xml", FIE(1, "(3, 701)", "FIESUB") FIE(2, "(701)", "FLEX_JOINT_FIELD")));
     /* the matrix is not symmetric: one warning, though two elements name the file */
-    assert_int_equal(hx_host_notice_count(), 1);
-    assert_contains(hx_host_last_notice(), "numbered.gfj", "not symmetric", "not conservative");
+    assert_int_equal(s.messages.notices, 1);
+    assert_contains(s.messages.last_notice, "numbered.gfj", "not symmetric", "not conservative");
     for (int e = 0; e < 2; ++e)
         for (int j = 0; j < 12; ++j) {
             double disp[6] = {0}, velo[6] = {0}, F[6], dfd[36], dfv[36];
@@ -84,7 +81,7 @@ static void each_column_of_k_and_d(void **state)
                 disp[j] = 1.0;
             else
                 velo[j - 6] = 1.0;
-            hx_call_fiesub(&s.bindings.items[e], 0.0, disp, velo, 0, 0, F, dfd, dfv, NULL);
+            hx_call_fiesub(&s.bindings.items[e], &s.state, disp, velo, 0, 0, F, dfd, dfv, NULL);
             for (int r = 0; r < 6; ++r) {
                 /* a unit deformation gives minus that column, plus the preload */
                 const double column = j < 6 ? k_entry(r, j) : 0.5 * k_entry(r, j - 6) + 100.0;
@@ -95,19 +92,16 @@ static void each_column_of_k_and_d(void **state)
                 }
             }
         }
-    assert_int_equal(hx_host_error_count(), 0);
+    assert_int_equal(s.messages.errors, 0);
     hx_session_close(&s);
-    hx_host_reset_messages();
-    hx_host_set_message_stream(stderr);
 }
 
 static void gfosub_and_fiesub_forms_agree_and_query_what_they_need(void **state)
 {
     (void)state;
-    hx_host_reset_messages();
     hx_session s;
     open_session(&s, EXAMPLES_DIR "/flex_joint_rig.xml");
-    assert_int_equal(hx_host_notice_count(), 0); /* the example matrices are sound */
+    assert_int_equal(s.messages.notices, 0); /* the example matrices are sound */
     const hx_model *m = s.model;
     for (int pair = 0; pair < 2; ++pair) {
         hx_binding *field = NULL, *vector = NULL;
@@ -122,9 +116,9 @@ static void gfosub_and_fiesub_forms_agree_and_query_what_they_need(void **state)
         assert_non_null(field);
         assert_non_null(vector);
         double disp[6], velo[6], F[6], G[6], dfd[36], dfv[36];
-        hx_element_state(&s, field->index, disp, velo);
-        hx_call_fiesub(field, 0.0, disp, velo, 0, 0, F, dfd, dfv, NULL);
-        hx_call_gfosub(vector, 0.0, 0, 0, G, NULL);
+        hx_force_deformation(&s.state, field->index, disp, velo);
+        hx_call_fiesub(field, &s.state, disp, velo, 0, 0, F, dfd, dfv, NULL);
+        hx_call_gfosub(vector, &s.state, 0, 0, G, NULL);
         for (int i = 0; i < 6; ++i)
             assert_close(G[i], F[i], 1e-12, 1e-9);
         char text[256];

@@ -1,5 +1,5 @@
 /*
- * The flexible joint (INTERFACE.md 3.5): F = P - K d - D ddot against a plain
+ * The flexible joint (docs/interface.md §3.5): F = P - K d - D ddot against a plain
  * matrix product for full and block-sparse matrices, the partials -K and -D,
  * the blocks and queries a joint needs, the scaled eigenvalue behind the
  * positive semi-definite warning, and the .gfj reader: units per block, the
@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "test_support.h"
-#include "usrsub/flex_joint.h"
+#include "usrsub/readers/flex_joint_reader.h"
 
 /* Deterministic entries in [-1, 1]. */
 static double jitter(unsigned *seed)
@@ -132,8 +132,12 @@ static const char *numbered_matrix(const char *block, double base)
 static int read_gfj(const char *name, const char *text, usrsub_flex_joint **j,
                     usrsub_message *notice, int *has_notice, usrsub_message *msg)
 {
-    return usrsub_flex_joint_read(test_write_file(name, text), model_mm_n_kg_s, j, notice,
-                                  has_notice, msg);
+    usrsub_read_report report = {0};
+    const int status = usrsub_flex_joint_read(test_write_file(name, text), model_mm_n_kg_s, j,
+                                              &report, msg);
+    *notice = report.notice;
+    *has_notice = report.has_notice;
+    return status;
 }
 
 static void reader_converts_each_block_by_its_units(void **state)
@@ -264,8 +268,9 @@ static void reader_errors_name_the_line(void **state)
     assert_int_equal(read_gfj("kind.gfj", "[HEADER]\nFILE_TYPE = 'gbi'\n", &j, &notice,
                               &has_notice, &msg), -1);
     assert_contains(msg.text, "kind.gfj", "line 2", "FILE_TYPE is 'gbi', expected 'gfj'");
-    assert_int_equal(usrsub_flex_joint_read("/nonexistent/joint.gfj", model_mm_n_kg_s, &j, &notice,
-                                            &has_notice, &msg), -1);
+    usrsub_read_report report = {0};
+    assert_int_equal(usrsub_flex_joint_read("/nonexistent/joint.gfj", model_mm_n_kg_s, &j,
+                                            &report, &msg), -1);
     assert_contains(msg.text, "/nonexistent/joint.gfj");
 }
 

@@ -10,9 +10,8 @@
 #include <string.h>
 #include <sys/wait.h>
 
-#include "binding.h"
-#include "host.h"
-#include "session.h"
+#include "host/binding.h"
+#include "host/session.h"
 #include "test_support.h"
 
 #define DEG (M_PI / 180.0)
@@ -54,13 +53,13 @@ static const char *probe_model(int probe, int i_marker, int j_marker)
 static void evaluate_probe(int probe, int i, int j, double result[6], hx_call *call)
 {
     hx_session s;
-    usrsub_message msg;
-    if (hx_session_open(&s, probe_model(probe, i, j), &msg) != 0)
+    hx_message msg;
+    if (hx_session_open(&s, probe_model(probe, i, j), stderr, &msg) != 0)
         fail_msg("%s", msg.text);
     hx_binding *b = &s.bindings.items[0];
-    hx_call_gfosub(b, 0.0, 0, 1, result, NULL); /* dependency pass */
-    hx_binding_call_init(b, call, 0);
-    hx_call_gfosub(b, 0.0, 0, 0, result, call);
+    hx_call_gfosub(b, &s.state, 0, 1, result, NULL); /* dependency pass */
+    hx_binding_call_init(b, call, 0, &s.state, 0);
+    hx_call_gfosub(b, &s.state, 0, 0, result, call);
     hx_session_close(&s);
 }
 
@@ -78,7 +77,7 @@ static void sysfnc_answers_from_the_model(void **state)
     assert_close(r[4], 0.0, 0, 1e-14);
     assert_close(r[5], -60 * DEG, 0, 1e-14);
     assert_int_equal(call.host_calls, 6);
-    assert_int_equal(call.undeclared, 0);
+    assert_int_equal(call.undeclared.count, 0);
     evaluate_probe(2, 30, 10, r, &call);
     assert_close(r[3], 40 * DEG, 0, 1e-14); /* AX of a 40 deg turn about x */
 }
@@ -114,11 +113,11 @@ static void dependency_pass_records_queries(void **state)
 {
     (void)state;
     hx_session s;
-    usrsub_message msg;
-    assert_int_equal(hx_session_open(&s, probe_model(1, 21, 11), &msg), 0);
+    hx_message msg;
+    assert_int_equal(hx_session_open(&s, probe_model(1, 21, 11), stderr, &msg), 0);
     hx_binding *b = &s.bindings.items[0];
     double r[6] = {1, 1, 1, 1, 1, 1};
-    hx_call_gfosub(b, 0.0, 0, 1, r, NULL);
+    hx_call_gfosub(b, &s.state, 0, 1, r, NULL);
     assert_int_equal(b->deps.count, 1);
     char text[128];
     assert_string_equal(hx_query_text(&b->deps.query[0], text, sizeof text), "DISP(21,11,11)");
@@ -130,14 +129,13 @@ static void dependency_pass_records_queries(void **state)
 static void undeclared_read_is_noted(void **state)
 {
     (void)state;
-    hx_host_set_message_stream(NULL);
     double r[6];
     hx_call call;
     evaluate_probe(4, 21, 11, r, &call);
-    assert_int_equal(call.undeclared, 1);
+    assert_int_equal(call.undeclared.count, 1);
     char text[64];
-    assert_string_equal(hx_query_text(&call.first_undeclared, text, sizeof text), "DISP(21,11,11)");
-    hx_host_set_message_stream(stderr);
+    assert_string_equal(hx_query_text(&call.undeclared.query[0], text, sizeof text),
+                        "DISP(21,11,11)");
 }
 
 static void strings_and_units(void **state)
@@ -157,17 +155,11 @@ static void strings_and_units(void **state)
 static void stop_is_recorded(void **state)
 {
     (void)state;
-    hx_host_set_message_stream(NULL);
-    hx_host_reset_messages();
     /* the session runs the dependency pass, where the probe stops the run */
     hx_session s;
-    usrsub_message msg;
-    assert_int_equal(hx_session_open(&s, probe_model(99, 21, 11), &msg), -1);
+    hx_message msg;
+    assert_int_equal(hx_session_open(&s, probe_model(99, 21, 11), NULL, &msg), -1);
     assert_contains(msg.text, "dependency pass", "probe asked to stop");
-    assert_true(hx_host_stop_requested());
-    assert_string_equal(hx_host_stop_message(), "probe asked to stop");
-    hx_host_reset_messages();
-    hx_host_set_message_stream(stderr);
 }
 
 static void stop_ends_a_harness_run(void **state)

@@ -12,9 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "host.h"
-#include "kinematics.h"
-#include "model.h"
+#include "model/model.h"
+#include "state/state.h"
 #include "sim_support.h"
 #include "test_support.h"
 #include "usrsub/solver_abi.h"
@@ -50,6 +49,7 @@ static void set_up(void)
              "<Reference_Marker id=\"20\" body_id=\"2\"/>\n"
              "</Model></MotionSolve>\n");
     host_model_attach(&host, "hostile.xml", text);
+    host.messages.stream = NULL;
     library = load_library();
 }
 
@@ -71,7 +71,6 @@ static const struct {
 static void couplers_take_any_disp(void **state)
 {
     (void)state;
-    hx_host_set_message_stream(NULL);
     set_up();
     usrsub_coupler_fn *fn[3] = {(usrsub_coupler_fn *)dlsym(library, "COUSUB"),
                                 (usrsub_coupler_fn *)dlsym(library, "COUXX"),
@@ -96,8 +95,7 @@ static void couplers_take_any_disp(void **state)
                 }
     }
     tear_down();
-    hx_host_reset_messages();
-    hx_host_set_message_stream(stderr);
+    hx_messages_reset(&host.messages);
     printf("couplers: %d calls, every output finite\n", calls);
 }
 
@@ -117,7 +115,6 @@ static const struct {
 static void field_entries_take_any_state(void **state)
 {
     (void)state;
-    hx_host_set_message_stream(NULL);
     set_up();
     long calls = 0;
     for (size_t e = 0; e < sizeof fields / sizeof fields[0]; ++e) {
@@ -145,15 +142,13 @@ static void field_entries_take_any_state(void **state)
                 }
     }
     tear_down();
-    hx_host_reset_messages();
-    hx_host_set_message_stream(stderr);
+    hx_messages_reset(&host.messages);
     printf("field entries: %ld calls, every output finite\n", calls);
 }
 
 static void gfosub_entries_take_any_host_answer(void **state)
 {
     (void)state;
-    hx_host_set_message_stream(NULL);
     set_up();
     static const struct {
         const char *entry;
@@ -164,7 +159,8 @@ static void gfosub_entries_take_any_host_answer(void **state)
         {"MOUNT_LIMITS", 3, {20, 10, 402}}, {"FLEX_JOINT", 3, {20, 10, 403}},
         {"ABM_BUSHING", 3, {20, 10, 405}},
     };
-    hx_frame frames[2];
+    hx_state initial;
+    assert_int_equal(hx_state_clone(&initial, &host.state), 0);
     long calls = 0;
     for (size_t e = 0; e < sizeof forces / sizeof forces[0]; ++e) {
         usrsub_gfosub_fn *fn = (usrsub_gfosub_fn *)dlsym(library, forces[e].entry);
@@ -172,8 +168,8 @@ static void gfosub_entries_take_any_host_answer(void **state)
         for (int a = 0; a < NVALUES; ++a)
             for (int slot = 0; slot < 12; ++slot) {
                 /* body 2 placed with one hostile position, angle or velocity */
-                hx_initial_frames(host.model, frames);
-                hx_frame *f = &frames[1];
+                hx_state_copy(&host.state, &initial);
+                hx_frame *f = &host.state.bodies[1];
                 if (slot < 3)
                     f->p[slot] = values[a];
                 else if (slot < 6)
@@ -183,7 +179,7 @@ static void gfosub_entries_take_any_host_answer(void **state)
                     f->v[slot - 6] = values[a];
                 else
                     f->w[slot - 9] = values[a];
-                hx_host_set_frames(frames, 0.0);
+                hx_state_update(&host.state);
                 double par[6], out[6];
                 memcpy(par, forces[e].par, sizeof par);
                 int id = 700 + (int)e, npar = forces[e].npar, dflag = 0, iflag = 0;
@@ -195,10 +191,10 @@ static void gfosub_entries_take_any_host_answer(void **state)
                 ++calls;
             }
     }
-    hx_host_set_frames(NULL, 0.0);
+    hx_state_copy(&host.state, &initial);
+    hx_state_free(&initial);
     tear_down();
-    hx_host_reset_messages();
-    hx_host_set_message_stream(stderr);
+    hx_messages_reset(&host.messages);
     printf("GFOSUB-form entries: %ld calls, every output finite\n", calls);
 }
 

@@ -10,14 +10,13 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "binding.h"
-#include "element_probe.h"
-#include "host.h"
-#include "session.h"
+#include "host/binding.h"
+#include "host/session.h"
+#include "state/measures.h"
 #include "sim_support.h"
 #include "test_support.h"
 
-/* The contract's formula written out (INTERFACE.md 3.4), STEP as 3x^2 - 2x^3. */
+/* The contract's formula written out (docs/interface.md §3.4), STEP as 3x^2 - 2x^3. */
 static double contract_limit(double K, double E, double C, double D, double L, double q,
                              double qdot)
 {
@@ -111,22 +110,21 @@ static const char *model(const char *name, const char *elements)
 
 static void open_session(hx_session *s, const char *path)
 {
-    usrsub_message msg;
-    if (hx_session_open(s, path, &msg) != 0)
+    hx_message msg;
+    if (hx_session_open(s, path, stderr, &msg) != 0)
         fail_msg("%s", msg.text);
 }
 
 static void field(hx_session *s, int k, const double d[6], const double v[6], double F[6],
                   double dfd[36], double dfv[36])
 {
-    hx_call_fiesub(&s->bindings.items[k], 0.0, d, v, 0, 0, F, dfd, dfv, NULL);
-    assert_int_equal(hx_host_error_count(), 0);
+    hx_call_fiesub(&s->bindings.items[k], &s->state, d, v, 0, 0, F, dfd, dfv, NULL);
+    assert_int_equal(s->messages.errors, 0);
 }
 
 static void limits_in_a_bushing_see_the_raw_deformation(void **state)
 {
     (void)state;
-    hx_host_reset_messages();
     hx_session s;
     open_session(&s, model("raw.xml", FIE(1, "(1, 101)", "FIESUB") FIE(2, "(1, 101, 102)", "FIESUB")
                                       FIE(3, "(2, 102)", "FIESUB") FIE(4, "(102)", "MOUNT_LIMITS_FIELD")));
@@ -167,7 +165,6 @@ static void limits_in_a_bushing_see_the_raw_deformation(void **state)
 static void inactive_limits_change_nothing(void **state)
 {
     (void)state;
-    hx_host_reset_messages();
     hx_session s;
     open_session(&s, model("inactive.xml",
                            FIE(1, "(1, 101)", "FIESUB") FIE(5, "(1, 101, 103)", "FIESUB")
@@ -180,8 +177,8 @@ static void inactive_limits_change_nothing(void **state)
     assert_memory_equal(dfd1, dfd5, sizeof dfd1);
     assert_memory_equal(dfv1, dfv5, sizeof dfv1);
     double G8[6], G9[6];
-    hx_call_gfosub(&s.bindings.items[2], 0.0, 0, 0, G8, NULL);
-    hx_call_gfosub(&s.bindings.items[3], 0.0, 0, 0, G9, NULL);
+    hx_call_gfosub(&s.bindings.items[2], &s.state, 0, 0, G8, NULL);
+    hx_call_gfosub(&s.bindings.items[3], &s.state, 0, 0, G9, NULL);
     assert_memory_equal(G8, G9, sizeof G8);
     char t8[256], t9[256];
     hx_dependencies_text(&s.bindings.items[2].deps, t8, sizeof t8);
@@ -193,15 +190,14 @@ static void inactive_limits_change_nothing(void **state)
 static void gfosub_and_fiesub_forms_agree_and_query_what_they_need(void **state)
 {
     (void)state;
-    hx_host_reset_messages();
     hx_session s;
     open_session(&s, model("forms.xml",
                            GFO(6, "(2, 20, 10, 102)", "GFOSUB") GFO(7, "(20, 10, 102)", "MOUNT_LIMITS")
                            FIE(3, "(2, 102)", "FIESUB") GFO(10, "(2, 20, 10, 104)", "GFOSUB")));
     double G6[6], G7[6], F3[6], dfd[36], dfv[36], disp[6], velo[6];
-    hx_call_gfosub(&s.bindings.items[0], 0.0, 0, 0, G6, NULL);
-    hx_call_gfosub(&s.bindings.items[1], 0.0, 0, 0, G7, NULL);
-    hx_element_state(&s, 2, disp, velo);
+    hx_call_gfosub(&s.bindings.items[0], &s.state, 0, 0, G6, NULL);
+    hx_call_gfosub(&s.bindings.items[1], &s.state, 0, 0, G7, NULL);
+    hx_force_deformation(&s.state, 2, disp, velo);
     field(&s, 2, disp, velo, F3, dfd, dfv);
     assert_true(disp[0] > 1.0 && disp[3] > 0.05); /* the model's state is past two gaps */
     for (int i = 0; i < 6; ++i) {
@@ -215,7 +211,7 @@ static void gfosub_and_fiesub_forms_agree_and_query_what_they_need(void **state)
     hx_dependencies_text(&s.bindings.items[3].deps, text, sizeof text);
     assert_string_equal(text, "TDISP(20,10,10)"); /* undamped translational limits */
     double G10[6];
-    hx_call_gfosub(&s.bindings.items[3], 0.0, 0, 0, G10, NULL);
+    hx_call_gfosub(&s.bindings.items[3], &s.state, 0, 0, G10, NULL);
     assert_close(G10[0], -100.0 * (disp[0] - 1.0) * (disp[0] - 1.0), 1e-12, 0);
     hx_session_close(&s);
 }

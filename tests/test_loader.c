@@ -7,8 +7,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "binding.h"
-#include "loader.h"
+#include "host/binding.h"
+#include "host/loader.h"
 #include "test_support.h"
 
 /* A folder in the temporary folder holding a copy (link) of hostprobe. */
@@ -37,7 +37,7 @@ static void absolute_path(void **state)
 {
     (void)state;
     char path[PATH_MAX], real[PATH_MAX];
-    usrsub_message msg;
+    hx_message msg;
     assert_int_equal(hx_loader_resolve(HOSTPROBE_LIBRARY, "/nonexistent", path, sizeof path, &msg), 0);
     assert_string_equal(path, realpath(HOSTPROBE_LIBRARY, real));
 }
@@ -47,7 +47,7 @@ static void relative_to_the_model_folder(void **state)
     (void)state;
     const char *dir = folder_with_probe("models", "libmodelprobe.so");
     char path[PATH_MAX];
-    usrsub_message msg;
+    hx_message msg;
     assert_int_equal(hx_loader_resolve("libmodelprobe.so", dir, path, sizeof path, &msg), 0);
     assert_contains(path, "hostprobe");
 }
@@ -60,7 +60,7 @@ static void then_ms_userdll_dir(void **state)
     snprintf(dirs, sizeof dirs, "/nonexistent;%s", dir);
     setenv("MS_USERDLL_DIR", dirs, 1);
     char path[PATH_MAX];
-    usrsub_message msg;
+    hx_message msg;
     assert_int_equal(hx_loader_resolve("libdirprobe.so", "/tmp", path, sizeof path, &msg), 0);
     assert_contains(path, "hostprobe");
 }
@@ -69,7 +69,7 @@ static void ms_usersubdll_when_the_name_is_missing(void **state)
 {
     (void)state;
     char path[PATH_MAX];
-    usrsub_message msg;
+    hx_message msg;
     assert_int_equal(hx_loader_resolve(NULL, "/tmp", path, sizeof path, &msg), -1);
     assert_contains(msg.text, "MS_USERSUBDLL is not set");
     setenv("MS_USERSUBDLL", HOSTPROBE_LIBRARY, 1);
@@ -81,7 +81,7 @@ static void missing_library_is_named(void **state)
 {
     (void)state;
     char path[PATH_MAX];
-    usrsub_message msg;
+    hx_message msg;
     setenv("MS_USERDLL_DIR", "/opt/nowhere", 1);
     assert_int_equal(hx_loader_resolve("libnothere.so", "/tmp/models", path, sizeof path, &msg), -1);
     assert_contains(msg.text, "libnothere.so", "not found", "/tmp/models", "/opt/nowhere");
@@ -103,13 +103,16 @@ static void missing_function_is_named_with_its_library(void **state)
              "<Force_Field id=\"5\" i_marker_id=\"20\" j_marker_id=\"10\"\n"
              "  usrsub_param_string=\"USER(1)\" usrsub_dll_name=\"%s\"/>\n"
              "</Model></MotionSolve>\n", HOSTPROBE_LIBRARY);
-    usrsub_message msg;
+    hx_message msg;
     hx_model *m = hx_model_read(test_write_file("nofiesub.xml", model), NULL, &msg);
     assert_non_null(m);
     hx_bindings b;
-    assert_int_equal(hx_bind(m, &b, &msg), -1);
+    hx_messages messages;
+    hx_messages_init(&messages, NULL);
+    assert_int_equal(hx_bind(m, &messages, &b, &msg), -1);
     assert_contains(msg.text, "Force_Field 5", "'FIESUB'", "hostprobe", "nofiesub.xml:6");
     hx_bindings_free(&b);
+    hx_messages_destroy(&messages);
     hx_model_free(m);
 }
 
@@ -117,7 +120,7 @@ static void a_library_is_opened_once(void **state)
 {
     (void)state;
     hx_loader loader = {0};
-    usrsub_message msg;
+    hx_message msg;
     char path[PATH_MAX];
     assert_int_equal(hx_loader_resolve(HOSTPROBE_LIBRARY, NULL, path, sizeof path, &msg), 0);
     void *a = hx_loader_open(&loader, path, &msg);

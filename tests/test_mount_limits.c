@@ -1,5 +1,5 @@
 /*
- * Mount limits (INTERFACE.md 3.4): hand values on both sides for E = 1, 1.5,
+ * Mount limits (docs/interface.md §3.4): hand values on both sides for E = 1, 1.5,
  * 2 and 3, zero in the gap, signs, the STEP ramp of the damping, no sticking,
  * D = 0, continuity at the gap, partials against finite differences (one-sided
  * at the switch points), the six directions kept apart, and the .gbi reader
@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "test_support.h"
-#include "usrsub/mount_limits.h"
+#include "usrsub/readers/mount_limits_reader.h"
 
 static const double exponents[4] = {1.0, 1.5, 2.0, 3.0};
 
@@ -263,10 +263,8 @@ static const char *gbi_text(const char *length, const char *force, const char *a
 static int read_gbi(const char *name, const char *text, usrsub_mount_limits **m,
                     usrsub_message *msg)
 {
-    usrsub_message notice;
-    int has_notice = 0;
-    return usrsub_mount_limits_read(test_write_file(name, text), model_mm_n_kg_s, m, &notice,
-                                    &has_notice, msg);
+    usrsub_read_report report = {0};
+    return usrsub_mount_limits_read(test_write_file(name, text), model_mm_n_kg_s, m, &report, msg);
 }
 
 static void reader_takes_any_separator_and_converts_units(void **state)
@@ -378,10 +376,9 @@ static void reader_errors_name_the_line(void **state)
     assert_int_equal(read_gbi("noblock.gbi", "[HEADER]\nFILE_TYPE = 'gbi'\n", &m, &msg), -1);
     assert_contains(msg.text, "noblock.gbi", "no [MOUNT_LIMITS] block");
     /* a file that is not there */
-    usrsub_message notice;
-    int has_notice;
+    usrsub_read_report report = {0};
     assert_int_equal(usrsub_mount_limits_read("/nonexistent/limits.gbi", model_mm_n_kg_s, &m,
-                                              &notice, &has_notice, &msg), -1);
+                                              &report, &msg), -1);
     assert_contains(msg.text, "/nonexistent/limits.gbi");
     /* a unit it does not know */
     assert_int_equal(read_gbi("unit.gbi", gbi_text("parsec", "newton", "radian", NULL, ""), &m,

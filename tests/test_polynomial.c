@@ -1,6 +1,6 @@
 /* Polynomial value and derivatives. */
 #include "test_support.h"
-#include "usrsub/polynomial.h"
+#include "usrsub/core/polynomial.h"
 
 static void hand_values(void **state)
 {

@@ -10,9 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "host.h"
-#include "kinematics.h"
-#include "model.h"
+#include "model/model.h"
+#include "state/state.h"
 #include "sim_support.h"
 #include "test_support.h"
 #include "usrsub/solver_abi.h"
@@ -32,10 +31,10 @@ static void reload_sets_up_afresh(void **state)
              "</Model></MotionSolve>\n");
     host_model host;
     host_model_attach(&host, "reload.xml", text);
-    hx_host_set_message_stream(NULL);
+    host.messages.stream = NULL;
     double first[3][6];
     for (int load = 0; load < 3; ++load) {
-        hx_host_reset_messages();
+        hx_messages_reset(&host.messages);
         void *lib = load_library();
         usrsub_gfosub_fn *gfosub = (usrsub_gfosub_fn *)dlsym(lib, "GFOSUB");
         usrsub_fiesub_fn *fiesub = (usrsub_fiesub_fn *)dlsym(lib, "FIESUB");
@@ -57,13 +56,12 @@ static void reload_sets_up_afresh(void **state)
             memcpy(first[0], out, sizeof out);
         assert_memory_equal(out, first[0], sizeof out); /* the same forces every load */
         /* each load reads both files (one notice each) and reports the bad coupler once */
-        assert_int_equal(hx_host_notice_count(), 2);
-        assert_int_equal(hx_host_error_count(), 1);
-        assert_contains(hx_host_last_error(), "COUSUB element 3");
+        assert_int_equal(host.messages.notices, 2);
+        assert_int_equal(host.messages.errors, 1);
+        assert_contains(host.messages.last_error, "COUSUB element 3");
         assert_int_equal(dlclose(lib), 0);
     }
-    hx_host_reset_messages();
-    hx_host_set_message_stream(stderr);
+    hx_messages_reset(&host.messages);
     host_model_detach(&host);
 }
 

@@ -4,7 +4,7 @@
 #include <stdlib.h>
 
 #include "test_support.h"
-#include "usrsub/spline.h"
+#include "usrsub/core/spline.h"
 
 static usrsub_spline make(int n, const double *x, const double *y)
 {

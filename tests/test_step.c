@@ -2,12 +2,12 @@
 #include <math.h>
 
 #include "test_support.h"
-#include "usrsub/step.h"
+#include "usrsub/core/step.h"
 
 static void step_contract_vector(void **state)
 {
     (void)state;
-    /* INTERFACE.md 3.6: STEP(x, 3,0, 4,1) at 2, 3, 3.5, 4, 5 gives 0, 0, 0.5, 1, 1. */
+    /* docs/interface.md §3.6: STEP(x, 3,0, 4,1) at 2, 3, 3.5, 4, 5 gives 0, 0, 0.5, 1, 1. */
     const double x[] = {2, 3, 3.5, 4, 5}, expected[] = {0, 0, 0.5, 1, 1};
     for (int k = 0; k < 5; ++k)
         assert_close(usrsub_step(x[k], 3, 0, 4, 1).value, expected[k], 0, 1e-15);

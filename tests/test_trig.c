@@ -8,7 +8,7 @@
 #include <stdint.h>
 
 #include "test_support.h"
-#include "usrsub/trig.h"
+#include "usrsub/core/trig.h"
 
 static double ulps(double a, double b)
 {

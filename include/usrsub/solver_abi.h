@@ -1,7 +1,7 @@
 /*
  * The solver ABI: the user-subroutine entries a MotionSolve-style host looks up
  * in the library, and the utilities the library may call back in the host.
- * Our own declarations of the contract in ../shared/INTERFACE.md section 1.
+ * Our own declarations of the contract in docs/interface.md §1.
  *
  * Every subroutine argument is a pointer (Fortran by-reference). The utilities
  * take scalars by value, as the Adams-compatible C utility library does.

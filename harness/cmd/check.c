@@ -1,0 +1,231 @@
+/*
+ * usrsub-harness check: every user element in a child process of its own
+ * (a crash or a hang in the user's code is reported with the element, the
+ * entry, its arguments and the signal, and the other elements are still
+ * checked): one evaluation at the model's initial state, then the checks of
+ * tools/check/checks.h.
+ */
+#include <getopt.h>
+#include <libgen.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "base/clock.h"
+#include "base/finite.h"
+#include "cmd/commands.h"
+#include "cmd/options.h"
+#include "host/session.h"
+#include "state/measures.h"
+#include "tools/check/checks.h"
+
+static void usage(FILE *f)
+{
+    fprintf(f, "usage: usrsub-harness check MODEL.xml [--timeout SECONDS]\n"
+               "\n"
+               "For every user-subroutine element, in a process of its own: its dependency pass\n"
+               "(iflag = 1) and one evaluation at the initial state; analytic partials against\n"
+               "finite differences (COUXX, COUXX2 at points varying each joint on its own; FIESUB's\n"
+               "dfddis and dfdvel); the dependency audit of GFOSUB elements at states and times\n"
+               "over the first second; the history audit (same inputs, same outputs, whatever was\n"
+               "called before); every read outside the declared dependencies. An element that\n"
+               "crashes, or a call that does not return within --timeout seconds (default 10),\n"
+               "is reported with its entry and arguments. Exits 0 when every element passes, 1\n"
+               "when one fails, 3 when one stops the run through c_errmes.\n");
+}
+
+static void format_values(char *text, size_t size, const double *v, int n)
+{
+    size_t used = 0;
+    text[0] = '\0';
+    for (int k = 0; k < n && used < size; ++k)
+        used += (size_t)snprintf(text + used, size - used, k ? " %.6g" : "%.6g", v[k]);
+}
+
+/* One evaluation at the model's initial state: its outputs, finite or not. */
+static int evaluate(hx_session *s, hx_binding *b, char *outputs, size_t size)
+{
+    double out[81] = {0};
+    int nout;
+    if (b->kind == HX_BIND_COUPLER) {
+        const hx_coupler *c = &s->model->couplers[b->index];
+        double disp[3];
+        for (int i = 0; i < c->njoints; ++i)
+            disp[i] = hx_joint_coordinate(&s->state, c->joint[i]);
+        const int n = c->njoints;
+        hx_call_coupler(b, 0, &s->state, disp, n, 0, out, NULL);
+        hx_call_coupler(b, 1, &s->state, disp, n, 0, out + 1, NULL);
+        hx_call_coupler(b, 2, &s->state, disp, n, 0, out + 1 + n, NULL);
+        nout = 1 + n + n * n;
+    } else if (b->kind == HX_BIND_GFOSUB) {
+        hx_call_gfosub(b, &s->state, 0, 0, out, NULL);
+        nout = 6;
+    } else {
+        double disp[6], velo[6], dfd[36], dfv[36];
+        hx_force_deformation(&s->state, b->index, disp, velo);
+        hx_call_fiesub(b, &s->state, disp, velo, 0, 0, out, dfd, dfv, NULL);
+        nout = 6;
+    }
+    format_values(outputs, size, out, nout);
+    return hx_all_finite(out, nout);
+}
+
+/* Everything check does to one element; the number of failures. */
+static int check_element(hx_session *s, hx_binding *b)
+{
+    char deps[512], outputs[1024], lib[512], functions[128];
+    snprintf(lib, sizeof lib, "%s", b->library);
+    snprintf(functions, sizeof functions, b->kind == HX_BIND_COUPLER ? "%s %s %s" : "%s",
+             b->names[0], b->names[1], b->names[2]);
+    printf("%s %d (%s in %s)\n  declared dependencies: %s\n", b->element, b->id, functions,
+           basename(lib), hx_dependencies_text(&b->deps, deps, sizeof deps));
+    const int finite = evaluate(s, b, outputs, sizeof outputs);
+    printf("  outputs at t = 0: %s\n", outputs);
+    if (hx_messages_stopped(&s->messages))
+        return 1;
+    if (!finite) {
+        printf("  %s %d: FAIL: returned a non-finite value\n", b->element, b->id);
+        return 1;
+    }
+    int failures = 0;
+    if (b->kind == HX_BIND_COUPLER)
+        failures += hx_check_coupler(s, b, stdout);
+    else if (b->kind == HX_BIND_FIESUB)
+        failures += hx_check_field_partials(s, b, stdout);
+    else
+        failures += hx_audit_dependencies(s, b, stdout);
+    if (!hx_messages_stopped(&s->messages))
+        failures += hx_audit_history(s, b, stdout);
+    failures += hx_check_queries(b, stdout);
+    return failures;
+}
+
+enum outcome { PASSED, FAILED, STOPPED, CRASHED };
+
+/* The user's call a child was in when it died or hung. */
+static void report_call(const hx_binding *b, const hx_call_log *log, const char *what)
+{
+    char args[512] = "";
+    if (log->nargs > 0) {
+        char values[480];
+        format_values(values, sizeof values, log->args, log->nargs);
+        snprintf(args, sizeof args, ", %s (%s)",
+                 b->kind == HX_BIND_COUPLER ? "disp" : "disp and velo", values);
+    }
+    printf("  %s %d: FAIL: %s in %s (%s) called with iflag = %d, dflag = %d, time = %g%s\n",
+           b->element, b->id, what, log->routine != NULL ? log->routine : b->names[0],
+           b->library, log->iflag, log->dflag, log->time, args);
+}
+
+/* Runs check_element in a child and watches it. */
+static enum outcome isolate(hx_session *s, hx_binding *b, hx_call_log *log, double timeout)
+{
+    memset((void *)log, 0, sizeof *log);
+    b->log = log;
+    fflush(stdout);
+    fflush(stderr);
+    const pid_t child = fork();
+    if (child < 0) { /* no process to spare: check in this one */
+        const int failures = check_element(s, b);
+        b->log = NULL;
+        return hx_messages_stopped(&s->messages) ? STOPPED : failures ? FAILED : PASSED;
+    }
+    if (child == 0) {
+        /* line by line: what was printed before a crash is not lost with it */
+        setvbuf(stdout, NULL, _IOLBF, 0);
+        const int failures = check_element(s, b);
+        fflush(stdout);
+        fflush(stderr);
+        _exit(hx_messages_stopped(&s->messages) ? 3 : failures ? 1 : 0);
+    }
+    unsigned long seen = 0;
+    double since = hx_seconds();
+    int status = 0;
+    for (;;) {
+        const pid_t done = waitpid(child, &status, WNOHANG);
+        if (done == child)
+            break;
+        const unsigned long begun = log->begun;
+        if (begun != seen || log->returned == begun) {
+            seen = begun;
+            since = hx_seconds();
+        } else if (hx_seconds() - since > timeout) {
+            kill(child, SIGKILL);
+            waitpid(child, &status, 0);
+            char what[96];
+            snprintf(what, sizeof what, "did not return within %g s (a hang; killed)", timeout);
+            report_call(b, log, what);
+            b->log = NULL;
+            return CRASHED;
+        }
+        const struct timespec pause = {0, 5000000};
+        nanosleep(&pause, NULL);
+    }
+    b->log = NULL;
+    if (WIFSIGNALED(status)) {
+        char what[96];
+        snprintf(what, sizeof what, "crashed with signal %d (%s)", WTERMSIG(status),
+                 strsignal(WTERMSIG(status)));
+        report_call(b, log, what);
+        return CRASHED;
+    }
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+    return code == 0 ? PASSED : code == 3 ? STOPPED : FAILED;
+}
+
+int hx_command_check(int argc, char **argv)
+{
+    static const struct option options[] = {{"timeout", required_argument, NULL, 't'},
+                                            {"help", no_argument, NULL, 'h'},
+                                            {0, 0, 0, 0}};
+    double timeout = 10.0;
+    int opt;
+    optind = 1;
+    while ((opt = getopt_long(argc, argv, "h", options, NULL)) != -1) {
+        switch (opt) {
+        case 't':
+            if (hx_option_positive("check", "timeout", optarg, &timeout) != 0)
+                return 2;
+            break;
+        case 'h': usage(stdout); return 0;
+        default: usage(stderr); return 2;
+        }
+    }
+    if (optind != argc - 1) {
+        usage(stderr);
+        return 2;
+    }
+    hx_session s;
+    hx_message msg;
+    if (hx_session_open(&s, argv[optind], stderr, &msg) != 0) {
+        fprintf(stderr, "usrsub-harness check: %s\n", msg.text);
+        return 1;
+    }
+    hx_call_log *log = mmap(NULL, sizeof *log, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS,
+                            -1, 0);
+    if (log == MAP_FAILED) {
+        fprintf(stderr, "usrsub-harness check: cannot share memory with the checking processes\n");
+        hx_session_close(&s);
+        return 1;
+    }
+    printf("derivative checks at relative tolerance %s\n", HX_DERIVATIVE_TOLERANCE_TEXT);
+    int counts[4] = {0, 0, 0, 0};
+    for (int k = 0; k < s.bindings.count; ++k) {
+        const enum outcome o = isolate(&s, &s.bindings.items[k], log, timeout);
+        counts[o]++;
+        fflush(stdout);
+    }
+    munmap(log, sizeof *log);
+    printf("check: %d element%s: %d passed, %d failed, %d crashed or hung, %d stopped the run\n",
+           s.bindings.count, s.bindings.count == 1 ? "" : "s", counts[PASSED], counts[FAILED],
+           counts[CRASHED], counts[STOPPED]);
+    hx_session_close(&s);
+    if (counts[STOPPED] > 0)
+        return 3;
+    return counts[FAILED] + counts[CRASHED] > 0 ? 1 : 0;
+}

@@ -1,0 +1,208 @@
+/*
+ * The utilities a user library calls back (include/usrsub/solver_abi.h,
+ * docs/interface.md §1, §5), answered for the call bound to the thread. This
+ * file holds the harness's only global: that binding, which the ABI forces
+ * (the utilities carry no context).
+ */
+#include <stdio.h>
+#include <string.h>
+#include <strings.h>
+
+#include "host/call.h"
+#include "usrsub/solver_abi.h"
+
+static _Thread_local hx_call *bound;
+
+void hx_host_bind(hx_call *c)
+{
+    bound = c;
+}
+
+void hx_host_unbind(void)
+{
+    bound = NULL;
+}
+
+hx_call *hx_host_bound(void)
+{
+    return bound;
+}
+
+static int is_word(const char *text, const char *word)
+{
+    if (text == NULL)
+        return 0;
+    while (*text == ' ')
+        ++text;
+    const size_t n = strlen(word);
+    if (strncasecmp(text, word, n) != 0)
+        return 0;
+    for (text += n; *text == ' '; ++text)
+        ;
+    return *text == '\0';
+}
+
+void c_errmes(int errflg, const char *msg, int id, const char *endflg)
+{
+    if (!errflg)
+        return;
+    const int stop = is_word(endflg, "STOP");
+    if (bound != NULL && bound->messages != NULL)
+        hx_messages_error(bound->messages, id, msg, stop);
+    else
+        fprintf(stderr, "ERRMES [%d]%s (outside any call): %s\n", id, stop ? " STOP" : "",
+                msg != NULL ? msg : "");
+}
+
+void c_usrmes(int msgflg, const char *msg, int id, const char *msgtyp)
+{
+    if (!msgflg)
+        return;
+    if (bound != NULL && bound->messages != NULL)
+        hx_messages_notice(bound->messages, id, msgtyp, msg);
+    else
+        fprintf(stderr, "USRMES:USER [%d] %s (outside any call): %s\n", id,
+                msgtyp != NULL ? msgtyp : "INFO", msg != NULL ? msg : "");
+}
+
+void c_gtstrg(int id, char *string, int *nchars, int *istat)
+{
+    const char *text = bound != NULL && bound->model != NULL ? hx_model_string(bound->model, id)
+                                                             : NULL;
+    if (text == NULL || string == NULL || nchars == NULL) {
+        if (istat != NULL)
+            *istat = -1;
+        return;
+    }
+    const int len = (int)strlen(text);
+    const int capacity = *nchars; /* our convention: nchars carries the capacity in */
+    if (capacity > 0 && len > capacity) {
+        memcpy(string, text, (size_t)capacity);
+        *nchars = capacity;
+        if (istat != NULL)
+            *istat = 1; /* truncated */
+        return;
+    }
+    memcpy(string, text, (size_t)len);
+    if (capacity <= 0 || len < capacity)
+        string[len] = '\0';
+    *nchars = len;
+    if (istat != NULL)
+        *istat = 0;
+}
+
+void c_gtunts(int *exists, double *scales, char *units)
+{
+    (void)units;
+    const hx_model *m = bound != NULL ? bound->model : NULL;
+    const int has = m != NULL && m->has_units;
+    if (exists != NULL)
+        *exists = has;
+    if (has && scales != NULL)
+        memcpy(scales, m->unit_scales, sizeof m->unit_scales);
+}
+
+/* ---- state queries ------------------------------------------------------------------- */
+
+static void report_refused(hx_call *c, const hx_query *q, const char *why)
+{
+    const double t = c->state != NULL ? c->state->time : 0.0;
+    hx_note_query(&c->refused, q, t);
+    const int fresh = c->reported_refused != NULL ? hx_note_query(c->reported_refused, q, t) : 1;
+    if (fresh && c->messages != NULL) {
+        char text[64];
+        hx_messages_host(c->messages, "%s %d (%s) asked %s %s at t = %g, which the host refuses:"
+                         " %s; it answered errflg = 1", c->element, c->id,
+                         c->routine != NULL ? c->routine : "?", q->is_array ? "c_sysary" : "c_sysfnc",
+                         hx_query_text(q, text, sizeof text), t, why);
+    }
+}
+
+static void report_undeclared(hx_call *c, const hx_query *q)
+{
+    const double t = c->state != NULL ? c->state->time : 0.0;
+    hx_note_query(&c->undeclared, q, t);
+    const int fresh =
+        c->reported_undeclared != NULL ? hx_note_query(c->reported_undeclared, q, t) : 1;
+    if (fresh && c->messages != NULL) {
+        char text[64], declared[512];
+        hx_messages_host(c->messages, "%s %d (%s) reads %s at t = %g outside the dependencies it"
+                         " declared in its dependency pass (%s)", c->element, c->id,
+                         c->routine != NULL ? c->routine : "?", hx_query_text(q, text, sizeof text),
+                         t, hx_dependencies_text(c->declared, declared, sizeof declared));
+    }
+}
+
+static int find_declared(const hx_dependencies *d, const hx_query *q)
+{
+    for (int k = 0; k < d->count; ++k)
+        if (hx_query_same(&d->query[k], q))
+            return k;
+    return -1;
+}
+
+/* Common path of c_sysary and c_sysfnc: the number of values, or -1. */
+static int query(const char *fnc, const int *ipar, int nsize, double *values, int is_array)
+{
+    hx_call *c = bound;
+    if (c == NULL)
+        return -1; /* called outside any entry: nothing to answer from */
+    ++c->host_calls;
+    hx_query q;
+    hx_query_make(&q, fnc, ipar, nsize, is_array);
+    if (!c->may_query) {
+        report_refused(c, &q, "this routine may not call c_sysary or c_sysfnc (its state comes"
+                       " in its arguments)");
+        return -1;
+    }
+    const int count = hx_answer(c->state, &q, ipar, values);
+    if (count < 0) {
+        report_refused(c, &q, "not a function and argument list the harness answers (c_sysary: DISP TDISP"
+                       " RDISP VEL TVEL RVEL; c_sysfnc: DX DY DZ DM AX AY AZ VX VY VZ WX WY WZ;"
+                       " existing marker ids)");
+        return -1;
+    }
+    if (c->dependency_pass) {
+        for (int k = 0; k < count; ++k)
+            values[k] = 0.0; /* the dependency pass sees zeros, as in a solver */
+        if (c->declared != NULL && find_declared(c->declared, &q) < 0) {
+            if (c->declared->count < HX_MAX_QUERIES)
+                c->declared->query[c->declared->count++] = q;
+            else
+                c->declared->overflow = 1;
+        }
+        return count;
+    }
+    if (c->declared != NULL) {
+        const int k = find_declared(c->declared, &q);
+        if (k < 0) {
+            report_undeclared(c, &q);
+        } else {
+            c->used |= 1u << k;
+            if (k == c->perturb_query && c->perturb_component < count)
+                values[c->perturb_component] += c->perturb_delta;
+        }
+    }
+    return count;
+}
+
+void c_sysary(const char *fnc, const int *ipar, int nsize, double *states, int *nstates,
+              int *errflg)
+{
+    double scratch[6] = {0};
+    const int count = query(fnc, ipar, nsize, states != NULL ? states : scratch, 1);
+    if (nstates != NULL)
+        *nstates = count > 0 ? count : 0;
+    if (errflg != NULL)
+        *errflg = count > 0 ? 0 : 1;
+}
+
+void c_sysfnc(const char *fnc, const int *ipar, int nsize, double *value, int *errflg)
+{
+    double v[6] = {0};
+    const int count = query(fnc, ipar, nsize, v, 0);
+    if (value != NULL)
+        *value = count == 1 ? v[0] : 0.0;
+    if (errflg != NULL)
+        *errflg = count == 1 ? 0 : 1;
+}

@@ -1,0 +1,226 @@
+/* Binding user elements to library functions and calling them (binding.h). */
+#include "host/binding.h"
+
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "state/measures.h"
+
+static int bind_one(const hx_model *m, hx_bindings *bs, hx_binding *b, const hx_user_call *u,
+                    int line, hx_message *msg)
+{
+    b->model = m;
+    char path[PATH_MAX];
+    if (hx_loader_resolve(u->dll_name, m->dir, path, sizeof path, msg) != 0 ||
+        (b->library = strdup(path)) == NULL)
+        goto failed;
+    void *handle = hx_loader_open(&bs->loader, path, msg);
+    if (handle == NULL)
+        goto failed;
+    const int nfun = b->kind == HX_BIND_COUPLER ? 3 : 1;
+    void *fn[3] = {0};
+    for (int k = 0; k < nfun; ++k)
+        if ((fn[k] = hx_loader_symbol(handle, path, b->names[k], msg)) == NULL)
+            goto failed;
+    if (b->kind == HX_BIND_COUPLER)
+        for (int k = 0; k < 3; ++k)
+            b->coupler[k] = (usrsub_coupler_fn *)fn[k];
+    else if (b->kind == HX_BIND_GFOSUB)
+        b->gfosub = (usrsub_gfosub_fn *)fn[0];
+    else
+        b->fiesub = (usrsub_fiesub_fn *)fn[0];
+    b->npar = u->npar;
+    b->par = malloc(sizeof(double) * (size_t)(u->npar > 0 ? u->npar : 1));
+    if (b->par == NULL)
+        return hx_fail(msg, "out of memory");
+    if (u->npar > 0)
+        memcpy(b->par, u->par, sizeof(double) * (size_t)u->npar);
+    return 0;
+failed:
+    hx_message_prefix(msg, "%s:%d: %s %d", m->path, line, b->element, b->id);
+    return -1;
+}
+
+int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_message *msg)
+{
+    memset(bs, 0, sizeof *bs);
+    int user_couplers = 0;
+    for (int k = 0; k < m->ncouplers; ++k)
+        user_couplers += m->couplers[k].is_user;
+    const int total = user_couplers + m->nforces;
+    bs->items = calloc((size_t)(total > 0 ? total : 1), sizeof *bs->items);
+    if (bs->items == NULL)
+        return hx_fail(msg, "out of memory");
+    for (int k = 0; k < m->ncouplers; ++k) {
+        const hx_coupler *c = &m->couplers[k];
+        if (!c->is_user)
+            continue;
+        hx_binding *b = &bs->items[bs->count++];
+        b->messages = messages;
+        b->kind = HX_BIND_COUPLER;
+        b->index = k;
+        b->id = c->id;
+        b->element = "Constraint_Coupler";
+        b->names[0] = c->user.fnc_name ? c->user.fnc_name : "COUSUB";
+        b->names[1] = c->user.der1_name ? c->user.der1_name : "COUXX";
+        b->names[2] = c->user.der2_name ? c->user.der2_name : "COUXX2";
+        if (bind_one(m, bs, b, &c->user, c->line, msg) != 0)
+            return -1;
+    }
+    for (int k = 0; k < m->nforces; ++k) {
+        const hx_force *f = &m->forces[k];
+        hx_binding *b = &bs->items[bs->count++];
+        b->messages = messages;
+        const int gfo = f->interface == HX_FORCE_GFOSUB;
+        b->kind = gfo ? HX_BIND_GFOSUB : HX_BIND_FIESUB;
+        b->index = k;
+        b->id = f->id;
+        b->element = gfo ? "Force_Vector_TwoBody" : "Force_Field";
+        b->names[0] = f->user.fnc_name ? f->user.fnc_name : gfo ? "GFOSUB" : "FIESUB";
+        if (bind_one(m, bs, b, &f->user, f->line, msg) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+void hx_bindings_free(hx_bindings *bs)
+{
+    for (int k = 0; k < bs->count; ++k) {
+        free(bs->items[k].library);
+        free(bs->items[k].par);
+    }
+    free(bs->items);
+    hx_loader_close_all(&bs->loader);
+    memset(bs, 0, sizeof *bs);
+}
+
+hx_binding *hx_binding_of_coupler(hx_bindings *bs, int coupler_index)
+{
+    for (int k = 0; k < bs->count; ++k)
+        if (bs->items[k].kind == HX_BIND_COUPLER && bs->items[k].index == coupler_index)
+            return &bs->items[k];
+    return NULL;
+}
+
+hx_binding *hx_binding_of_force(hx_bindings *bs, int force_index)
+{
+    for (int k = 0; k < bs->count; ++k)
+        if (bs->items[k].kind != HX_BIND_COUPLER && bs->items[k].index == force_index)
+            return &bs->items[k];
+    return NULL;
+}
+
+void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_state *s, int iflag)
+{
+    hx_call_init(call, b->element, b->id, b->names[which], b->model, s, b->messages, iflag != 0,
+                 &b->deps);
+    /* couplers and FIESUB get their state in their arguments (docs/interface.md §1) */
+    call->may_query = b->kind == HX_BIND_GFOSUB;
+    call->reported_undeclared = &b->reported_undeclared;
+    call->reported_refused = &b->reported_refused;
+}
+
+int hx_dependency_passes(hx_bindings *bs, const hx_state *s)
+{
+    const hx_model *m = s->model;
+    for (int k = 0; k < bs->count; ++k) {
+        hx_binding *b = &bs->items[k];
+        double out[64];
+        if (b->kind == HX_BIND_COUPLER) {
+            const hx_coupler *c = &m->couplers[b->index];
+            double disp[3];
+            for (int i = 0; i < c->njoints; ++i)
+                disp[i] = hx_joint_coordinate(s, c->joint[i]);
+            for (int fn = 0; fn < 3; ++fn)
+                hx_call_coupler(b, fn, s, disp, c->njoints, 1, out, NULL);
+        } else if (b->kind == HX_BIND_GFOSUB) {
+            hx_call_gfosub(b, s, 0, 1, out, NULL);
+        } else {
+            double disp[6], velo[6], dfd[36], dfv[36];
+            hx_force_deformation(s, b->index, disp, velo);
+            hx_call_fiesub(b, s, disp, velo, 0, 1, out, dfd, dfv, NULL);
+        }
+        if (b->messages != NULL && hx_messages_stopped(b->messages))
+            return -1;
+    }
+    return 0;
+}
+
+static void log_call(hx_binding *b, int which, double time, int iflag, int dflag,
+                     const double *args, int nargs)
+{
+    hx_call_log *log = b->log;
+    log->routine = b->names[which];
+    log->iflag = iflag, log->dflag = dflag;
+    log->time = time;
+    log->nargs = nargs;
+    for (int k = 0; k < nargs && k < 12; ++k)
+        log->args[k] = args[k];
+    log->begun++;
+}
+
+/* The caller's record (set up with hx_binding_call_init) or a default one. */
+static void begin(hx_binding *b, int which, const hx_state *s, int iflag, hx_call *call,
+                  hx_call *local)
+{
+    if (call == NULL) {
+        hx_binding_call_init(b, local, which, s, iflag);
+        call = local;
+    }
+    hx_host_bind(call);
+}
+
+void hx_call_coupler(hx_binding *b, int which, const hx_state *s, const double *disp, int ndisp,
+                     int iflag, double *out, hx_call *call)
+{
+    hx_call local;
+    begin(b, which, s, iflag, call, &local);
+    int id = b->id, npar = b->npar, n = ndisp, flag = iflag;
+    double t = s->time, d[3] = {0, 0, 0};
+    for (int k = 0; k < ndisp && k < 3; ++k)
+        d[k] = disp[k];
+    if (b->log != NULL)
+        log_call(b, which, t, iflag, 0, d, ndisp);
+    b->coupler[which](&id, &t, b->par, &npar, d, &n, &flag, out);
+    if (b->log != NULL)
+        b->log->returned++;
+    hx_host_unbind();
+}
+
+void hx_call_gfosub(hx_binding *b, const hx_state *s, int dflag, int iflag, double result[6],
+                    hx_call *call)
+{
+    hx_call local;
+    begin(b, 0, s, iflag, call, &local);
+    int id = b->id, npar = b->npar, df = dflag, flag = iflag;
+    double t = s->time;
+    if (b->log != NULL)
+        log_call(b, 0, t, iflag, dflag, NULL, 0);
+    b->gfosub(&id, &t, b->par, &npar, &df, &flag, result);
+    if (b->log != NULL)
+        b->log->returned++;
+    hx_host_unbind();
+}
+
+void hx_call_fiesub(hx_binding *b, const hx_state *s, const double disp[6], const double velo[6],
+                    int dflag, int iflag, double field[6], double dfddis[36], double dfdvel[36],
+                    hx_call *call)
+{
+    hx_call local;
+    begin(b, 0, s, iflag, call, &local);
+    int id = b->id, npar = b->npar, df = dflag, flag = iflag;
+    double t = s->time, d[6], v[6];
+    memcpy(d, disp, sizeof d);
+    memcpy(v, velo, sizeof v);
+    if (b->log != NULL) {
+        double args[12];
+        memcpy(args, d, sizeof d);
+        memcpy(args + 6, v, sizeof v);
+        log_call(b, 0, t, iflag, dflag, args, 12);
+    }
+    b->fiesub(&id, &t, b->par, &npar, d, v, &df, &flag, field, dfddis, dfdvel);
+    if (b->log != NULL)
+        b->log->returned++;
+    hx_host_unbind();
+}

@@ -1,0 +1,84 @@
+/*
+ * A user-subroutine element of the model bound to the functions of its
+ * library, and the calls of those functions: each call is bound to the host
+ * (host/call.h) with the state its queries are answered from.
+ */
+#ifndef HX_HOST_BINDING_H
+#define HX_HOST_BINDING_H
+
+#include "host/call.h"
+#include "host/loader.h"
+#include "model/model.h"
+#include "usrsub/solver_abi.h"
+
+typedef enum hx_binding_kind {
+    HX_BIND_COUPLER, /* Constraint_Coupler: COUSUB, COUXX, COUXX2 */
+    HX_BIND_GFOSUB,  /* Force_Vector_TwoBody */
+    HX_BIND_FIESUB   /* Force_Field */
+} hx_binding_kind;
+
+/* The last call of a binding, kept where another process can read it when
+ * the call never returns (check runs each element in a child process). */
+typedef struct hx_call_log {
+    volatile unsigned long begun;    /* calls begun */
+    volatile unsigned long returned; /* calls that returned */
+    const char *routine;             /* one of the binding's names */
+    int iflag, dflag;
+    double time;
+    int nargs;
+    double args[12];                 /* disp (and velo) of couplers and FIESUB */
+} hx_call_log;
+
+typedef struct hx_binding {
+    hx_binding_kind kind;
+    int index;           /* in the model's couplers[] or forces[] */
+    int id;
+    const char *element; /* "Constraint_Coupler", "Force_Vector_TwoBody", "Force_Field" */
+    char *library;       /* resolved path */
+    const char *names[3];
+    usrsub_coupler_fn *coupler[3]; /* phi, dphi/dM, d2phi/dM2 */
+    usrsub_gfosub_fn *gfosub;
+    usrsub_fiesub_fn *fiesub;
+    double *par;         /* the USER list handed to the entries */
+    int npar;
+    hx_dependencies deps; /* declared in the dependency pass */
+    /* what the host has reported of this element: each read once */
+    hx_noted_queries reported_undeclared, reported_refused;
+    const hx_model *model;
+    hx_messages *messages;
+    hx_call_log *log;    /* NULL: calls are not logged */
+} hx_binding;
+
+typedef struct hx_bindings {
+    hx_binding *items;
+    int count;
+    hx_loader loader;
+} hx_bindings;
+
+/* Loads the libraries and resolves the functions of every user element. */
+int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *b, hx_message *msg);
+void hx_bindings_free(hx_bindings *b);
+
+/* The binding of a coupler or force element, or NULL (built-in element). */
+hx_binding *hx_binding_of_coupler(hx_bindings *b, int coupler_index);
+hx_binding *hx_binding_of_force(hx_bindings *b, int force_index);
+
+/* A call record of function `which` of b at state s, recording into (iflag)
+ * or checking against b->deps. */
+void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_state *s, int iflag);
+
+/* The dependency pass of every element (iflag = 1) at state s, as a solver
+ * runs it before the analysis; returns -1 when an element stopped the run. */
+int hx_dependency_passes(hx_bindings *b, const hx_state *s);
+
+/* Calls at state s (its time is the call's time); call (may be NULL) is the
+ * record the call is bound with, set up by hx_binding_call_init. */
+void hx_call_coupler(hx_binding *b, int which, const hx_state *s, const double *disp, int ndisp,
+                     int iflag, double *out, hx_call *call);
+void hx_call_gfosub(hx_binding *b, const hx_state *s, int dflag, int iflag, double result[6],
+                    hx_call *call);
+void hx_call_fiesub(hx_binding *b, const hx_state *s, const double disp[6], const double velo[6],
+                    int dflag, int iflag, double field[6], double dfddis[36], double dfdvel[36],
+                    hx_call *call);
+
+#endif

@@ -1,0 +1,40 @@
+/*
+ * Finding and loading user-subroutine libraries the way the solver does
+ * (docs/interface.md §5):
+ *   usrsub_dll_name: absolute, or relative to the model file's folder, then to
+ *   each folder of MS_USERDLL_DIR (';' or ':' separated); when the attribute is
+ *   missing or "NULL", the library named by MS_USERSUBDLL (same search).
+ * A library is opened once per resolved path and stays open until closed.
+ */
+#ifndef HX_LOADER_H
+#define HX_LOADER_H
+
+#include <stddef.h>
+
+#include "base/message.h"
+
+typedef struct hx_library {
+    char *path;
+    void *handle;
+} hx_library;
+
+typedef struct hx_loader {
+    hx_library *libraries;
+    int count, capacity;
+} hx_loader;
+
+/* Resolves a library name to an existing file's real path. */
+int hx_loader_resolve(const char *dll_name, const char *model_dir, char *path, size_t size,
+                      hx_message *msg);
+
+/* Opens (once) the library at a resolved path. */
+void *hx_loader_open(hx_loader *loader, const char *path, hx_message *msg);
+
+/* Address of a function in an opened library; NULL with a message naming
+ * both the symbol and the library when it is missing. */
+void *hx_loader_symbol(void *handle, const char *path, const char *name, hx_message *msg);
+
+/* dlclose every library. */
+void hx_loader_close_all(hx_loader *loader);
+
+#endif

@@ -1,0 +1,73 @@
+/* The messages of a session (messages.h). */
+#include "host/messages.h"
+
+#include <stdarg.h>
+#include <string.h>
+
+void hx_messages_init(hx_messages *m, FILE *stream)
+{
+    memset(m, 0, sizeof *m);
+    pthread_mutex_init(&m->lock, NULL);
+    m->stream = stream;
+}
+
+void hx_messages_destroy(hx_messages *m)
+{
+    pthread_mutex_destroy(&m->lock);
+}
+
+void hx_messages_reset(hx_messages *m)
+{
+    pthread_mutex_lock(&m->lock);
+    m->errors = m->notices = m->host_reports = 0;
+    m->last_error[0] = m->last_notice[0] = m->last_host_report[0] = '\0';
+    m->stop = 0;
+    m->stop_message[0] = '\0';
+    pthread_mutex_unlock(&m->lock);
+}
+
+void hx_messages_error(hx_messages *m, int id, const char *text, int stop)
+{
+    pthread_mutex_lock(&m->lock);
+    ++m->errors;
+    snprintf(m->last_error, sizeof m->last_error, "%s", text != NULL ? text : "");
+    if (stop && !m->stop) {
+        m->stop = 1;
+        snprintf(m->stop_message, sizeof m->stop_message, "%s", m->last_error);
+    }
+    if (m->stream != NULL)
+        fprintf(m->stream, "ERRMES [%d]%s: %s\n", id, stop ? " STOP" : "", m->last_error);
+    pthread_mutex_unlock(&m->lock);
+}
+
+void hx_messages_notice(hx_messages *m, int id, const char *type, const char *text)
+{
+    pthread_mutex_lock(&m->lock);
+    ++m->notices;
+    snprintf(m->last_notice, sizeof m->last_notice, "%s", text != NULL ? text : "");
+    if (m->stream != NULL)
+        fprintf(m->stream, "USRMES:USER [%d] %s: %s\n", id, type != NULL ? type : "INFO",
+                m->last_notice);
+    pthread_mutex_unlock(&m->lock);
+}
+
+void hx_messages_host(hx_messages *m, const char *fmt, ...)
+{
+    pthread_mutex_lock(&m->lock);
+    ++m->host_reports;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(m->last_host_report, sizeof m->last_host_report, fmt, ap);
+    va_end(ap);
+    if (m->stream != NULL)
+        fprintf(m->stream, "host: %s\n", m->last_host_report);
+    pthread_mutex_unlock(&m->lock);
+}
+
+int hx_messages_stopped(hx_messages *m)
+{
+    pthread_mutex_lock(&m->lock);
+    const int stop = m->stop;
+    pthread_mutex_unlock(&m->lock);
+    return stop;
+}

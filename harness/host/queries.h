@@ -1,0 +1,36 @@
+/*
+ * The state queries a library may make (docs/interface.md §5): c_sysary's
+ * DISP, TDISP, RDISP, VEL, TVEL, RVEL and c_sysfnc's DX DY DZ DM AX AY AZ VX
+ * VY VZ WX WY WZ, with their marker arguments, and the answers computed from
+ * a state.
+ */
+#ifndef HX_HOST_QUERIES_H
+#define HX_HOST_QUERIES_H
+
+#include <stddef.h>
+
+#include "state/state.h"
+
+typedef struct hx_query {
+    char fnc[8];
+    int function; /* the host's code for fnc, -1 when unknown */
+    int ipar[4];
+    int nsize;
+    int is_array; /* c_sysary (1) or c_sysfnc (0) */
+} hx_query;
+
+/* A query as a library asked it (fnc truncated to 7 characters). */
+void hx_query_make(hx_query *q, const char *fnc, const int *ipar, int nsize, int is_array);
+int hx_query_same(const hx_query *a, const hx_query *b);
+/* "DISP(11,21,21)" */
+const char *hx_query_text(const hx_query *q, char *text, size_t size);
+
+/* Answers a query at state s: the number of values written, or -1 for a
+ * function the host does not answer (unknown, or asked through the wrong
+ * utility), a bad nsize or an unknown marker. */
+int hx_answer(const hx_state *s, const hx_query *q, const int *ipar, double *values);
+/* The same from its text and arguments. */
+int hx_answer_query(const hx_state *s, const char *fnc, const int *ipar, int nsize,
+                    int is_array, double *values);
+
+#endif

@@ -1,0 +1,61 @@
+/* Opening and closing a harness session (session.h). */
+#include "host/session.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+int hx_session_open(hx_session *s, const char *model_path, FILE *messages, hx_message *msg)
+{
+    memset(s, 0, sizeof *s);
+    hx_messages_init(&s->messages, messages);
+    if (getcwd(s->start_dir, sizeof s->start_dir) == NULL)
+        snprintf(s->start_dir, sizeof s->start_dir, ".");
+    s->model = hx_model_read(model_path, stderr, msg);
+    if (s->model == NULL) {
+        hx_session_close(s);
+        return -1;
+    }
+    if (chdir(s->model->dir) != 0) {
+        hx_fail(msg, "cannot enter the model's folder %s: %s", s->model->dir, strerror(errno));
+        hx_session_close(s);
+        return -1;
+    }
+    if (hx_state_init(&s->state, s->model) != 0) {
+        hx_fail(msg, "out of memory");
+        hx_session_close(s);
+        return -1;
+    }
+    if (hx_bind(s->model, &s->messages, &s->bindings, msg) != 0) {
+        hx_session_close(s);
+        return -1;
+    }
+    if (hx_dependency_passes(&s->bindings, &s->state) != 0) {
+        hx_fail(msg, "an element stopped the run in its dependency pass (c_errmes STOP): %s",
+                s->messages.stop_message);
+        hx_session_close(s);
+        return -1;
+    }
+    return 0;
+}
+
+void hx_session_close(hx_session *s)
+{
+    hx_bindings_free(&s->bindings);
+    hx_state_free(&s->state);
+    hx_model_free(s->model);
+    hx_messages_destroy(&s->messages);
+    if (s->start_dir[0] != '\0' && chdir(s->start_dir) != 0)
+        s->start_dir[0] = '\0';
+    s->model = NULL;
+}
+
+const char *hx_session_path(const hx_session *s, const char *arg, char *path, size_t size)
+{
+    if (arg[0] == '/')
+        snprintf(path, size, "%s", arg);
+    else
+        snprintf(path, size, "%s/%s", s->start_dir, arg);
+    return path;
+}

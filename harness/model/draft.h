@@ -1,0 +1,59 @@
+/*
+ * A model under construction, private to the model layer: the XML reader
+ * fills it element by element (elements.c, from the descriptions of
+ * xml_schema.h), then the resolve passes (resolve.c) turn the ids the
+ * elements name into indices and frames, and the model is handed over.
+ */
+#ifndef HX_MODEL_DRAFT_H
+#define HX_MODEL_DRAFT_H
+
+#include <stdio.h>
+
+#include "base/message.h"
+#include "model/model.h"
+
+/* What an element said before its references are resolved. */
+typedef struct raw_marker {
+    int body_id, rm_id;
+    double pos[3], R[9]; /* relative to rm_id's frame, else to the world */
+    int state;           /* 0 unresolved, 1 resolving, 2 resolved */
+} raw_marker;
+
+typedef struct raw_body {
+    int cg_id, im_id, lprf_id;
+    double inertia[9]; /* the tensor, in the IM marker's axes, about its origin */
+} raw_body;
+
+typedef struct raw_refs {
+    int ids[4]; /* marker or joint ids, 0 when absent */
+    char freedom[3];
+} raw_refs;
+
+typedef struct hx_draft {
+    hx_model *m;
+    const char *path;
+    FILE *warnings;
+    hx_message *msg;
+    int failed;
+    int ground_line;
+    raw_marker *rmarkers; /* parallel to m->markers */
+    raw_body *rbodies;    /* parallel to m->bodies */
+    raw_refs *rjoints, *rcouplers, *rforces, *rloads;
+    int cap_markers, cap_bodies, cap_joints, cap_couplers, cap_forces, cap_loads, cap_strings;
+} hx_draft;
+
+/* The first error wins: "file:line: what"; the reader then stops. */
+void hx_draft_fail(hx_draft *d, int line, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+void hx_draft_warn(hx_draft *d, int line, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+/* A zeroed new slot at the end of a model array (and of its parallel raw
+ * array, when raw is not NULL); NULL when out of memory (the draft failed). */
+void *hx_draft_push(hx_draft *d, void **array, int *count, int *capacity, size_t size,
+                    void **raw, size_t raw_size);
+
+/* The resolve passes; 0, or -1 with the draft failed. */
+int hx_draft_resolve(hx_draft *d);
+
+#endif

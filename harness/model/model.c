@@ -1,0 +1,108 @@
+/* Model look-ups and release (model.h). */
+#include "model/model.h"
+
+#include <stdlib.h>
+#include <strings.h>
+
+int hx_model_marker(const hx_model *m, int id)
+{
+    if (m->marker_slot_count == 0)
+        return -1;
+    const unsigned mask = (unsigned)m->marker_slot_count - 1u; /* a power of two */
+    for (unsigned s = ((unsigned)id * 2654435761u) & mask;; s = (s + 1) & mask) {
+        const int k = m->marker_slots[s];
+        if (k < 0)
+            return -1;
+        if (m->markers[k].id == id)
+            return k;
+    }
+}
+
+int hx_model_body(const hx_model *m, int id)
+{
+    for (int k = 0; k < m->nbodies; ++k)
+        if (m->bodies[k].id == id)
+            return k;
+    return -1;
+}
+
+int hx_model_joint(const hx_model *m, int id)
+{
+    for (int k = 0; k < m->njoints; ++k)
+        if (m->joints[k].id == id)
+            return k;
+    return -1;
+}
+
+const char *hx_model_string(const hx_model *m, int id)
+{
+    for (int k = 0; k < m->nstrings; ++k)
+        if (m->strings[k].id == id)
+            return m->strings[k].text;
+    return NULL;
+}
+
+const char *hx_force_element_name(const hx_force *f)
+{
+    return f->interface == HX_FORCE_GFOSUB ? "Force_Vector_TwoBody" : "Force_Field";
+}
+
+int hx_model_find_force(const hx_model *m, const char *text, int *index, hx_message *msg)
+{
+    int want = -1; /* -1 any, else the interface */
+    const char *number = text;
+    if (strncasecmp(text, "vector:", 7) == 0)
+        want = HX_FORCE_GFOSUB, number = text + 7;
+    else if (strncasecmp(text, "field:", 6) == 0)
+        want = HX_FORCE_FIESUB, number = text + 6;
+    char *end;
+    const long id = strtol(number, &end, 10);
+    if (end == number || *end != '\0')
+        return hx_fail(msg, "'%s' is not a force element id (ID, vector:ID or field:ID)", text);
+    int found = 0;
+    for (int k = 0; k < m->nforces; ++k)
+        if (m->forces[k].id == id && (want < 0 || (int)m->forces[k].interface == want)) {
+            *index = k;
+            ++found;
+        }
+    if (found == 1)
+        return 0;
+    if (found > 1)
+        return hx_fail(msg, "element %ld is both a Force_Vector_TwoBody and a Force_Field: write"
+                       " vector:%ld or field:%ld", id, id, id);
+    return hx_fail(msg, "the model has no %s %ld", want == HX_FORCE_GFOSUB ? "Force_Vector_TwoBody"
+                   : want == HX_FORCE_FIESUB ? "Force_Field" : "Force_Vector_TwoBody or Force_Field",
+                   id);
+}
+
+static void free_user_call(hx_user_call *u)
+{
+    free(u->dll_name);
+    free(u->fnc_name);
+    free(u->der1_name);
+    free(u->der2_name);
+    free(u->par);
+}
+
+void hx_model_free(hx_model *m)
+{
+    if (m == NULL)
+        return;
+    for (int k = 0; k < m->ncouplers; ++k)
+        free_user_call(&m->couplers[k].user);
+    for (int k = 0; k < m->nforces; ++k)
+        free_user_call(&m->forces[k].user);
+    for (int k = 0; k < m->nstrings; ++k)
+        free(m->strings[k].text);
+    free(m->bodies);
+    free(m->markers);
+    free(m->joints);
+    free(m->couplers);
+    free(m->forces);
+    free(m->loads);
+    free(m->strings);
+    free(m->marker_slots);
+    free(m->path);
+    free(m->dir);
+    free(m);
+}

@@ -1,0 +1,155 @@
+/*
+ * The harness's model: the subset of a MotionSolve XML model it supports
+ * (README, "Supported MotionSolve XML"). Immutable once read: what changes
+ * during a run lives in a state (state/state.h). Indices below are positions
+ * in the model's arrays; ids are the XML ids.
+ */
+#ifndef HX_MODEL_MODEL_H
+#define HX_MODEL_MODEL_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "base/message.h"
+#include "model/time_function.h"
+#include "usrsub/solver_abi.h"
+
+typedef struct hx_user_call {
+    char *dll_name;     /* usrsub_dll_name; NULL when absent or "NULL" */
+    char *fnc_name;     /* usrsub_fnc_name; NULL for the default name */
+    char *der1_name;    /* couplers: usrsub_der1_name (default COUXX) */
+    char *der2_name;    /* couplers: usrsub_der2_name (default COUXX2) */
+    double *par;        /* the numbers of usrsub_param_string's USER(...) */
+    int npar;
+} hx_user_call;
+
+typedef struct hx_marker {
+    int id;
+    int body;            /* index of the body it belongs to */
+    double pos0[3];      /* world position at t = 0 */
+    double R0[9];        /* world orientation at t = 0 (columns: the marker's axes) */
+    double r_local[3];   /* position in the body's frame */
+    double R_local[9];   /* orientation in the body's frame */
+    int local_axes;      /* R_local is the identity: the marker turns with the body's axes */
+    int at_body_origin;  /* r_local is zero */
+    int tracked;         /* an element, load or joint of the model names it: states keep
+                          * its world frame (state/state.h) */
+    int line;
+} hx_marker;
+
+typedef struct hx_body {
+    int id;
+    int is_ground;
+    double mass;
+    double inertia[9];   /* about the centre of mass, body axes (a tensor: products of
+                          * inertia enter with a minus sign, docs/interface.md §7) */
+    int cg_marker;       /* index; the body frame is this marker's frame */
+    double p0[3], R0[9]; /* world pose of the body frame at t = 0 */
+    double v0[3], w0[3]; /* initial velocity of the cm and angular velocity, world */
+    int joint;           /* index of the joint to ground, or -1 (free body) */
+    int line;
+} hx_body;
+
+enum hx_joint_type { HX_JOINT_REVOLUTE, HX_JOINT_TRANSLATIONAL };
+
+typedef struct hx_joint {
+    int id;
+    enum hx_joint_type type;
+    int i_marker, j_marker; /* indices; J is on ground */
+    int line;
+} hx_joint;
+
+typedef struct hx_coupler {
+    int id;
+    int njoints;
+    int joint[3];             /* indices */
+    double coefficients[3];   /* built-in form */
+    int is_user;              /* 1: user subroutine form */
+    hx_user_call user;
+    int line;
+} hx_coupler;
+
+enum hx_force_interface { HX_FORCE_GFOSUB, HX_FORCE_FIESUB };
+
+typedef struct hx_force {
+    int id;
+    enum hx_force_interface interface; /* Force_Vector_TwoBody or Force_Field */
+    int i_marker, j_marker;  /* indices; for GFOSUB j is the floating J marker */
+    int ref_marker;          /* index of the frame of the results, -1: world */
+    hx_user_call user;
+    int line;
+} hx_force;
+
+enum hx_load_kind {
+    HX_LOAD_VECTOR,        /* Force_Vector_OneBody: force/torque at a marker */
+    HX_LOAD_SCALAR_TORQUE, /* Force_Scalar_TwoBody TORQUE: about J's z axis */
+    HX_LOAD_SCALAR_FORCE   /* Force_Scalar_TwoBody FORCE: along the line I-J */
+};
+
+typedef struct hx_load {
+    int id;
+    enum hx_load_kind kind;
+    int i_marker, j_marker, ref_marker; /* indices, -1 when not used */
+    hx_time_function force[3], torque[3]; /* vector loads, in ref_marker axes */
+    hx_time_function value;               /* scalar loads */
+    int action_only;
+    int line;
+} hx_load;
+
+typedef struct hx_string {
+    int id;
+    char *text;
+} hx_string;
+
+typedef struct hx_model {
+    char *path;
+    char *dir;               /* folder of the model file */
+    int has_units;
+    double unit_scales[USRSUB_UNIT_COUNT];
+    double gravity[3];
+    hx_body *bodies;
+    int nbodies;
+    int ground;              /* index of the ground body */
+    hx_marker *markers;
+    int nmarkers;
+    hx_joint *joints;
+    int njoints;
+    hx_coupler *couplers;
+    int ncouplers;
+    hx_force *forces;
+    int nforces;
+    hx_load *loads;
+    int nloads;
+    hx_string *strings;
+    int nstrings;
+    int nwarnings;
+    /* elements that act on the dynamics but that the harness does not model:
+     * check can verify the user elements, run and bench refuse */
+    int nunsimulated;
+    char unsimulated[256];   /* the first of them, "Motion_Joint 5 (line 40)" */
+    int *marker_slots;       /* open-addressing index from marker id */
+    int marker_slot_count;
+} hx_model;
+
+/* Reads a model; warnings go to `warnings` (may be NULL). Returns NULL with
+ * "file:line: what" in msg on an error. */
+hx_model *hx_model_read(const char *path, FILE *warnings, hx_message *msg);
+/* The same from text in memory; name stands for the file in messages, and the
+ * model's folder is that of name. */
+hx_model *hx_model_parse(const char *text, size_t length, const char *name, FILE *warnings,
+                         hx_message *msg);
+void hx_model_free(hx_model *m);
+
+/* Index of the marker with this id, or -1. */
+int hx_model_marker(const hx_model *m, int id);
+int hx_model_body(const hx_model *m, int id);
+int hx_model_joint(const hx_model *m, int id);
+const char *hx_model_string(const hx_model *m, int id);
+/* Index of the force element written ID, vector:ID or field:ID (the prefix
+ * needed when a Force_Vector_TwoBody and a Force_Field share ID); -1 and msg
+ * when there is none or two. */
+int hx_model_find_force(const hx_model *m, const char *text, int *index, hx_message *msg);
+/* "Force_Vector_TwoBody" or "Force_Field". */
+const char *hx_force_element_name(const hx_force *f);
+
+#endif

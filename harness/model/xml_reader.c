@@ -1,0 +1,350 @@
+/*
+ * The MotionSolve XML reader (expat): every element is checked against its
+ * description (xml_schema.h) by one generic routine, then built into the
+ * draft model, then the references are resolved (resolve.c). Element and
+ * attribute names are matched case-insensitively, as MotionSolve does. An
+ * attribute the harness does not read is an error: it could move a marker
+ * or change a force, and a verifier must never go on with different physics
+ * than the model says.
+ */
+#include <errno.h>
+#include <expat.h>
+#include <libgen.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+
+#include "model/xml_schema.h"
+
+/* ---- the draft's diagnostics and arrays ------------------------------------------ */
+
+typedef struct xml_reader {
+    hx_draft d;
+    XML_Parser parser;
+} xml_reader;
+
+void hx_draft_fail(hx_draft *d, int line, const char *fmt, ...)
+{
+    if (d->failed)
+        return;
+    char what[HX_MESSAGE_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    if (line > 0)
+        hx_fail(d->msg, "%s:%d: %s", d->path, line, what);
+    else
+        hx_fail(d->msg, "%s: %s", d->path, what);
+    d->failed = 1;
+}
+
+void hx_draft_warn(hx_draft *d, int line, const char *fmt, ...)
+{
+    d->m->nwarnings++;
+    if (d->warnings == NULL)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(d->warnings, "%s:%d: warning: ", d->path, line);
+    vfprintf(d->warnings, fmt, ap);
+    fputc('\n', d->warnings);
+    va_end(ap);
+}
+
+static int grow(hx_draft *d, void **array, int count, int capacity, size_t size)
+{
+    void *p = realloc(*array, size * (size_t)capacity);
+    if (p == NULL) {
+        hx_draft_fail(d, 0, "out of memory");
+        return -1;
+    }
+    *array = p;
+    memset((char *)p + size * (size_t)count, 0, size);
+    return 0;
+}
+
+void *hx_draft_push(hx_draft *d, void **array, int *count, int *capacity, size_t size,
+                    void **raw, size_t raw_size)
+{
+    const int needed = *count + 1;
+    const int grown = *count == *capacity ? (*capacity ? 2 * *capacity : 16) : *capacity;
+    if (grow(d, array, *count, grown, size) != 0 ||
+        (raw != NULL && grow(d, raw, *count, grown, raw_size) != 0))
+        return NULL;
+    *capacity = grown;
+    *count = needed;
+    return (char *)*array + size * (size_t)(needed - 1);
+}
+
+/* ---- attributes ------------------------------------------------------------------- */
+
+static int find_attr(const hx_element_read *e, const char *name)
+{
+    for (int k = 0; k < e->nspec; ++k)
+        if (strcasecmp(e->spec[k].name, name) == 0)
+            return k;
+    return -1;
+}
+
+int hx_attr_present(const hx_element_read *e, const char *name)
+{
+    const int k = find_attr(e, name);
+    return k >= 0 && e->value[k].present;
+}
+
+double hx_attr_number(const hx_element_read *e, const char *name, double fallback)
+{
+    const int k = find_attr(e, name);
+    return k >= 0 && e->value[k].present ? e->value[k].number : fallback;
+}
+
+int hx_attr_int(const hx_element_read *e, const char *name, int fallback)
+{
+    return (int)hx_attr_number(e, name, fallback);
+}
+
+const char *hx_attr_text(const hx_element_read *e, const char *name)
+{
+    const int k = find_attr(e, name);
+    return k >= 0 && e->value[k].present ? e->value[k].text : NULL;
+}
+
+static int parse_number(const char *text, double *out)
+{
+    char *end;
+    errno = 0;
+    const double v = strtod(text, &end);
+    if (end == text || errno == ERANGE || !isfinite(v))
+        return -1;
+    while (*end == ' ' || *end == '\t' || *end == '\n' || *end == '\r')
+        ++end;
+    if (*end != '\0')
+        return -1;
+    *out = v;
+    return 0;
+}
+
+/* Reads one attribute into e by its description; 0 or -1 (the draft failed). */
+static int read_value(hx_draft *d, hx_element_read *e, int k, const char *text)
+{
+    const hx_attr_spec *a = &e->spec[k];
+    e->value[k].present = 1;
+    e->value[k].text = text;
+    double v = 0.0;
+    switch (a->kind) {
+    case HX_ATTR_REAL:
+        if (parse_number(text, &v) != 0) {
+            hx_draft_fail(d, e->line, "%s: attribute %s = \"%s\" is not a finite number"
+                          " (expressions are not read here)", e->name, a->name, text);
+            return -1;
+        }
+        break;
+    case HX_ATTR_INT:
+        if (parse_number(text, &v) != 0 || v != floor(v) || fabs(v) > INT_MAX) {
+            hx_draft_fail(d, e->line, "%s: attribute %s = \"%s\" is not an integer", e->name,
+                          a->name, text);
+            return -1;
+        }
+        break;
+    case HX_ATTR_BOOL:
+        if (strcasecmp(text, "TRUE") == 0)
+            v = 1.0;
+        else if (strcasecmp(text, "FALSE") != 0) {
+            hx_draft_fail(d, e->line, "%s: attribute %s = \"%s\": expected TRUE or FALSE",
+                          e->name, a->name, text);
+            return -1;
+        }
+        break;
+    case HX_ATTR_TEXT:
+    case HX_ATTR_IGNORED:
+        break;
+    }
+    e->value[k].number = v;
+    return 0;
+}
+
+/* The generic part of every element: its attributes against its description. */
+static int read_element(hx_draft *d, const hx_element_spec *spec, const XML_Char **atts,
+                        hx_element_read *e)
+{
+    e->nspec = 0;
+    while (spec->attrs[e->nspec].name != NULL && e->nspec < HX_MAX_ATTRS)
+        ++e->nspec;
+    e->spec = spec->attrs;
+    const char *id_text = NULL;
+    for (int k = 0; atts[k] != NULL; k += 2)
+        if (strcasecmp(atts[k], "id") == 0)
+            id_text = atts[k + 1];
+    const int id_spec = find_attr(e, "id");
+    if (id_spec >= 0 && (e->spec[id_spec].required || id_text != NULL)) {
+        double id;
+        if (id_text == NULL || parse_number(id_text, &id) != 0 || id != floor(id) || id <= 0 ||
+            id > INT_MAX) {
+            hx_draft_fail(d, e->line, "%s: id \"%s\" must be a positive integer", e->name,
+                          id_text ? id_text : "(missing)");
+            return -1;
+        }
+        e->id = (int)id;
+    }
+    char label[96];
+    snprintf(label, sizeof label, e->id ? "%s %d" : "%s", e->name, e->id);
+    for (int k = 0; atts[k] != NULL; k += 2) {
+        const int a = find_attr(e, atts[k]);
+        if (a < 0) {
+            hx_draft_fail(d, e->line, "%s: attribute %s is not one the harness reads (it could"
+                          " change the model; see the README's supported XML)", label, atts[k]);
+            return -1;
+        }
+        if (read_value(d, e, a, atts[k + 1]) != 0) {
+            hx_message_prefix(d->msg, "%s", label);
+            return -1;
+        }
+    }
+    for (int k = 0; k < e->nspec; ++k)
+        if (e->spec[k].required && !e->value[k].present) {
+            hx_draft_fail(d, e->line, "%s: attribute %s is missing", label, e->spec[k].name);
+            return -1;
+        }
+    e->name = spec->name;
+    return 0;
+}
+
+static void XMLCALL on_start(void *data, const XML_Char *name, const XML_Char **atts)
+{
+    xml_reader *r = data;
+    hx_draft *d = &r->d;
+    if (d->failed)
+        return;
+    const int line = (int)XML_GetCurrentLineNumber(r->parser);
+    for (int k = 0; k < hx_element_spec_count; ++k) {
+        const hx_element_spec *spec = &hx_element_specs[k];
+        if (strcasecmp(spec->name, name) != 0)
+            continue;
+        if (spec->build == NULL)
+            return; /* a container */
+        hx_element_read e;
+        memset(&e, 0, sizeof e);
+        e.name = spec->name;
+        e.line = line;
+        if (read_element(d, spec, atts, &e) == 0)
+            spec->build(d, &e);
+        return;
+    }
+    if (hx_element_is_output_only(name))
+        return;
+    /* an element the harness does not model: check can still verify the user
+     * elements; a run would be different physics */
+    const char *id = NULL;
+    for (int k = 0; atts[k] != NULL; k += 2)
+        if (strcasecmp(atts[k], "id") == 0)
+            id = atts[k + 1];
+    hx_draft_warn(d, line, "element <%s%s%s> is not modelled by the harness: check verifies the"
+                  " user elements, run and bench refuse the model", name, id ? " id=" : "",
+                  id ? id : "");
+    if (d->m->nunsimulated++ == 0)
+        snprintf(d->m->unsimulated, sizeof d->m->unsimulated, "%s%s%s (line %d)", name,
+                 id ? " " : "", id ? id : "", line);
+}
+
+/* Feeds the XML to expat: from the file at d->path, or from text when not NULL. */
+static int parse_source(xml_reader *r, const char *text, size_t length)
+{
+    hx_draft *d = &r->d;
+    FILE *f = NULL;
+    if (text == NULL) {
+        struct stat st;
+        if (stat(d->path, &st) == 0 && S_ISDIR(st.st_mode))
+            return hx_fail(d->msg, "%s is a folder, not a model file (give the path of a"
+                           " MotionSolve XML file)", d->path);
+        if ((f = fopen(d->path, "rb")) == NULL)
+            return hx_fail(d->msg, "%s: cannot open the model: %s", d->path, strerror(errno));
+    }
+    r->parser = XML_ParserCreate(NULL);
+    if (r->parser == NULL) {
+        if (f != NULL)
+            fclose(f);
+        return hx_fail(d->msg, "%s: out of memory", d->path);
+    }
+    XML_SetUserData(r->parser, r);
+    XML_SetStartElementHandler(r->parser, on_start);
+    char buffer[16384];
+    size_t offset = 0;
+    int done = 0;
+    while (!done && !d->failed) {
+        size_t n;
+        if (f != NULL) {
+            n = fread(buffer, 1, sizeof buffer, f);
+            if (ferror(f)) {
+                hx_draft_fail(d, 0, "cannot read the model: %s", strerror(errno));
+                break;
+            }
+            done = n < sizeof buffer;
+        } else {
+            n = length - offset < sizeof buffer ? length - offset : sizeof buffer;
+            memcpy(buffer, text + offset, n);
+            offset += n;
+            done = offset == length;
+        }
+        if (XML_Parse(r->parser, buffer, (int)n, done) == XML_STATUS_ERROR && !d->failed)
+            hx_draft_fail(d, (int)XML_GetCurrentLineNumber(r->parser), "malformed XML: %s",
+                          XML_ErrorString(XML_GetErrorCode(r->parser)));
+    }
+    XML_ParserFree(r->parser);
+    r->parser = NULL;
+    if (f != NULL)
+        fclose(f);
+    return d->failed ? -1 : 0;
+}
+
+static hx_model *read_model(const char *path, const char *text, size_t length, FILE *warnings,
+                            hx_message *msg)
+{
+    hx_model *m = calloc(1, sizeof *m);
+    if (m == NULL) {
+        hx_fail(msg, "out of memory");
+        return NULL;
+    }
+    m->ground = -1;
+    for (int k = 0; k < USRSUB_UNIT_COUNT; ++k)
+        m->unit_scales[k] = 1.0;
+    char real[PATH_MAX];
+    m->path = strdup(text == NULL && realpath(path, real) != NULL ? real : path);
+    char *copy = m->path != NULL ? strdup(m->path) : NULL;
+    m->dir = copy != NULL ? strdup(dirname(copy)) : NULL;
+    free(copy);
+    xml_reader r;
+    memset(&r, 0, sizeof r);
+    r.d = (hx_draft){.m = m, .path = path, .warnings = warnings, .msg = msg};
+    int status = (m->path == NULL || m->dir == NULL) ? hx_fail(msg, "out of memory") : 0;
+    if (status == 0)
+        status = parse_source(&r, text, length);
+    if (status == 0)
+        status = hx_draft_resolve(&r.d);
+    free(r.d.rmarkers);
+    free(r.d.rbodies);
+    free(r.d.rjoints);
+    free(r.d.rcouplers);
+    free(r.d.rforces);
+    free(r.d.rloads);
+    if (status != 0) {
+        hx_model_free(m);
+        return NULL;
+    }
+    return m;
+}
+
+hx_model *hx_model_read(const char *path, FILE *warnings, hx_message *msg)
+{
+    return read_model(path, NULL, 0, warnings, msg);
+}
+
+hx_model *hx_model_parse(const char *text, size_t length, const char *name, FILE *warnings,
+                         hx_message *msg)
+{
+    return read_model(name, text != NULL ? text : "", text != NULL ? length : 0, warnings, msg);
+}

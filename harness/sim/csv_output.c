@@ -1,0 +1,87 @@
+/* The run's CSV: a header and one row per output time (simulation.h). */
+#include <stdlib.h>
+
+#include "sim/simulation.h"
+#include "state/measures.h"
+
+void hx_csv_header(FILE *f, const hx_dynamics *d)
+{
+    const hx_model *m = d->m;
+    fprintf(f, "t");
+    for (int k = 0; k < m->nbodies; ++k) {
+        const hx_body_dof *dof = &d->dof[k];
+        const int id = m->bodies[k].id;
+        if (dof->kind == HX_DOF_FREE)
+            fprintf(f, ",body%d.x,body%d.y,body%d.z,body%d.q0,body%d.q1,body%d.q2,body%d.q3"
+                       ",body%d.vx,body%d.vy,body%d.vz,body%d.wx,body%d.wy,body%d.wz",
+                    id, id, id, id, id, id, id, id, id, id, id, id, id);
+        else if (dof->kind != HX_DOF_GROUND) {
+            const int jid = m->joints[m->bodies[k].joint].id;
+            fprintf(f, ",joint%d.q,joint%d.u", jid, jid);
+        }
+    }
+    for (int k = 0; k < m->ncouplers; ++k) {
+        const hx_coupler *c = &m->couplers[k];
+        fprintf(f, ",coupler%d.lambda", c->id);
+        for (int j = 0; j < c->njoints; ++j)
+            fprintf(f, ",coupler%d.force%d", c->id, j + 1);
+    }
+    for (int k = 0; k < m->nforces; ++k) {
+        const int id = m->forces[k].id;
+        static const char *const names[6] = {"x", "y", "z", "ax", "ay", "az"};
+        for (int j = 0; j < 6; ++j)
+            fprintf(f, ",force%d.d%s", id, names[j]);
+        static const char *const loads[6] = {"fx", "fy", "fz", "tx", "ty", "tz"};
+        for (int j = 0; j < 6; ++j)
+            fprintf(f, ",force%d.%s", id, loads[j]);
+    }
+    fprintf(f, ",energy,dissipated,phi,phidot\n");
+}
+
+int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, const hx_energy *energy,
+               const hx_energy *energy0)
+{
+    const hx_model *m = d->m;
+    double *ydot = malloc(sizeof(double) * (size_t)d->n);
+    if (ydot == NULL || hx_dynamics_rhs(d, t, y, ydot) != 0) {
+        free(ydot);
+        return -1;
+    }
+    free(ydot);
+    double phi, phidot;
+    if (hx_dynamics_residuals(d, t, y, &phi, &phidot) != 0)
+        return -1;
+    fprintf(f, "%.10g", t);
+    for (int k = 0; k < m->nbodies; ++k) {
+        const hx_body_dof *dof = &d->dof[k];
+        const double *u = y + d->nq + dof->u;
+        if (dof->kind == HX_DOF_FREE) {
+            const hx_frame *fr = &d->state.bodies[k];
+            for (int j = 0; j < 7; ++j)
+                fprintf(f, ",%.12g", y[dof->q + j]);
+            fprintf(f, ",%.12g,%.12g,%.12g,%.12g,%.12g,%.12g", u[0], u[1], u[2], fr->w[0],
+                    fr->w[1], fr->w[2]);
+        } else if (dof->kind != HX_DOF_GROUND) {
+            fprintf(f, ",%.15g,%.15g", y[dof->q], u[0]);
+        }
+    }
+    for (int k = 0; k < m->ncouplers; ++k) {
+        const hx_coupler *c = &m->couplers[k];
+        const double lambda = d->lambda[k];
+        fprintf(f, ",%.15g", lambda);
+        for (int j = 0; j < c->njoints; ++j)
+            fprintf(f, ",%.15g", hx_dynamics_coupler_force(d, t, y, k, j));
+    }
+    for (int k = 0; k < m->nforces; ++k) {
+        double disp[6], velo[6];
+        hx_force_deformation(&d->state, k, disp, velo);
+        for (int j = 0; j < 6; ++j)
+            fprintf(f, ",%.12g", disp[j]);
+        for (int j = 0; j < 6; ++j)
+            fprintf(f, ",%.12g", d->element_load[6 * k + j]);
+    }
+    fprintf(f, ",%.15g,%.15g,%.3g,%.3g\n", energy->total, hx_dissipated(energy, energy0), phi,
+            phidot);
+    return 0;
+}
+

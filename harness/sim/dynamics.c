@@ -1,0 +1,132 @@
+/* The right-hand side and its set-up (dynamics.h). */
+#include "sim/dynamics.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int hx_dynamics_fail(hx_dynamics *d, const char *fmt, ...)
+{
+    if (!d->failed) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(d->message, sizeof d->message, fmt, ap);
+        va_end(ap);
+        d->failed = 1;
+    }
+    return -1;
+}
+
+int hx_dynamics_check_stop(hx_dynamics *d, const hx_binding *b)
+{
+    if (hx_messages_stopped(&d->s->messages))
+        return hx_dynamics_fail(d, "%s %d stopped the run (c_errmes STOP) at t = %g: %s",
+                                b->element, b->id, d->state.time, d->s->messages.stop_message);
+    return 0;
+}
+
+/* A force element's result axes are the world's for good: on ground, unturned. */
+static int world_aligned(const hx_model *m, const hx_force *f)
+{
+    const int axes = f->interface == HX_FORCE_GFOSUB ? f->ref_marker : f->j_marker;
+    if (axes < 0)
+        return 1;
+    if (!m->bodies[m->markers[axes].body].is_ground)
+        return 0;
+    for (int i = 0; i < 9; ++i)
+        if (m->markers[axes].R0[i] != (i % 4 == 0 ? 1.0 : 0.0))
+            return 0;
+    return 1;
+}
+
+int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg)
+{
+    memset(d, 0, sizeof *d);
+    d->s = s;
+    d->m = s->model;
+    const hx_model *m = d->m;
+    if (m->nunsimulated > 0)
+        return hx_fail(msg, "the model has %d element%s the harness does not simulate (the first:"
+                       " %s): its dynamics would not be the model's; check can still verify its"
+                       " user elements", m->nunsimulated, m->nunsimulated == 1 ? "" : "s",
+                       m->unsimulated);
+    const double *u = m->unit_scales;
+    d->ucf = m->has_units ? u[USRSUB_UNIT_TIME] * u[USRSUB_UNIT_TIME] * u[USRSUB_UNIT_FORCE] /
+                                (u[USRSUB_UNIT_MASS] * u[USRSUB_UNIT_LENGTH])
+                          : 1.0;
+    const int nb = m->nbodies, nc = m->ncouplers, nf = m->nforces;
+    d->dof = calloc((size_t)nb + 1, sizeof *d->dof);
+    d->coupler_binding = calloc((size_t)nc + 1, sizeof *d->coupler_binding);
+    d->force_binding = calloc((size_t)nf + 1, sizeof *d->force_binding);
+    d->lambda = calloc((size_t)nc + 1, sizeof *d->lambda);
+    d->element_load = calloc(6 * (size_t)nf + 1, sizeof *d->element_load);
+    d->world_aligned = calloc((size_t)nf + 1, 1);
+    d->force = calloc(3 * (size_t)nb + 1, sizeof *d->force);
+    d->torque = calloc(3 * (size_t)nb + 1, sizeof *d->torque);
+    if (!d->dof || !d->coupler_binding || !d->force_binding || !d->lambda || !d->element_load ||
+        !d->world_aligned || !d->force || !d->torque || hx_state_clone(&d->state, &s->state) != 0 ||
+        hx_state_clone(&d->probe, &s->state) != 0)
+        return hx_fail(msg, "out of memory");
+    if (hx_bodies_init(d, msg) != 0)
+        return -1;
+    d->load_work = d->nq + d->nu;
+    d->element_work = d->load_work + 1;
+    d->n = d->element_work + 1;
+    /* scratch: G (nc x nu), A (nc x nc), several vectors of nu and nc */
+    d->scratch = calloc((size_t)(nc * d->nu + nc * nc + 6 * (d->nu + nc) + 16), sizeof(double));
+    if (d->scratch == NULL)
+        return hx_fail(msg, "out of memory");
+    for (int k = 0; k < nc; ++k)
+        d->coupler_binding[k] = hx_binding_of_coupler(&s->bindings, k);
+    for (int k = 0; k < nf; ++k) {
+        d->force_binding[k] = hx_binding_of_force(&s->bindings, k);
+        d->world_aligned[k] = (unsigned char)world_aligned(m, &m->forces[k]);
+    }
+    return 0;
+}
+
+void hx_dynamics_free(hx_dynamics *d)
+{
+    free(d->dof);
+    free(d->coupler_binding);
+    free(d->force_binding);
+    free(d->lambda);
+    free(d->element_load);
+    free(d->world_aligned);
+    free(d->force);
+    free(d->torque);
+    free(d->scratch);
+    hx_state_free(&d->state);
+    hx_state_free(&d->probe);
+    memset(d, 0, sizeof *d);
+}
+
+void hx_dynamics_set_state(hx_dynamics *d, double t, const double *y)
+{
+    d->state.time = t;
+    hx_bodies_set_frames(d, y);
+    hx_state_update(&d->state);
+}
+
+int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot)
+{
+    const int nb = d->m->nbodies;
+    ++d->evaluations;
+    hx_dynamics_set_state(d, t, y);
+    memset(d->force, 0, sizeof(double) * 3 * (size_t)nb);
+    memset(d->torque, 0, sizeof(double) * 3 * (size_t)nb);
+    ydot[d->load_work] = hx_apply_loads(d, t);
+    if (hx_apply_element_forces(d, &ydot[d->element_work]) != 0)
+        return -1;
+    hx_bodies_accelerations(d, y, ydot);
+    return hx_apply_constraints(d, t, y, ydot + d->nq);
+}
+
+int hx_dynamics_initial_state(hx_dynamics *d, double *y)
+{
+    memset(y, 0, sizeof(double) * (size_t)d->n);
+    hx_bodies_initial_state(d, y);
+    d->max_phi = d->max_phidot = 0.0;
+    return hx_dynamics_project(d, 0.0, y);
+}

@@ -1,0 +1,37 @@
+/*
+ * A force element evaluated at a prescribed deformation of I relative to J
+ * (x, y, z, ax, ay, az in J axes, with rates vx..wz): a FIESUB element takes
+ * it directly; for a GFOSUB element I's body is placed, in a scratch state
+ * of the caller's, so that the host answers exactly that deformation. Used
+ * by the elastic energy, the rig and the checks; the state being simulated
+ * is never touched.
+ */
+#ifndef HX_SIM_ELEMENT_PROBE_H
+#define HX_SIM_ELEMENT_PROBE_H
+
+#include "host/session.h"
+#include "state/state.h"
+
+/* A rotation whose projection angles (AX, AY, AZ) are a; returns 0, or -1
+ * when Newton's method does not converge (angles near +-pi/2 or beyond). */
+int hx_rotation_from_angles(const double a[3], double R[9]);
+
+/* out = base with I's body moved so that the I marker sits at disp and moves
+ * at velo relative to the J marker (markers updated). */
+void hx_place_relative(const hx_state *base, hx_state *out, int i_marker, int j_marker,
+                       const double disp[6], const double velo[6]);
+
+/* Force and torque on I in J axes at a prescribed deformation and time t;
+ * dFdd and dFdv (may be NULL) receive the 6x6 partials, column-major:
+ * FIESUB's own, or central differences for GFOSUB. scratch: a state of the
+ * model to place bodies in. Returns 0, or -1 when the element stopped the run. */
+int hx_element_at(hx_session *s, hx_state *scratch, const hx_state *base, int force, double t,
+                  const double disp[6], const double velo[6], double F[6], double *dFdd,
+                  double *dFdv);
+
+/* Elastic energy -integral_0^1 F(s disp, 0) . disp ds (8-point Gauss-Legendre):
+ * the potential of a conservative element, in force * length units. */
+double hx_element_potential(hx_session *s, hx_state *scratch, const hx_state *base, int force,
+                            double t, const double disp[6]);
+
+#endif

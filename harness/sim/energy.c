@@ -1,0 +1,39 @@
+/* The energy of a state and its balance (dynamics.h). */
+#include "base/vecmath.h"
+#include "sim/dynamics.h"
+#include "sim/element_probe.h"
+#include "state/measures.h"
+
+hx_energy hx_dynamics_energy(hx_dynamics *d, double t, const double *y)
+{
+    const hx_model *m = d->m;
+    hx_dynamics_set_state(d, t, y);
+    double kinetic = 0.0, potential = 0.0;
+    for (int k = 0; k < m->nbodies; ++k) {
+        const hx_body_dof *dof = &d->dof[k];
+        const hx_frame *f = &d->state.bodies[k];
+        const double *u = y + d->nq + dof->u;
+        if (dof->kind == HX_DOF_GROUND)
+            continue;
+        if (dof->kind == HX_DOF_FREE) {
+            double Iw[3];
+            m3_apply(Iw, dof->inertia, u + 3);
+            kinetic += 0.5 * dof->mass * v3_dot(u, u) + 0.5 * v3_dot(u + 3, Iw);
+        } else {
+            kinetic += 0.5 * dof->mass * u[0] * u[0];
+        }
+        potential -= m->bodies[k].mass * v3_dot(m->gravity, f->p);
+    }
+    double elastic = 0.0;
+    for (int k = 0; k < m->nforces; ++k) {
+        double disp[6], velo[6];
+        hx_force_deformation(&d->state, k, disp, velo);
+        elastic += hx_element_potential(d->s, &d->probe, &d->state, k, t, disp);
+    }
+    hx_energy e;
+    e.kinetic = kinetic / d->ucf;
+    e.elastic = elastic;
+    e.total = (kinetic + potential) / d->ucf + elastic - y[d->load_work];
+    e.balance = (kinetic + potential) / d->ucf - y[d->load_work] - y[d->element_work];
+    return e;
+}

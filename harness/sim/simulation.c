@@ -1,0 +1,161 @@
+/* Simulations: integration, CSV output and summary (simulation.h). */
+#include "sim/simulation.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/clock.h"
+
+
+/* Energy the force elements took out since the start: the work they did not
+ * store as elastic energy (total - balance is elastic + their work). */
+double hx_dissipated(const hx_energy *e, const hx_energy *e0)
+{
+    return (e0->total - e0->balance) - (e->total - e->balance);
+}
+
+typedef struct run_context {
+    hx_dynamics *d;
+    const hx_simulation_options *opt;
+    hx_simulation_result *result;
+    double started, last_progress;
+} run_context;
+
+static int rhs(void *ctx, double t, const double *y, double *ydot)
+{
+    return hx_dynamics_rhs(((run_context *)ctx)->d, t, y, ydot);
+}
+
+static int project(void *ctx, double t, double *y)
+{
+    hx_dynamics *d = ((run_context *)ctx)->d;
+    if (hx_dynamics_project(d, t, y) != 0)
+        return -1;
+    return d->m->ncouplers > 0 ? 1 : 0;
+}
+
+static void advance(void *ctx, double *y, double h)
+{
+    hx_dynamics_advance_positions(((run_context *)ctx)->d, y, h);
+}
+
+static int output_work(run_context *rc, double t, const double *y);
+
+/* Output times: their work is timed apart from the integration's. */
+static int output(void *ctx, double t, const double *y)
+{
+    run_context *rc = ctx;
+    const double start = hx_seconds();
+    const int status = output_work(rc, t, y);
+    rc->result->output_seconds += hx_seconds() - start;
+    rc->result->outputs++;
+    return status;
+}
+
+static int output_work(run_context *rc, double t, const double *y)
+{
+    hx_dynamics *d = rc->d;
+    hx_simulation_result *r = rc->result;
+    if (!rc->opt->skip_energy || rc->opt->csv != NULL) {
+        const hx_energy e = hx_dynamics_energy(d, t, y);
+        r->energy_scale = fmax(r->energy_scale, fabs(e.kinetic));
+        r->energy_error_max = fmax(r->energy_error_max, fabs(e.total - r->energy0.total));
+        r->balance_error_max = fmax(r->balance_error_max, fabs(e.balance - r->energy0.balance));
+        if (rc->opt->csv != NULL && hx_csv_row(rc->opt->csv, d, t, y, &e, &r->energy0) != 0)
+            return 1;
+    }
+    if (rc->opt->observer != NULL && rc->opt->observer(rc->opt->observer_ctx, d, t, y) != 0)
+        return 1;
+    if (rc->opt->progress) {
+        const double wall = hx_seconds();
+        if (wall - rc->last_progress >= 1.0) {
+            const double end = rc->opt->integration.t_end;
+            fprintf(stderr, "\rrun: t = %.6g of %.6g (%.0f%%), %.1f s", t, end,
+                    end > 0 ? 100.0 * t / end : 100.0, wall - rc->started);
+            fflush(stderr);
+            rc->last_progress = wall;
+        }
+    }
+    return 0;
+}
+
+int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
+                hx_simulation_result *result)
+{
+    memset(result, 0, sizeof *result);
+    double *y = malloc(sizeof(double) * (size_t)d->n);
+    if (y == NULL) {
+        snprintf(result->message, sizeof result->message, "out of memory");
+        return -1;
+    }
+    d->failed = 0;
+    if (hx_dynamics_initial_state(d, y) != 0) {
+        snprintf(result->message, sizeof result->message, "%s", d->message);
+        result->status = HX_INTEGRATION_FAILED;
+        free(y);
+        return -1;
+    }
+    result->energy0 = hx_dynamics_energy(d, 0.0, y);
+    result->energy_scale = fmax(fabs(result->energy0.total), fabs(result->energy0.kinetic));
+    run_context rc = {d, opt, result, hx_seconds(), hx_seconds()};
+    if (opt->csv != NULL) {
+        hx_csv_header(opt->csv, d);
+        hx_csv_row(opt->csv, d, 0.0, y, &result->energy0, &result->energy0);
+    }
+    if (opt->observer != NULL)
+        opt->observer(opt->observer_ctx, d, 0.0, y);
+    hx_ode ode = {d->n, d->nq, d->nu, rhs, project, advance, &rc};
+    hx_integrator_options io = opt->integration;
+    io.output = output;
+    const long evaluations_before = d->evaluations;
+    const double start = hx_seconds();
+    result->status = hx_integrate(&ode, 0.0, y, &io, &result->stats);
+    result->seconds = hx_seconds() - start;
+    (void)evaluations_before;
+    if (opt->progress && result->seconds >= 1.0)
+        fprintf(stderr, "\n");
+    result->energy_end = hx_dynamics_energy(d, result->stats.t_reached, y);
+    result->dissipated = hx_dissipated(&result->energy_end, &result->energy0);
+    result->max_phi = d->max_phi;
+    result->max_phidot = d->max_phidot;
+    if (d->failed)
+        snprintf(result->message, sizeof result->message, "%s", d->message);
+    else if (result->status != HX_INTEGRATION_OK)
+        snprintf(result->message, sizeof result->message, "integration %s at t = %.6g",
+                 hx_status_text(result->status), result->stats.t_reached);
+    if (y_end != NULL)
+        memcpy(y_end, y, sizeof(double) * (size_t)d->n);
+    free(y);
+    return result->status == HX_INTEGRATION_OK ? 0 : -1;
+}
+
+void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_options *opt,
+                           const hx_simulation_result *r)
+{
+    (void)d;
+    fprintf(f, "run: %s with %s to t = %.6g\n", hx_status_text(r->status),
+            hx_method_name(opt->integration.method), r->stats.t_reached);
+    fprintf(f, "  steps %ld, rejected %ld, right-hand sides %ld, last step %.3g\n", r->stats.steps,
+            r->stats.rejected, r->stats.evaluations, r->stats.last_step);
+    const double stepping = r->seconds - r->output_seconds;
+    fprintf(f, "  run time %.3f s: %.3f s stepping (%.3g us per right-hand side), %.3f s at %ld"
+            " output times\n", r->seconds, stepping,
+            r->stats.evaluations ? 1e6 * stepping / (double)r->stats.evaluations : 0.0,
+            r->output_seconds, r->outputs);
+    if (d->m->ncouplers > 0)
+        fprintf(f, "  largest constraint residual |phi| %.3g, |dphi/dt| %.3g\n", r->max_phi,
+                r->max_phidot);
+    const double scale = r->energy_scale > 0.0 ? r->energy_scale : 1.0;
+    fprintf(f, "  energy (kinetic + potential + elastic - work of loads) %.10g -> %.10g\n",
+            r->energy0.total, r->energy_end.total);
+    fprintf(f, "  elements dissipated %.6g; largest energy change %.3g (%.3g relative)\n",
+            r->dissipated, r->energy_error_max, r->energy_error_max / scale);
+    fprintf(f, "  energy balance (dissipation counted): largest error %.3g (%.3g relative)\n",
+            r->balance_error_max, r->balance_error_max / scale);
+    fprintf(f, "  (relative to max(|E(0)|, largest kinetic energy) = %.6g)\n", r->energy_scale);
+    if (r->stats.stiff)
+        fprintf(f, "  dopri5: the problem seems to become stiff at t = %.6g\n", r->stats.t_stiff);
+    if (r->message[0] != '\0')
+        fprintf(f, "  %s\n", r->message);
+}

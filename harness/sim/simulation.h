@@ -1,0 +1,60 @@
+/*
+ * One simulation of a session's model: the dynamics integrated by the chosen
+ * method, CSV rows at the output times, and a summary (steps, evaluations,
+ * run time, constraint residuals, energy error and the elements' dissipation).
+ */
+#ifndef HX_SIMULATION_H
+#define HX_SIMULATION_H
+
+#include <stdio.h>
+
+#include "sim/dynamics.h"
+#include "sim/integrator.h"
+
+/* Called at each output time after the CSV row; non-zero stops the run. */
+typedef int hx_observer_fn(void *ctx, hx_dynamics *d, double t, const double *y);
+
+typedef struct hx_simulation_options {
+    hx_integrator_options integration;
+    FILE *csv;               /* may be NULL */
+    int progress;            /* print a progress line on runs longer than a second */
+    hx_observer_fn *observer;
+    void *observer_ctx;
+    int skip_energy;         /* no energy at the output times (timed runs; no CSV) */
+} hx_simulation_options;
+
+typedef struct hx_simulation_result {
+    hx_status status;
+    hx_integrator_stats stats;
+    double seconds;          /* wall time of the integration */
+    double output_seconds;   /* of which at the output times (energy, CSV rows, observer) */
+    long outputs;
+    hx_energy energy0, energy_end;
+    double energy_error_max;  /* largest |E(t) - E(0)| at the output times */
+    double balance_error_max; /* the same of the energy balance (dissipation counted) */
+    double energy_scale;      /* max(|E(0)|, largest kinetic energy): relative errors use it */
+    double dissipated;        /* energy the force elements took out by the end */
+    double max_phi, max_phidot;
+    char message[1024];
+} hx_simulation_result;
+
+/* Integrates from the model's initial state; y_end (may be NULL) receives
+ * the final state (d->n values). */
+int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
+                hx_simulation_result *result);
+
+/* Prints the summary lines of a result. */
+void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_options *opt,
+                           const hx_simulation_result *result);
+
+/* Energy the force elements took out between two energies of a run: the work
+ * they did not store as elastic energy. */
+double hx_dissipated(const hx_energy *e, const hx_energy *e0);
+
+/* The CSV header and one row of a state (re-evaluating the right-hand side at
+ * that state, so that multipliers and element loads belong to it). */
+void hx_csv_header(FILE *f, const hx_dynamics *d);
+int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, const hx_energy *energy,
+               const hx_energy *energy0);
+
+#endif

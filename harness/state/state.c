@@ -1,0 +1,106 @@
+/* The model's state and its kinematics stage (state.h). */
+#include "state/state.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "base/vecmath.h"
+
+const hx_frame hx_world_frame = {{0, 0, 0}, {1, 0, 0, 0, 1, 0, 0, 0, 1}, {0, 0, 0}, {0, 0, 0}};
+
+void hx_marker_frame(const hx_model *m, const hx_frame *b, int marker, hx_frame *out)
+{
+    const hx_marker *mk = &m->markers[marker];
+    if (mk->local_axes)
+        m3_copy(out->R, b->R);
+    else
+        m3_mul(out->R, b->R, mk->R_local);
+    v3_copy(out->w, b->w);
+    if (mk->at_body_origin) {
+        v3_copy(out->p, b->p);
+        v3_copy(out->v, b->v);
+        return;
+    }
+    double r[3], wr[3];
+    m3_apply(r, b->R, mk->r_local);
+    v3_add(out->p, b->p, r);
+    v3_cross(wr, b->w, r);
+    v3_add(out->v, b->v, wr);
+}
+
+static void all_markers(hx_state *s)
+{
+    const hx_model *m = s->model;
+    for (int k = 0; k < m->nmarkers; ++k)
+        hx_marker_frame(m, &s->bodies[m->markers[k].body], k, &s->markers[k]);
+}
+
+int hx_state_init(hx_state *s, const hx_model *m)
+{
+    memset(s, 0, sizeof *s);
+    s->model = m;
+    s->bodies = calloc((size_t)m->nbodies + 1, sizeof *s->bodies);
+    s->markers = calloc((size_t)m->nmarkers + 1, sizeof *s->markers);
+    s->moving = calloc((size_t)m->nmarkers + 1, sizeof *s->moving);
+    if (s->bodies == NULL || s->markers == NULL || s->moving == NULL) {
+        hx_state_free(s);
+        return -1;
+    }
+    for (int k = 0; k < m->nbodies; ++k) {
+        const hx_body *b = &m->bodies[k];
+        hx_frame *f = &s->bodies[k];
+        v3_copy(f->p, b->p0);
+        m3_copy(f->R, b->R0);
+        v3_copy(f->v, b->v0);
+        v3_copy(f->w, b->w0);
+    }
+    for (int k = 0; k < m->nmarkers; ++k)
+        if (m->markers[k].tracked && !m->bodies[m->markers[k].body].is_ground)
+            s->moving[s->nmoving++] = k;
+    all_markers(s);
+    return 0;
+}
+
+void hx_state_free(hx_state *s)
+{
+    free(s->bodies);
+    free(s->markers);
+    free(s->moving);
+    memset(s, 0, sizeof *s);
+}
+
+int hx_state_clone(hx_state *to, const hx_state *from)
+{
+    if (hx_state_init(to, from->model) != 0)
+        return -1;
+    hx_state_copy(to, from);
+    return 0;
+}
+
+void hx_state_copy(hx_state *to, const hx_state *from)
+{
+    const hx_model *m = from->model;
+    to->time = from->time;
+    memcpy(to->bodies, from->bodies, sizeof *to->bodies * (size_t)m->nbodies);
+    memcpy(to->markers, from->markers, sizeof *to->markers * (size_t)m->nmarkers);
+}
+
+void hx_state_update(hx_state *s)
+{
+    const hx_model *m = s->model;
+    for (int n = 0; n < s->nmoving; ++n) {
+        const int k = s->moving[n];
+        hx_marker_frame(m, &s->bodies[m->markers[k].body], k, &s->markers[k]);
+    }
+}
+
+const hx_frame *hx_state_marker(const hx_state *s, int index, hx_frame *scratch)
+{
+    if (index < 0)
+        return &hx_world_frame;
+    const hx_model *m = s->model;
+    if (m->markers[index].tracked)
+        return &s->markers[index];
+    hx_marker_frame(m, &s->bodies[m->markers[index].body], index, scratch);
+    return scratch;
+}

@@ -1,0 +1,294 @@
+/* Cost per call of the user entries (call_cost.h). */
+#define _GNU_SOURCE /* sched_setaffinity, sched_getcpu */
+#include "tools/bench/call_cost.h"
+
+#include <sched.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "base/clock.h"
+
+#include "state/measures.h"
+#include "tools/check/coupler_ranges.h"
+
+#define SAMPLE_POINTS 256
+#define BATCH_NS 2e6 /* aim for batches of about 2 ms */
+
+
+static int compare_doubles(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+double hx_median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof *v, compare_doubles);
+    return v[n / 2];
+}
+
+/* ---- the timed bodies ------------------------------------------------------------ */
+
+typedef struct coupler_bench {
+    usrsub_coupler_fn *fn;
+    int id, npar, ndisp;
+    double *par;
+    double disp[SAMPLE_POINTS][3];
+    double out[9];
+    double sink;
+} coupler_bench;
+
+static void run_coupler(void *ctx, long calls)
+{
+    coupler_bench *b = ctx;
+    int id = b->id, npar = b->npar, ndisp = b->ndisp, iflag = 0;
+    double time = 0.0, sink = 0.0;
+    for (long k = 0; k < calls; ++k) {
+        b->fn(&id, &time, b->par, &npar, b->disp[k & (SAMPLE_POINTS - 1)], &ndisp, &iflag, b->out);
+        sink += b->out[0];
+    }
+    b->sink += sink;
+}
+
+typedef struct gfosub_bench {
+    usrsub_gfosub_fn *fn;
+    hx_call *call;
+    int id, npar;
+    double *par;
+    double out[6];
+    double sink;
+} gfosub_bench;
+
+static void run_gfosub(void *ctx, long calls)
+{
+    gfosub_bench *b = ctx;
+    int id = b->id, npar = b->npar, dflag = 0, iflag = 0;
+    double time = 0.0, sink = 0.0;
+    hx_host_bind(b->call);
+    for (long k = 0; k < calls; ++k) {
+        b->fn(&id, &time, b->par, &npar, &dflag, &iflag, b->out);
+        sink += b->out[0];
+    }
+    hx_host_unbind();
+    b->sink += sink;
+}
+
+typedef struct fiesub_bench {
+    usrsub_fiesub_fn *fn;
+    int id, npar;
+    double *par;
+    double disp[SAMPLE_POINTS][6], velo[SAMPLE_POINTS][6];
+    double field[6], dfd[36], dfv[36];
+    double sink;
+} fiesub_bench;
+
+static void run_fiesub(void *ctx, long calls)
+{
+    fiesub_bench *b = ctx;
+    int id = b->id, npar = b->npar, dflag = 0, iflag = 0;
+    double time = 0.0, sink = 0.0;
+    for (long k = 0; k < calls; ++k) {
+        const int s = (int)(k & (SAMPLE_POINTS - 1));
+        b->fn(&id, &time, b->par, &npar, b->disp[s], b->velo[s], &dflag, &iflag, b->field,
+              b->dfd, b->dfv);
+        sink += b->field[0] + b->dfd[0];
+    }
+    b->sink += sink;
+}
+
+/* Calls per batch so that a batch takes about BATCH_NS. */
+static long calibrate(void (*fn)(void *, long), void *ctx)
+{
+    long calls = 1000;
+    for (;;) {
+        const double start = hx_seconds();
+        fn(ctx, calls);
+        const double ns = 1e9 * (hx_seconds() - start);
+        if (ns > 0.2 * BATCH_NS || calls > 100000000L)
+            return (long)fmax(1000.0, (double)calls * BATCH_NS / fmax(ns, 1.0));
+        calls *= 4;
+    }
+}
+
+/* Coupler inputs across each term's data (as check samples them). */
+static void coupler_points(hx_session *s, hx_binding *b, int n, coupler_bench *cb)
+{
+    const hx_coupler *c = &s->model->couplers[b->index];
+    double q0[3] = {0}, lo[3] = {0}, hi[3] = {0};
+    for (int i = 0; i < n; ++i)
+        q0[i] = hx_joint_coordinate(&s->state, c->joint[i]);
+    hx_coupler_ranges(s->model, b->par, b->npar, n, q0, lo, hi);
+    for (int i = 0; i < n; ++i)
+        for (int k = 0; k < SAMPLE_POINTS; ++k)
+            cb->disp[k][i] = lo[i] + (hi[i] - lo[i]) * ((k * 37 + i * 11) % SAMPLE_POINTS + 0.5) / SAMPLE_POINTS;
+}
+
+static void field_points(hx_session *s, hx_binding *b, fiesub_bench *fb)
+{
+    double disp[6], velo[6];
+    hx_force_deformation(&s->state, b->index, disp, velo);
+    for (int k = 0; k < SAMPLE_POINTS; ++k)
+        for (int i = 0; i < 6; ++i) {
+            const double wobble = 1.0 + 1e-3 * ((k * 7 + i) % 13);
+            fb->disp[k][i] = disp[i] * wobble;
+            fb->velo[k][i] = velo[i] * wobble;
+        }
+}
+
+/* Busy work until the processor has left its idle clock (about 0.3 s). */
+static void spin_up(void)
+{
+    volatile double x = 1.0;
+    const double until = hx_seconds() + 0.3;
+    while (hx_seconds() < until)
+        for (int k = 0; k < 10000; ++k)
+            x = x * 1.0000001 + 1e-9;
+}
+
+/* Stays on the processor it runs on: moving between cores (of different
+ * clocks, or shared with a neighbour) doubled timings on our 2-core machines. */
+static void pin_to_this_cpu(void)
+{
+    const int cpu = sched_getcpu();
+    if (cpu < 0)
+        return;
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    CPU_SET(cpu, &set);
+    sched_setaffinity(0, sizeof set, &set);
+}
+
+/* One timed entry: its batch body, context and batch size. */
+typedef struct timed_entry {
+    void (*run)(void *ctx, long calls);
+    void *ctx;
+    long calls;
+    double *ns; /* one per round */
+} timed_entry;
+
+int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int capacity)
+{
+    return hx_measure_call_costs_with(s, repeats, costs, capacity, NULL, 0);
+}
+
+int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
+                               hx_timed_body *extra, int nextra)
+{
+    timed_entry entries[256 + 4];
+    if (nextra > 4)
+        nextra = 4;
+    void *contexts[256];
+    int rows = 0, ncontexts = 0;
+    if (capacity > 256)
+        capacity = 256;
+    pin_to_this_cpu();
+    for (int k = 0; k < s->bindings.count; ++k) {
+        hx_binding *b = &s->bindings.items[k];
+        if (b->kind == HX_BIND_COUPLER) {
+            const hx_coupler *c = &s->model->couplers[b->index];
+            for (int fn = 0; fn < 3 && rows < capacity; ++fn) {
+                coupler_bench *cb = calloc(1, sizeof *cb);
+                cb->id = b->id, cb->npar = b->npar, cb->ndisp = c->njoints, cb->par = b->par;
+                cb->fn = b->coupler[fn];
+                coupler_points(s, b, c->njoints, cb);
+                contexts[ncontexts++] = cb;
+                entries[rows] = (timed_entry){run_coupler, cb, 0, NULL};
+                hx_call_cost *r = &costs[rows++];
+                snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
+                snprintf(r->function, sizeof r->function, "%s", b->names[fn]);
+                r->host_calls = r->dependency_calls = 0;
+                r->force_index = -1;
+            }
+        } else if (b->kind == HX_BIND_GFOSUB && rows < capacity) {
+            hx_call dep, *eval = calloc(1, sizeof *eval);
+            double out[6];
+            hx_binding_call_init(b, &dep, 0, &s->state, 1);
+            hx_call_gfosub(b, &s->state, 0, 1, out, &dep);
+            hx_binding_call_init(b, eval, 0, &s->state, 0);
+            hx_call_gfosub(b, &s->state, 0, 0, out, eval);
+            gfosub_bench *gb = calloc(1, sizeof *gb);
+            *gb = (gfosub_bench){b->gfosub, eval, b->id, b->npar, b->par, {0}, 0.0};
+            contexts[ncontexts++] = gb;
+            contexts[ncontexts++] = eval;
+            entries[rows] = (timed_entry){run_gfosub, gb, 0, NULL};
+            hx_call_cost *r = &costs[rows++];
+            snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
+            snprintf(r->function, sizeof r->function, "%s", b->names[0]);
+            r->dependency_calls = dep.host_calls;
+            r->host_calls = eval->host_calls;
+            r->force_index = b->index;
+        } else if (b->kind == HX_BIND_FIESUB && rows < capacity) {
+            fiesub_bench *fb = calloc(1, sizeof *fb);
+            fb->fn = b->fiesub, fb->id = b->id, fb->npar = b->npar, fb->par = b->par;
+            field_points(s, b, fb);
+            contexts[ncontexts++] = fb;
+            entries[rows] = (timed_entry){run_fiesub, fb, 0, NULL};
+            hx_call_cost *r = &costs[rows++];
+            snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
+            snprintf(r->function, sizeof r->function, "%s", b->names[0]);
+            r->host_calls = r->dependency_calls = 0;
+            r->force_index = b->index;
+        }
+    }
+    const int timed = rows + nextra;
+    for (int k = 0; k < nextra; ++k)
+        entries[rows + k] = (timed_entry){extra[k].run, extra[k].ctx, 0, NULL};
+    spin_up();
+    for (int k = 0; k < timed; ++k) {
+        entries[k].calls = calibrate(entries[k].run, entries[k].ctx);
+        entries[k].ns = malloc(sizeof(double) * (size_t)repeats);
+    }
+    /* rounds of one batch per entry: a slow spell of the machine falls on all alike */
+    for (int round = 0; round < repeats; ++round)
+        for (int k = 0; k < timed; ++k) {
+            const double start = hx_seconds();
+            entries[k].run(entries[k].ctx, entries[k].calls);
+            entries[k].ns[round] = 1e9 * (hx_seconds() - start) / (double)entries[k].calls;
+        }
+    for (int k = 0; k < nextra; ++k) {
+        memcpy(extra[k].rounds, entries[rows + k].ns, sizeof(double) * (size_t)repeats);
+        free(entries[rows + k].ns);
+    }
+    for (int k = 0; k < rows; ++k) {
+        costs[k].rounds = entries[k].ns; /* the caller frees them */
+        double *sorted = malloc(sizeof(double) * (size_t)repeats);
+        memcpy(sorted, entries[k].ns, sizeof(double) * (size_t)repeats);
+        costs[k].median_ns = hx_median(sorted, repeats);
+        costs[k].min_ns = sorted[0];
+        costs[k].max_ns = sorted[repeats - 1];
+        free(sorted);
+    }
+    for (int k = 0; k < ncontexts; ++k)
+        free(contexts[k]);
+    return rows;
+}
+
+void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count)
+{
+    fprintf(f, "%-26s %-20s %12s %12s %12s %10s %10s\n", "element", "function", "median ns",
+            "min ns", "max ns", "host/eval", "host/dep");
+    for (int k = 0; k < count; ++k)
+        fprintf(f, "%-26s %-20s %12.1f %12.1f %12.1f %10d %10d\n", costs[k].element,
+                costs[k].function, costs[k].median_ns, costs[k].min_ns, costs[k].max_ns,
+                costs[k].host_calls, costs[k].dependency_calls);
+}
+
+void hx_call_costs_free(hx_call_cost *costs, int count)
+{
+    for (int k = 0; k < count; ++k) {
+        free(costs[k].rounds);
+        costs[k].rounds = NULL;
+    }
+}
+
+double hx_added_cost(const hx_call_cost *base, const hx_call_cost *other, int repeats)
+{
+    double *d = malloc(sizeof(double) * (size_t)repeats);
+    if (d == NULL)
+        return NAN;
+    for (int k = 0; k < repeats; ++k)
+        d[k] = other->rounds[k] - base->rounds[k];
+    const double median = hx_median(d, repeats);
+    free(d);
+    return median;
+}

@@ -1,0 +1,50 @@
+/*
+ * Cost per call of every user-subroutine entry of a session, through the
+ * dlopen'd function pointers: pinned to one processor, after a warm-up, the
+ * median over rounds of timed batches (one batch per entry per round), with
+ * the host calls one evaluation makes.
+ */
+#ifndef HX_CALL_COST_H
+#define HX_CALL_COST_H
+
+#include <stdio.h>
+
+#include "host/session.h"
+
+typedef struct hx_call_cost {
+    char element[64];
+    char function[32];
+    double median_ns, min_ns, max_ns;
+    int host_calls;       /* per evaluation */
+    int dependency_calls; /* in the dependency pass */
+    int force_index;      /* the model's force element, or -1 (a coupler) */
+    double *rounds;       /* ns per call in each round, in round order */
+} hx_call_cost;
+
+/* Times each entry of each user element (COUSUB, COUXX and COUXX2 separately).
+ * Returns the number of rows written into costs (at most capacity). */
+int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int capacity);
+
+/* Further bodies timed in the same rounds as the entries (one call per
+ * iteration), e.g. a right-hand side that calls them. */
+typedef struct hx_timed_body {
+    void (*run)(void *ctx, long calls);
+    void *ctx;
+    double *rounds; /* out: ns per call in each round (repeats values, caller's array) */
+} hx_timed_body;
+
+int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
+                               hx_timed_body *extra, int nextra);
+
+void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count);
+
+/* The median of n timings (sorts v in place; v[0] and v[n-1] are then the
+ * extremes). */
+double hx_median(double *v, int n);
+void hx_call_costs_free(hx_call_cost *costs, int count);
+
+/* Median over rounds of other's cost minus base's in the same round: a slow
+ * spell of the machine cancels out of the difference. */
+double hx_added_cost(const hx_call_cost *base, const hx_call_cost *other, int repeats);
+
+#endif

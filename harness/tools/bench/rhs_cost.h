@@ -1,0 +1,29 @@
+/*
+ * The harness's own cost per right-hand-side evaluation. The evaluation is
+ * timed twice in the same rounds: as it is, and with every user entry swapped
+ * for a stand-in that only replays the outputs the entry gave at that state,
+ * and the stand-ins are timed alone. The second less the third is the
+ * harness's share (the equations of motion, frames, force application, the
+ * calls); the rest of the first is what the user entries cost inside a real
+ * evaluation (their host queries included, as in the cost per call). Taking both round by round lets a slow spell of the
+ * machine cancel out.
+ */
+#ifndef HX_RHS_COST_H
+#define HX_RHS_COST_H
+
+#include "tools/bench/call_cost.h"
+#include "sim/dynamics.h"
+
+typedef struct hx_rhs_cost {
+    double rhs_ns;     /* median per evaluation */
+    double harness_ns; /* median over rounds of (stand-in evaluation - stand-ins alone) */
+    double user_ns;    /* median over rounds of (evaluation - harness) */
+    int user_calls;    /* entry calls per evaluation */
+} hx_rhs_cost;
+
+/* Fills costs (as hx_measure_call_costs; *ncosts rows) and out at the
+ * model's initial state. Returns 0, or -1 with msg. */
+int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
+                        int *ncosts, hx_rhs_cost *out, hx_message *msg);
+
+#endif

@@ -1,0 +1,34 @@
+/*
+ * Stability limits of the explicit integrators for a model: the fastest mode
+ * of the dynamics linearized at a state (its eigenvalue lambda, by power
+ * iteration on J^2 with J v from central differences of the right-hand side,
+ * then a two-vector Arnoldi step for the pair it converged to), and for each
+ * method the largest fixed step h with h lambda inside its stability region.
+ */
+#ifndef HX_STABILITY_H
+#define HX_STABILITY_H
+
+#include "sim/dynamics.h"
+#include "sim/integrator.h"
+
+#define HX_METHOD_COUNT 4
+
+typedef struct hx_stability {
+    double magnitude;                 /* |lambda|, per time unit */
+    double re, im;                    /* lambda = re + i im, im >= 0 */
+    double max_step[HX_METHOD_COUNT]; /* by hx_method: 0 = no stable step, INFINITY = any */
+    int evaluations;                  /* right-hand sides spent */
+} hx_stability;
+
+/* Estimates at state y and time t. Returns 0, or -1 with msg (the
+ * right-hand side failed). */
+int hx_estimate_stability(hx_dynamics *d, double t, const double *y, hx_stability *out,
+                          hx_message *msg);
+
+/* Largest h with h lambda stable for the method (lambda = re + i im). */
+double hx_stable_step(hx_method method, double re, double im);
+
+/* One line: "|lambda| = ...; largest stable step: euler ..., ...". */
+void hx_stability_text(const hx_stability *s, char *text, size_t size);
+
+#endif

@@ -1,0 +1,32 @@
+/*
+ * The checks `usrsub-harness check` runs on each user element; each prints
+ * its findings, naming the routine, the output and input at fault and the
+ * point of the worst error, and returns the number of failures.
+ *  - couplers: COUXX against differences of COUSUB and COUXX2 against
+ *    differences of COUXX, at points that vary each joint on its own;
+ *  - FIESUB: dfddis and dfdvel against differences of the field;
+ *  - GFOSUB: the dependency audit (every body state the force depends on is
+ *    reached by a declared query, every declared query is used, nothing is
+ *    read outside them), at states and times spread over the first second;
+ *  - every element: the history audit (the same inputs give bit-identical
+ *    outputs whatever was called before, and dflag calls change nothing).
+ * Reads outside the declared dependencies and queries the host refused, at
+ * any call of the check, fail it too (hx_check_queries).
+ */
+#ifndef HX_TOOLS_CHECK_CHECKS_H
+#define HX_TOOLS_CHECK_CHECKS_H
+
+#include <stdio.h>
+
+#include "host/session.h"
+
+#define HX_DERIVATIVE_TOLERANCE_TEXT "1e-6"
+
+int hx_check_coupler(hx_session *s, hx_binding *b, FILE *out);
+int hx_check_field_partials(hx_session *s, hx_binding *b, FILE *out);
+int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out);
+int hx_audit_history(hx_session *s, hx_binding *b, FILE *out);
+/* What the host noted of the element over every call so far. */
+int hx_check_queries(const hx_binding *b, FILE *out);
+
+#endif

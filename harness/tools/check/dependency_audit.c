@@ -1,0 +1,209 @@
+/*
+ * The dependency audit of a GFOSUB element (checks.h). At deformed, moving
+ * states spread over the first second of the model (every term awake in some
+ * of them): every body state (position, orientation, velocity, angular
+ * velocity) the force depends on, by finite differences, must be reached by
+ * a query declared in the dependency pass; every declared query must change
+ * the force at one of the states at least when its answer changes. A state
+ * whose force does not repeat is not judged here: the history audit names
+ * that.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "base/vecmath.h"
+#include "sim/element_probe.h"
+#include "tools/check/checks.h"
+#include "tools/check/element_samples.h"
+
+static int gfosub_at(hx_binding *b, const hx_state *s, hx_call *call, double out[6])
+{
+    hx_call local;
+    if (call == NULL) {
+        hx_binding_call_init(b, &local, 0, s, 0);
+        call = &local;
+    }
+    hx_call_gfosub(b, s, 0, 0, out, call);
+    return hx_messages_stopped(b->messages) ? -1 : 0;
+}
+
+static int differs(const double *a, const double *b, int n, double tolerance)
+{
+    for (int k = 0; k < n; ++k)
+        if (fabs(a[k] - b[k]) > tolerance * (1.0 + fabs(a[k])))
+            return 1;
+    return 0;
+}
+
+/* Moves one of a body's twelve states by delta. */
+static void perturb_body(hx_frame *f, int c, double delta)
+{
+    double e[3] = {0, 0, 0};
+    e[c % 3] = 1.0;
+    if (c < 3) {
+        f->p[c] += delta;
+    } else if (c < 6) {
+        double R[9];
+        m3_axis_angle(R, e, delta);
+        m3_mul(f->R, R, f->R);
+    } else if (c < 9) {
+        f->v[c - 6] += delta;
+    } else {
+        f->w[c - 9] += delta;
+    }
+}
+
+typedef struct audit {
+    hx_session *s;
+    hx_binding *b;
+    hx_state base, moved;
+    int failures, checked, influencing, unreached, unrepeatable;
+    unsigned used[HX_MAX_QUERIES];
+    int counts[HX_MAX_QUERIES];
+    FILE *out;
+} audit;
+
+/* Body states that move the force but no declared query. */
+static int audit_states(audit *a, const double scale[12], const double out0[6])
+{
+    static const char *const states[12] = {"x", "y", "z", "rotation about x", "rotation about y",
+                                           "rotation about z", "vx", "vy", "vz", "wx", "wy", "wz"};
+    const hx_model *m = a->s->model;
+    hx_binding *b = a->b;
+    char text[512];
+    for (int k = 0; k < m->nbodies; ++k) {
+        if (m->bodies[k].is_ground)
+            continue;
+        for (int c = 0; c < 12; ++c) {
+            hx_state_copy(&a->moved, &a->base);
+            perturb_body(&a->moved.bodies[k], c, 1e-5 * scale[c < 3 ? 0 : c < 6 ? 3 : c < 9 ? 6 : 9]);
+            hx_state_update(&a->moved);
+            double out1[6];
+            if (gfosub_at(b, &a->moved, NULL, out1) != 0)
+                return -1;
+            ++a->checked;
+            if (!differs(out0, out1, 6, 1e-11))
+                continue;
+            ++a->influencing;
+            int reached = 0;
+            for (int q = 0; q < b->deps.count && !reached; ++q) {
+                const hx_query *dq = &b->deps.query[q];
+                double a0[6], a1[6];
+                const int n0 = hx_answer_query(&a->base, dq->fnc, dq->ipar, dq->nsize, dq->is_array, a0);
+                const int n1 = hx_answer_query(&a->moved, dq->fnc, dq->ipar, dq->nsize, dq->is_array, a1);
+                reached = n0 > 0 && n0 == n1 && differs(a0, a1, n0, 1e-13);
+            }
+            if (!reached) {
+                fprintf(a->out, "  %s %d: FAIL: the force depends on body %d's %s, which no"
+                        " declared query (%s) reaches\n", b->element, b->id, m->bodies[k].id,
+                        states[c], hx_dependencies_text(&b->deps, text, sizeof text));
+                ++a->unreached;
+                ++a->failures;
+            }
+        }
+    }
+    return 0;
+}
+
+/* Which components of each declared query move the force at the base state. */
+static int audit_queries(audit *a, const double out0[6])
+{
+    hx_binding *b = a->b;
+    for (int q = 0; q < b->deps.count; ++q) {
+        double v[6];
+        const hx_query *dq = &b->deps.query[q];
+        a->counts[q] = hx_answer_query(&a->base, dq->fnc, dq->ipar, dq->nsize, dq->is_array, v);
+        for (int c = 0; c < a->counts[q]; ++c) {
+            hx_call call;
+            double out1[6];
+            hx_binding_call_init(b, &call, 0, &a->base, 0);
+            call.perturb_query = q;
+            call.perturb_component = c;
+            call.perturb_delta = 1e-6 * (1.0 + fabs(v[c]));
+            if (gfosub_at(b, &a->base, &call, out1) != 0)
+                return -1;
+            if (differs(out0, out1, 6, 1e-12))
+                a->used[q] |= 1u << c;
+        }
+    }
+    return 0;
+}
+
+int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
+{
+    const hx_model *m = s->model;
+    const hx_force *f = &m->forces[b->index];
+    audit a;
+    memset(&a, 0, sizeof a);
+    a.s = s, a.b = b, a.out = out;
+    if (hx_state_clone(&a.base, &s->state) != 0 || hx_state_clone(&a.moved, &s->state) != 0) {
+        hx_state_free(&a.base);
+        return 1;
+    }
+    double t_last = 0.0;
+    for (int sample = 1; sample < HX_FORCE_SAMPLES && a.failures == 0; ++sample) {
+        double disp[6], velo[6], scale[12], out0[6], again[6];
+        hx_sample_element_state(s, b->index, sample, disp, velo, scale);
+        hx_place_relative(&s->state, &a.base, f->i_marker, f->j_marker, disp, velo);
+        a.base.time = t_last = hx_sample_time(m, sample);
+        for (int k = 0; k < m->nbodies; ++k) /* J's body moves too, to expose frame terms */
+            if (!m->bodies[k].is_ground && k != m->markers[f->i_marker].body)
+                for (int c = 6; c < 12; ++c)
+                    perturb_body(&a.base.bodies[k], c, 0.3 * scale[c < 9 ? 6 : 9]);
+        hx_state_update(&a.base);
+        if (gfosub_at(b, &a.base, NULL, out0) != 0 || gfosub_at(b, &a.base, NULL, again) != 0) {
+            ++a.failures;
+            break;
+        }
+        if (memcmp(out0, again, sizeof out0) != 0) {
+            ++a.unrepeatable; /* a hidden state: the history audit says so */
+            continue;
+        }
+        if (audit_states(&a, scale, out0) != 0 || audit_queries(&a, out0) != 0) {
+            ++a.failures;
+            break;
+        }
+    }
+    char declared[512], used_text[512] = "";
+    size_t used_len = 0;
+    for (int q = 0; q < b->deps.count; ++q) {
+        char qt[64];
+        hx_query_text(&b->deps.query[q], qt, sizeof qt);
+        used_len += (size_t)snprintf(used_text + used_len, sizeof used_text - used_len,
+                                     "%s%s uses %d of %d", q ? ", " : "", qt,
+                                     __builtin_popcount(a.used[q]), a.counts[q]);
+        if (a.used[q] == 0 && a.unrepeatable == 0) {
+            fprintf(out, "  %s %d: FAIL: declares %s but its force depends on it at none of the"
+                    " %d states\n", b->element, b->id, qt, HX_FORCE_SAMPLES - 1);
+            ++a.failures;
+        }
+    }
+    hx_dependencies_text(&b->deps, declared, sizeof declared);
+    if (a.unrepeatable == HX_FORCE_SAMPLES - 1) {
+        fprintf(out, "  %s %d: dependency audit: not judged: at none of its %d states does the force"
+                " repeat when called twice (the history audit says why); declared %s\n",
+                b->element, b->id, a.unrepeatable, declared);
+        hx_state_free(&a.base);
+        hx_state_free(&a.moved);
+        return 0;
+    }
+    char reach[160];
+    if (a.unrepeatable > 0)
+        snprintf(reach, sizeof reach, "not judged at %d state%s whose force does not repeat",
+                 a.unrepeatable, a.unrepeatable == 1 ? "" : "s");
+    else if (a.influencing == 0)
+        snprintf(reach, sizeof reach, "none moves the force");
+    else if (a.unreached == 0)
+        snprintf(reach, sizeof reach, "all of them reached by a declared query");
+    else
+        snprintf(reach, sizeof reach, "%d of them reached by no declared query", a.unreached);
+    fprintf(out, "  %s %d: dependency audit at %d states, t from %g to %g: declared %s; %d of %d"
+            " body-state changes move the force, %s; %s: %s\n", b->element, b->id,
+            HX_FORCE_SAMPLES - 1, hx_sample_time(m, 1), t_last, declared, a.influencing, a.checked,
+            reach, used_text[0] ? used_text : "no queries declared",
+            a.failures ? "FAIL" : a.unrepeatable ? "not judged" : "pass");
+    hx_state_free(&a.base);
+    hx_state_free(&a.moved);
+    return a.failures ? 1 : 0;
+}

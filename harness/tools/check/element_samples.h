@@ -1,0 +1,28 @@
+/*
+ * The states a check evaluates a force element at: sample 0 is its
+ * deformation at the model's initial state; samples 1.. add deterministic
+ * offsets growing from 0.5 to 10 typical steps (1 mm, 0.02 rad, and those
+ * over 10 ms for the rates, in the model's units), so that every term of an
+ * element (a contact beyond its gap, a spline's far end) wakes in some; and
+ * each sample has its own time, so that what an element does at t > 0 is
+ * seen too.
+ */
+#ifndef HX_TOOLS_CHECK_ELEMENT_SAMPLES_H
+#define HX_TOOLS_CHECK_ELEMENT_SAMPLES_H
+
+#include "host/session.h"
+
+#define HX_FORCE_SAMPLES 12
+
+/* Deformation and rate of sample k of force element `force`; scale receives
+ * the typical step of each of the twelve. */
+void hx_sample_element_state(const hx_session *s, int force, int k, double disp[6],
+                             double velo[6], double scale[12]);
+
+/* The time of sample k: 0, then spread over the model's first second. */
+double hx_sample_time(const hx_model *m, int k);
+
+/* Deterministic numbers in [-1, 1] (a linear congruential sequence). */
+double hx_jitter(unsigned *seed);
+
+#endif

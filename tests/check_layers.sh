@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# The architecture, checked (README, "Architecture"):
+#  - arrows run one way: a file includes only headers of its own layer or a
+#    lower one (library: entries -> readers -> core; harness: cmd -> tools ->
+#    sim -> host -> state -> model -> base);
+#  - the harness shares no code with the library it verifies: of the
+#    library's headers it includes only the solver ABI;
+#  - the harness has one global, the ABI's binding (host/abi.c);
+#  - nothing refers to files outside the repository.
+set -u
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+failures=0
+complain() { echo "check_layers: $*"; failures=$((failures + 1)); }
+
+rank_of() { # layer rank of a path inside a tree, or empty
+  case "$1" in
+    usrsub/core/*|usrsub/core/*) echo 0 ;;
+    usrsub/readers/*) echo 1 ;;
+    usrsub/entries/*) echo 2 ;;
+    harness/base/*) echo 0 ;;
+    harness/model/*) echo 1 ;;
+    harness/state/*) echo 2 ;;
+    harness/host/*) echo 3 ;;
+    harness/sim/*) echo 4 ;;
+    harness/tools/*) echo 5 ;;
+    harness/cmd/*) echo 6 ;;
+  esac
+}
+
+for f in $(git ls-files 'usrsub/*.c' 'usrsub/*.h' 'include/usrsub/*.h'); do
+  case "$f" in
+    include/usrsub/core/*) mine=0 ;;
+    include/usrsub/readers/*) mine=1 ;;
+    include/usrsub/solver_abi.h) continue ;;
+    *) mine=$(rank_of "$f") ;;
+  esac
+  while read -r inc; do
+    case "$inc" in
+      usrsub/solver_abi.h) [ "$mine" -ge 1 ] || complain "$f includes the ABI header (core knows no host)" ;;
+      usrsub/core/*) ;;
+      usrsub/readers/*) [ "$mine" -ge 1 ] || complain "$f (core) includes $inc (a reader)" ;;
+      *.h) [ "$mine" -ge 2 ] || complain "$f includes $inc (an entries header)" ;;
+    esac
+  done < <(grep -oE '^#include "[^"]+"' "$f" | sed 's/#include "//; s/"$//')
+done
+
+for f in $(git ls-files 'harness/*.c' 'harness/*.h'); do
+  mine=$(rank_of "$f")
+  [ -n "$mine" ] || { complain "$f is in no layer folder"; continue; }
+  while read -r inc; do
+    case "$inc" in
+      usrsub/solver_abi.h) continue ;;
+      usrsub/*) complain "$f includes $inc: the harness uses no code of the library it verifies"; continue ;;
+    esac
+    theirs=$(rank_of "harness/$inc")
+    if [ -z "$theirs" ]; then
+      complain "$f includes $inc, which is in no layer folder"
+    elif [ "$theirs" -gt "$mine" ]; then
+      complain "$f includes $inc: an arrow pointing up"
+    fi
+  done < <(grep -oE '^#include "[^"]+"' "$f" | sed 's/#include "//; s/"$//')
+done
+
+# file-scope variables that are not constant: only the ABI's binding
+globals=$(git ls-files 'harness/*.c' | xargs grep -nE '^(static )?(_Thread_local )?[A-Za-z_][A-Za-z0-9_ ]*[ *][A-Za-z_][A-Za-z0-9_]*(\[[^]]*\])*( = [^;]*)?;$' \
+          | grep -v 'const ' | grep -v '^harness/host/abi.c:.*bound;$')
+[ -z "$globals" ] || complain "harness globals besides the ABI's binding: $globals"
+
+refs=$(git grep -nE '\.\./shared|INTERFACE\.md|seed 00[0-9]' -- '*.c' '*.h' '*.txt' 'CMakeLists.txt' '*.sh' \
+       ':!tests/check_layers.sh' || true)
+[ -z "$refs" ] || complain "references to files outside the repository: $refs"
+
+if [ "$failures" -ne 0 ]; then
+  echo "check_layers: $failures problem(s)"
+  exit 1
+fi
+echo "check_layers: the layers, the verifier's independence and the references hold"

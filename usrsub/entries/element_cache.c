@@ -1,0 +1,117 @@
+/* Lock-free look-up, locked set-up cache of elements (element_cache.h). */
+#include "element_cache.h"
+
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+
+_Atomic(element_record *) element_cache_buckets[ELEMENT_CACHE_BUCKETS];
+static element_record *retired; /* superseded records, freed at unload */
+static pthread_mutex_t setup_lock = PTHREAD_MUTEX_INITIALIZER;
+
+static int same_element(const element_record *r, const element_signature *sig)
+{
+    return r->id == sig->id && r->interface == sig->interface;
+}
+
+static void free_record(element_record *r)
+{
+    if (r->model != NULL && r->release != NULL)
+        r->release(r->model);
+    free(r);
+}
+
+/* Takes the element's current record out of its chain (under the lock). A
+ * reader standing on it still finds its way on through its own next. */
+static void retire_current(unsigned bucket, const element_signature *sig)
+{
+    _Atomic(element_record *) *link = &element_cache_buckets[bucket];
+    for (element_record *r = atomic_load(link); r != NULL; r = atomic_load(link)) {
+        if (same_element(r, sig)) {
+            atomic_store_explicit(link, atomic_load(&r->next), memory_order_release);
+            r->retired_next = retired;
+            retired = r;
+            return;
+        }
+        link = &r->next;
+    }
+}
+
+void *element_cache_get(const element_signature *sig, element_setup_fn *setup,
+                        element_release_fn *release, void *ctx, int *set_up_now,
+                        element_setup_report *report)
+{
+    const unsigned bucket = element_cache_bucket(sig->interface, sig->id);
+    *set_up_now = 0;
+    element_record *r = element_cache_record(sig->interface, sig->id);
+    if (r != NULL && element_cache_matches(r, sig))
+        return r->model;
+
+    pthread_mutex_lock(&setup_lock);
+    r = element_cache_record(sig->interface, sig->id); /* set up meanwhile? */
+    if (r != NULL && element_cache_matches(r, sig)) {
+        pthread_mutex_unlock(&setup_lock);
+        return r->model;
+    }
+    const int npar = sig->npar > 0 ? sig->npar : 0;
+    element_record *fresh = malloc(sizeof *fresh + sizeof(double) * (size_t)npar);
+    if (fresh == NULL) {
+        pthread_mutex_unlock(&setup_lock);
+        *set_up_now = 1;
+        report->notices.has_notice = 0;
+        usrsub_fail(&report->error, "out of memory while setting up the element");
+        return NULL;
+    }
+    fresh->interface = sig->interface;
+    fresh->id = sig->id;
+    fresh->code = sig->code;
+    fresh->npar = npar;
+    if (npar > 0)
+        memcpy(fresh->par, sig->par, sizeof(double) * (size_t)npar);
+    fresh->release = release;
+    fresh->retired_next = NULL;
+    report->notices.has_notice = 0;
+    fresh->model = setup(sig, ctx, report);
+    *set_up_now = 1;
+    retire_current(bucket, sig);
+    atomic_store_explicit(&fresh->next, atomic_load(&element_cache_buckets[bucket]), memory_order_relaxed);
+    atomic_store_explicit(&element_cache_buckets[bucket], fresh, memory_order_release);
+    pthread_mutex_unlock(&setup_lock);
+    return fresh->model;
+}
+
+int element_cache_size(void)
+{
+    int count = 0;
+    pthread_mutex_lock(&setup_lock);
+    for (unsigned b = 0; b < ELEMENT_CACHE_BUCKETS; ++b)
+        for (element_record *r = atomic_load(&element_cache_buckets[b]); r != NULL; r = atomic_load(&r->next))
+            ++count;
+    pthread_mutex_unlock(&setup_lock);
+    return count;
+}
+
+void element_cache_clear(void)
+{
+    pthread_mutex_lock(&setup_lock);
+    for (unsigned b = 0; b < ELEMENT_CACHE_BUCKETS; ++b) {
+        element_record *r = atomic_exchange(&element_cache_buckets[b], NULL);
+        while (r != NULL) {
+            element_record *next = atomic_load(&r->next);
+            free_record(r);
+            r = next;
+        }
+    }
+    while (retired != NULL) {
+        element_record *next = retired->retired_next;
+        free_record(retired);
+        retired = next;
+    }
+    pthread_mutex_unlock(&setup_lock);
+}
+
+__attribute__((destructor)) static void element_cache_unload(void)
+{
+    element_cache_clear();
+}

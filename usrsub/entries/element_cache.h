@@ -1,0 +1,112 @@
+/*
+ * Per-element set-up cache of the library.
+ *
+ * An element is set up once per (interface, element id), keyed also on a copy
+ * of its USER list (and one discriminating code, such as ndisp), so that an
+ * element whose list changes is rebuilt. Look-ups take no lock: records are
+ * immutable once published and are only freed when the library is unloaded.
+ * Set-ups are serialized by one mutex; a failed set-up is cached too, so its
+ * error is reported once.
+ */
+#ifndef USRSUB_ELEMENT_CACHE_H
+#define USRSUB_ELEMENT_CACHE_H
+
+#include "usrsub/core/message.h"
+#include "usrsub/readers/property_file.h"
+
+enum element_interface {
+    ELEMENT_COUPLER = 1, /* COUSUB, COUXX, COUXX2 share one set-up */
+    ELEMENT_GFOSUB = 2,
+    ELEMENT_FIESUB = 3
+};
+
+typedef struct element_signature {
+    int interface;
+    int id;
+    int code;          /* ndisp for couplers, the entry code for forces */
+    const double *par; /* USER list as the host passed it */
+    int npar;
+} element_signature;
+
+/* What a set-up wants said to the host, after the cache's lock is released
+ * (a host may end the run inside c_errmes). */
+typedef struct element_setup_report {
+    usrsub_message error;  /* set when the set-up fails */
+    usrsub_read_report notices; /* informational text, when notices.has_notice */
+} element_setup_report;
+
+/* Builds the immutable model of an element, or returns NULL and fills
+ * report->error. Runs under the cache's lock. */
+typedef void *element_setup_fn(const element_signature *sig, void *ctx,
+                               element_setup_report *report);
+typedef void element_release_fn(void *model);
+
+/* Returns the element's model, or NULL when its set-up failed. *set_up_now is
+ * 1 when this call ran the set-up: the caller then passes report on. */
+void *element_cache_get(const element_signature *sig, element_setup_fn *setup,
+                        element_release_fn *release, void *ctx, int *set_up_now,
+                        element_setup_report *report);
+
+/* ---- the look-up every call makes, inline ----------------------------------- */
+
+#include <stdatomic.h>
+#include <string.h>
+
+#define ELEMENT_CACHE_BUCKETS 1024u
+
+typedef struct element_record {
+    _Atomic(struct element_record *) next;
+    struct element_record *retired_next;
+    int interface, id, code, npar;
+    void *model; /* NULL: the set-up failed */
+    element_release_fn *release;
+    double par[];
+} element_record;
+
+extern _Atomic(element_record *) element_cache_buckets[ELEMENT_CACHE_BUCKETS];
+
+static inline unsigned element_cache_bucket(int interface, int id)
+{
+    return ((unsigned)id * 2654435761u ^ (unsigned)interface * 40503u) &
+           (ELEMENT_CACHE_BUCKETS - 1u);
+}
+
+/* The element's current record, or NULL. */
+static inline element_record *element_cache_record(int interface, int id)
+{
+    element_record *r = atomic_load_explicit(
+        &element_cache_buckets[element_cache_bucket(interface, id)], memory_order_acquire);
+    while (r != NULL && (r->id != id || r->interface != interface))
+        r = atomic_load_explicit(&r->next, memory_order_acquire);
+    return r;
+}
+
+/* Bitwise comparison, so that a NaN in the list still matches itself. */
+static inline int element_cache_matches(const element_record *r, const element_signature *sig)
+{
+    return r->code == sig->code && r->npar == sig->npar &&
+           (sig->npar <= 0 ||
+            memcmp(r->par, sig->par, sizeof(double) * (size_t)sig->npar) == 0);
+}
+
+/* The fast path: the set-up model when the element is cached with this very
+ * list (*hit = 1), else falls back to element_cache_get. */
+static inline void *element_cache_lookup(const element_signature *sig, element_setup_fn *setup,
+                                         element_release_fn *release, void *ctx,
+                                         int *set_up_now, element_setup_report *report)
+{
+    const element_record *r = element_cache_record(sig->interface, sig->id);
+    if (r != NULL && element_cache_matches(r, sig)) {
+        *set_up_now = 0;
+        return r->model;
+    }
+    return element_cache_get(sig, setup, release, ctx, set_up_now, report);
+}
+
+/* Number of live (not superseded) records; for tests. */
+int element_cache_size(void);
+
+/* Frees every record; runs when the library is unloaded. */
+void element_cache_clear(void);
+
+#endif

@@ -1,0 +1,202 @@
+/* Set-up and evaluation of force elements (force_model.h). */
+#include "force_model.h"
+
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "host.h"
+#include "property_cache.h"
+#include "usrsub/readers/bushing_reader.h"
+#include "usrsub/readers/flex_joint_reader.h"
+#include "usrsub/readers/mount_limits_reader.h"
+#include "usrsub/readers/user_list.h"
+
+#define PATH_TEXT_MAX 4096
+
+static int read_bushing(const char *path, const double *units, void **property,
+                        usrsub_read_report *report, usrsub_message *msg)
+{
+    usrsub_bushing *b;
+    if (usrsub_bushing_read(path, units, &b, report, msg) != 0)
+        return -1;
+    *property = b;
+    return 0;
+}
+
+static void free_bushing(void *property)
+{
+    usrsub_bushing_free(property);
+}
+
+static int read_limits(const char *path, const double *units, void **property,
+                       usrsub_read_report *report, usrsub_message *msg)
+{
+    usrsub_mount_limits *m;
+    if (usrsub_mount_limits_read(path, units, &m, report, msg) != 0)
+        return -1;
+    *property = m;
+    return 0;
+}
+
+static void free_limits(void *property)
+{
+    usrsub_mount_limits_free(property);
+}
+
+static int read_joint(const char *path, const double *units, void **property,
+                      usrsub_read_report *report, usrsub_message *msg)
+{
+    usrsub_flex_joint *j;
+    if (usrsub_flex_joint_read(path, units, &j, report, msg) != 0)
+        return -1;
+    *property = j;
+    return 0;
+}
+
+static void free_joint(void *property)
+{
+    usrsub_flex_joint_free(property);
+}
+
+/* The property file named by the Reference_String whose id is the next value. */
+static const void *property_named(usrsub_user_list *u, const char *what, const char *kind,
+                                  property_read_fn *read, property_free_fn *release,
+                                  element_setup_report *report)
+{
+    int string_id;
+    if (usrsub_user_list_int(u, what, 1, INT_MAX, &string_id, &report->error) != 0)
+        return NULL;
+    char path[PATH_TEXT_MAX];
+    if (host_read_string(string_id, path, (int)sizeof path) != 0) {
+        usrsub_fail(&report->error, "USER parameter %d (par[%d]): there is no Reference_String"
+                    " %d (expected %s)", u->next + u->offset, u->next - 1, string_id, what);
+        return NULL;
+    }
+    double scales[USRSUB_UNIT_COUNT];
+    const int has_units = host_model_units(scales);
+    const void *p = property_cache_get(kind, path, has_units ? scales : NULL, read, release,
+                                       &report->notices, &report->error);
+    if (p == NULL)
+        usrsub_message_prefix(&report->error, "Reference_String %d", string_id);
+    return p;
+}
+
+static const char *const code_names = "1 (ABM_BUSHING), 2 (MOUNT_LIMITS) or 3 (FLEX_JOINT)";
+
+/* Mount limits named by the next value; a file with no active side is
+ * dropped, so that the element runs exactly as without it. */
+static int limits_named(force_model *m, usrsub_user_list *u, element_setup_report *report)
+{
+    const usrsub_mount_limits *l = property_named(u, "the Reference_String id of the .gbi"
+                                                  " mount-limits file", "gbi", read_limits,
+                                                  free_limits, report);
+    if (l == NULL)
+        return -1;
+    if (l->nsides > 0) {
+        m->limits = l;
+        m->needs.translation |= l->uses_translation;
+        m->needs.rotation |= l->uses_rotation;
+        m->needs.velocity |= l->uses_velocity;
+    }
+    return 0;
+}
+
+void *force_model_setup(const element_signature *sig, void *ctx, element_setup_report *report)
+{
+    const int interface = *(const int *)ctx;
+    usrsub_user_list u;
+    int code = sig->code;
+    if (code == 0) { /* GFOSUB/FIESUB: the code comes first */
+        usrsub_user_list_init(&u, sig->par, sig->npar, 0);
+        char what[96];
+        snprintf(what, sizeof what, "the element code %s", code_names);
+        if (usrsub_user_list_int(&u, what, 1, 3, &code, &report->error) != 0)
+            return NULL;
+        usrsub_user_list_init(&u, sig->par + 1, sig->npar - 1, 1);
+    } else {
+        usrsub_user_list_init(&u, sig->par, sig->npar, 0);
+    }
+    force_model *m = calloc(1, sizeof *m);
+    if (m == NULL) {
+        usrsub_fail(&report->error, "out of memory");
+        return NULL;
+    }
+    m->code = code;
+    if (interface == ELEMENT_GFOSUB &&
+        (usrsub_user_list_int(&u, "the I marker id", 1, INT_MAX, &m->i_marker, &report->error) != 0 ||
+         usrsub_user_list_int(&u, "the J marker id", 1, INT_MAX, &m->j_marker, &report->error) != 0)) {
+        free(m);
+        return NULL;
+    }
+    int status = 0;
+    const char *ends = "the list";
+    switch (code) {
+    case FORCE_BUSHING:
+        m->bushing = property_named(&u, "the Reference_String id of the .gbs bushing file", "gbs",
+                                    read_bushing, free_bushing, report);
+        status = m->bushing != NULL ? 0 : -1;
+        if (status == 0) {
+            m->needs.translation = m->bushing->uses_translation;
+            m->needs.rotation = m->bushing->uses_rotation;
+            m->needs.velocity = m->bushing->uses_velocity;
+        }
+        if (status == 0 && u.next < u.npar)
+            status = limits_named(m, &u, report);
+        ends = "an ABM_BUSHING list (markers, .gbs id, optional .gbi id)";
+        break;
+    case FORCE_MOUNT_LIMITS:
+        status = limits_named(m, &u, report);
+        ends = "a MOUNT_LIMITS list (markers, .gbi id)";
+        break;
+    case FORCE_FLEX_JOINT:
+        m->joint = property_named(&u, "the Reference_String id of the .gfj flexible-joint file",
+                                  "gfj", read_joint, free_joint, report);
+        status = m->joint != NULL ? 0 : -1;
+        if (status == 0) {
+            m->needs.translation = m->joint->uses_translation;
+            m->needs.rotation = m->joint->uses_rotation;
+            m->needs.velocity = m->joint->uses_velocity;
+        }
+        ends = "a FLEX_JOINT list (markers, .gfj id)";
+        break;
+    default:
+        status = usrsub_fail(&report->error, "element code %d is not one of %s", code, code_names);
+        break;
+    }
+    if (status == 0)
+        status = usrsub_user_list_end(&u, ends, &report->error);
+    if (status != 0) {
+        free(m);
+        return NULL;
+    }
+    return m;
+}
+
+void force_model_release(void *model)
+{
+    free(model); /* the property data belongs to the property cache */
+}
+
+void force_model_evaluate(const force_model *m, const double d[6], const double v[6],
+                          double F[6], double *dFdd, double *dFdv)
+{
+    switch (m->code) {
+    case FORCE_BUSHING:
+        usrsub_bushing_force(m->bushing, d, v, F, dFdd, dFdv);
+        break;
+    case FORCE_FLEX_JOINT:
+        usrsub_flex_joint_force(m->joint, d, v, F, dFdd, dFdv);
+        break;
+    default:
+        memset(F, 0, 6 * sizeof(double));
+        if (dFdd != NULL) {
+            memset(dFdd, 0, 36 * sizeof(double));
+            memset(dFdv, 0, 36 * sizeof(double));
+        }
+        break;
+    }
+    if (m->limits != NULL) /* on the raw deformation: never offset, scaled or coupled */
+        usrsub_mount_limits_add(m->limits, d, v, F, dFdd, dFdv);
+}

@@ -1,0 +1,97 @@
+/* Shared, parsed-once property files (property_cache.h). */
+#include "property_cache.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "usrsub/solver_abi.h"
+
+typedef struct property_entry {
+    struct property_entry *next;
+    char kind[8];
+    char *path; /* real path */
+    int has_units;
+    double units[USRSUB_UNIT_COUNT];
+    void *property;
+    property_free_fn *release;
+} property_entry;
+
+static property_entry *entries;
+static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+
+static int same_units(const property_entry *e, const double *scales)
+{
+    if (!e->has_units || scales == NULL)
+        return !e->has_units && scales == NULL;
+    return memcmp(e->units, scales, sizeof e->units) == 0;
+}
+
+const void *property_cache_get(const char *kind, const char *path, const double *model_scales,
+                               property_read_fn *read, property_free_fn *release,
+                               usrsub_read_report *report, usrsub_message *msg)
+{
+    char real[PATH_MAX];
+    if (realpath(path, real) == NULL)
+        return usrsub_fail(msg, "cannot open '%s': %s", path, strerror(errno)), NULL;
+    pthread_mutex_lock(&lock);
+    for (property_entry *e = entries; e != NULL; e = e->next)
+        if (strcmp(e->kind, kind) == 0 && strcmp(e->path, real) == 0 && same_units(e, model_scales)) {
+            pthread_mutex_unlock(&lock);
+            return e->property;
+        }
+    void *property = NULL;
+    property_entry *e = calloc(1, sizeof *e);
+    if (e == NULL || (e->path = strdup(real)) == NULL) {
+        free(e);
+        pthread_mutex_unlock(&lock);
+        return usrsub_fail(msg, "out of memory"), NULL;
+    }
+    if (read(real, model_scales, &property, report, msg) != 0) {
+        free(e->path);
+        free(e);
+        pthread_mutex_unlock(&lock);
+        return NULL;
+    }
+    snprintf(e->kind, sizeof e->kind, "%s", kind);
+    e->has_units = model_scales != NULL;
+    if (model_scales != NULL)
+        memcpy(e->units, model_scales, sizeof e->units);
+    e->property = property;
+    e->release = release;
+    e->next = entries;
+    entries = e;
+    pthread_mutex_unlock(&lock);
+    return property;
+}
+
+int property_cache_size(void)
+{
+    int n = 0;
+    pthread_mutex_lock(&lock);
+    for (property_entry *e = entries; e != NULL; e = e->next)
+        ++n;
+    pthread_mutex_unlock(&lock);
+    return n;
+}
+
+void property_cache_clear(void)
+{
+    pthread_mutex_lock(&lock);
+    while (entries != NULL) {
+        property_entry *next = entries->next;
+        entries->release(entries->property);
+        free(entries->path);
+        free(entries);
+        entries = next;
+    }
+    pthread_mutex_unlock(&lock);
+}
+
+__attribute__((destructor)) static void property_cache_unload(void)
+{
+    property_cache_clear();
+}

@@ -1,0 +1,56 @@
+/* The one TeimOrbit property-file driver (include/usrsub/readers/property_file.h). */
+#include "usrsub/readers/property_file.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+#include <strings.h>
+
+void usrsub_read_report_add(usrsub_read_report *report, const char *fmt, ...)
+{
+    char sentence[USRSUB_MESSAGE_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(sentence, sizeof sentence, fmt, ap);
+    va_end(ap);
+    const size_t used = report->has_notice ? strlen(report->notice.text) : 0;
+    snprintf(report->notice.text + used, sizeof report->notice.text - used, "%s%s",
+             report->has_notice ? "; " : "", sentence);
+    report->has_notice = 1;
+}
+
+static int check_file_type(const usrsub_teim_file *f, const char *file_type,
+                           const char *description, usrsub_message *msg)
+{
+    const usrsub_teim_block *h = usrsub_teim_find_block(f, "HEADER");
+    const usrsub_teim_entry *type = usrsub_teim_find_entry(h, "FILE_TYPE");
+    if (type == NULL)
+        return usrsub_fail(msg, "'%s': no [HEADER] block with FILE_TYPE = '%s'", f->path,
+                           file_type);
+    if (strcasecmp(type->value, file_type) != 0)
+        return usrsub_fail(msg, "'%s' line %d: FILE_TYPE is '%s', expected '%s' (%s)", f->path,
+                           type->line, type->value, file_type, description);
+    return 0;
+}
+
+int usrsub_property_file_read(const char *path, const char *file_type, const char *description,
+                              const double *model_scales, usrsub_property_body_fn *body,
+                              void *ctx, usrsub_read_report *report, usrsub_message *msg)
+{
+    usrsub_teim_file *f;
+    if (usrsub_teim_read(path, &f, msg) != 0)
+        return -1;
+    usrsub_unit_factors units;
+    int status = check_file_type(f, file_type, description, msg);
+    if (status == 0) {
+        int has_notice = 0;
+        usrsub_message notice;
+        status = usrsub_property_units(f, model_scales, &units, &notice, &has_notice, msg);
+        if (status == 0 && has_notice)
+            usrsub_read_report_add(report, "%s", notice.text);
+    }
+    if (status == 0)
+        status = body(f, &units, ctx, report, msg);
+    usrsub_teim_free(f);
+    return status;
+}
