@@ -3,10 +3,12 @@
 # example model (default: the powertrain on three mounts with limits): the
 # checks of every user element (partials against finite differences,
 # dependency audit), a 1 s simulation with its summary, and the costs per call.
+# It installs only what this needs (setup.sh main) and builds without the
+# tests (no cmocka); scripts/test.sh builds and runs those.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-"$root/scripts/setup.sh"
-"$root/scripts/build.sh" build
+"$root/scripts/setup.sh" main
+"$root/scripts/build.sh" build -DUSRSUB_TESTS=OFF
 export MS_USERDLL_DIR="$root/build"
 model="$root/harness/examples/${1:-powertrain.xml}"
 mkdir -p "$root/out"

@@ -6,7 +6,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-20}
-"$root/scripts/setup.sh"
+"$root/scripts/setup.sh" fuzz
 CC=clang "$root/scripts/build.sh" build-fuzz -DUSRSUB_FUZZ=ON -DUSRSUB_TESTS=OFF
 mkdir -p "$root/build-fuzz/artifacts"
 for target in teimorbit user_lists model_xml; do

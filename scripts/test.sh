@@ -5,11 +5,12 @@
 # library; and a brief run of each libFuzzer target (FUZZ_SECONDS, default 20).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-"$root/scripts/setup.sh"
+"$root/scripts/setup.sh" test
 cores=$(nproc)
 
 echo "== build and test (RelWithDebInfo)"
-"$root/scripts/build.sh" build
+# tests on explicitly: example.sh and plots.sh configure build/ without them
+"$root/scripts/build.sh" build -DUSRSUB_TESTS=ON
 (cd "$root/build" && ctest --output-on-failure -j "$cores")
 
 echo "== build and test (AddressSanitizer + UndefinedBehaviorSanitizer)"

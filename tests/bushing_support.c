@@ -9,7 +9,7 @@ void bushing_init(usrsub_bushing *b, int coupling)
 {
     memset(b, 0, sizeof *b);
     b->coupling = coupling;
-    b->epsilon[0] = b->epsilon[1] = 1e-9;
+    b->group_epsilon[0] = b->group_epsilon[1] = 1e-9;
     for (int k = 0; k < 6; ++k)
         b->dir[k].disp_scale = b->dir[k].force_scale = 1.0;
 }

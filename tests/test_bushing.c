@@ -312,7 +312,7 @@ static void partials_match_finite_differences(void **state)
         bushing_spline(&b, 1, 7, sx, sy);
         b.dir[0].offset = 0.1, b.dir[0].disp_scale = 0.95, b.dir[0].force_scale = 1.2;
         b.dir[1].preload = 12.0, b.dir[4].disp_scale = 1.1;
-        b.epsilon[0] = 1e-3, b.epsilon[1] = 1e-4; /* a blend wide enough to difference */
+        b.group_epsilon[0] = 1e-3, b.group_epsilon[1] = 1e-4; /* a blend wide enough to difference */
         usrsub_bushing_prepare(&b);
         unsigned seed = 11u + (unsigned)coupling;
         for (int trial = 0; trial < 60; ++trial) {

@@ -124,14 +124,15 @@ static void queries_only_what_the_bushing_needs(void **state)
                            GFO(1, "(1, 20, 10, 101)", "GFOSUB") GFO(2, "(1, 20, 10, 102)", "GFOSUB")
                            GFO(3, "(1, 20, 10, 103)", "GFOSUB") GFO(4, "(1, 20, 10, 104)", "GFOSUB")));
     char text[256];
-    assert_int_equal(deps_of(&s, 0, text, sizeof text), 2); /* all six, damped */
-    assert_string_equal(text, "DISP(20,10,10) VEL(20,10,10,10)");
+    /* all six, damped; at rest (this state) the twist comes from AZ */
+    assert_int_equal(deps_of(&s, 0, text, sizeof text), 3);
+    assert_string_equal(text, "DISP(20,10,10) AZ(20,10) VEL(20,10,10,10)");
     assert_int_equal(deps_of(&s, 1, text, sizeof text), 1); /* translations, undamped */
     assert_string_equal(text, "TDISP(20,10,10)");
     assert_int_equal(deps_of(&s, 2, text, sizeof text), 2); /* translations, one damped */
     assert_string_equal(text, "TDISP(20,10,10) TVEL(20,10,10,10)");
-    assert_int_equal(deps_of(&s, 3, text, sizeof text), 1); /* a rotation alone */
-    assert_string_equal(text, "RDISP(20,10)");
+    assert_int_equal(deps_of(&s, 3, text, sizeof text), 2); /* a rotation alone, at rest */
+    assert_string_equal(text, "RDISP(20,10) AZ(20,10)");
     /* inactive directions return 0 */
     double out[6];
     hx_call_gfosub(&s.bindings.items[1], &s.state, 0, 0, out, NULL);

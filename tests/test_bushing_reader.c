@@ -76,8 +76,8 @@ static void reads_and_converts_units(void **state)
     assert_int_equal(b->coupling, USRSUB_CYLINDRICAL);
     assert_int_equal(b->group_size[0], 2); /* x and y are active and coupled */
     assert_int_equal(b->group_size[1], 0); /* only tz of the rotations */
-    assert_close(b->epsilon[0], 1e-3, 1e-12, 0);            /* 1e-6 m */
-    assert_close(b->epsilon[1], 1e-6 * M_PI / 180, 1e-12, 0); /* 1e-6 degree */
+    assert_close(b->group_epsilon[0], 1e-3, 1e-12, 0);            /* 1e-6 m */
+    assert_close(b->group_epsilon[1], 1e-6 * M_PI / 180, 1e-12, 0); /* 1e-6 degree */
     assert_close(b->dir[1].k, 500.0, 1e-12, 0);              /* kN/m = N/mm */
     assert_close(b->dir[0].c, 3.0, 1e-12, 0);                /* kN s/m = N s/mm */
     double slope;
@@ -159,13 +159,13 @@ static void errors_name_what_is_wrong(void **state)
     assert_contains(msg.text, "CONSTANT_STIFFNESS active for TX", "no [CONSTANT_STIFFNESS_TX] block");
     assert_int_equal(GBS("rubber.gbs", model_mm_n_kg_s, h,
                          activity("'RUBER_DAMPING' 0 1 0 0 0 0\n")), -1);
-    assert_contains(msg.text, "RUBBER_DAMPING is active for FY", "does not model");
+    assert_contains(msg.text, "RUBBER_DAMPING active for FY", "no [RUBBER_DAMPING_FY] block");
     assert_int_equal(GBS("hydro.gbs", model_mm_n_kg_s, h,
                          activity("'HYDROMOUNT_DAMPING' 0 0 1 0 0 0\n")), -1);
-    assert_contains(msg.text, "HYDROMOUNT_DAMPING is active for FZ");
+    assert_contains(msg.text, "HYDROMOUNT_DAMPING is active for FZ", "not published");
     assert_int_equal(GBS("friction.gbs", model_mm_n_kg_s, h, activity(""),
                          "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.5\n"), -1);
-    assert_contains(msg.text, "FRICTION is active", "line 16");
+    assert_contains(msg.text, "line 15", "[FRICTION] has no MU_DYNAMIC");
     assert_int_equal(GBS("unit.gbs", model_mm_n_kg_s, header("furlong", "newton", "radian")), -1);
     assert_contains(msg.text, "LENGTH = 'furlong'", "line 7");
     assert_int_equal(GBS("garbage.gbs", model_mm_n_kg_s, h, "this line means nothing\n"), -1);
@@ -193,9 +193,113 @@ static void errors_name_what_is_wrong(void **state)
     assert_contains(msg.text, "cannot open '/nonexistent/x.gbs'");
 }
 
+static const char *const friction_block =
+    "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.5\nMU_DYNAMIC = 0.3\nEFFECT = 'SLIDING'\n"
+    "TRANSITION_VELOCITY = 0.005\nBRISTLE_STIFFNESS = 1e5\nBRISTLE_DAMPING = 316\n"
+    "SLIP_DAMPING = 2\nBALL_RADIUS = 0.01\nPRELOAD_TORQUE = 3\n";
+
+/* The blocks with internal states (docs/interface.md §3.8), converted from a
+ * file in m and N to a model in mm. */
+static void reads_the_state_blocks(void **state)
+{
+    (void)state;
+    usrsub_bushing *b = NULL;
+    usrsub_message notice, msg;
+    int has_notice;
+    assert_int_equal(GBS("states.gbs", model_mm_n_kg_s, header("m", "newton", "radian"),
+                         activity("'CONSTANT_STIFFNESS' 1 0 1 0 0 0\n'CONSTANT_DAMPING' 1 0 0 0 0 0\n"
+                                  "'RUBBER_DAMPING' 0 0 1 0 0 0\n"),
+                         "[CONSTANT_STIFFNESS_FX]\nK = 1e6\n[CONSTANT_STIFFNESS_FZ]\nK = 2e6\n"
+                         "[CONSTANT_DAMPING_FX]\nC = 1000\n"
+                         "[RUBBER_DAMPING_FZ]\nNPRELOADS = 1\n(PRELOAD_1)\nPRELOAD = 0\nR = 4\n"
+                         "RMIN = 6\nK0 = 3e5\nC0 = 2000\nP0 = 1\nP1 = 0\nP2 = 2\n",
+                         friction_block,
+                         "[MOUNT_STIFFNESS]\n{ direction K C }\nFX 5e6 1e3\nTZ 2e3 0\n"), 0);
+    assert_true(b->has_states);
+    const usrsub_friction *f = &b->friction;
+    assert_true(f->active);
+    assert_false(f->stiction);
+    assert_close(f->ball_radius, 10.0, 1e-12, 0);           /* 0.01 m */
+    assert_close(f->transition_velocity, 5.0, 1e-12, 0);    /* 0.005 m/s */
+    assert_close(f->bristle_stiffness, 100.0, 1e-12, 0);    /* 1e5 / m */
+    assert_close(f->bristle_damping, 0.316, 1e-12, 0);      /* 316 s/m */
+    assert_close(f->slip_damping, 0.002, 1e-12, 0);
+    assert_close(f->preload_torque, 3000.0, 1e-12, 0);      /* 3 N m */
+    assert_true(b->dir[2].rubber);
+    assert_close(b->dir[2].rubber_r, 6.0, 0, 0);            /* RMIN above R */
+    assert_close(b->dir[2].rubber_k, 300.0, 1e-12, 0);      /* N/m to N/mm */
+    assert_close(b->dir[2].rubber_c, 2.0, 1e-12, 0);
+    assert_true(b->dir[0].mount && b->dir[5].mount && !b->dir[1].mount);
+    assert_close(b->dir[0].mount_k, 5000.0, 1e-12, 0);
+    assert_close(b->dir[0].mount_c, 1.0, 1e-12, 0);
+    assert_close(b->dir[5].mount_k, 2e6, 1e-12, 0);         /* N m/rad to N mm/rad */
+    assert_close(b->dir[5].mount_c, 0.0, 0, 0);
+    usrsub_bushing_free(b);
+
+    /* switched off, each block is read as absent */
+    assert_int_equal(GBS("off.gbs", model_mm_n_kg_s, header("mm", "newton", "radian"), activity(""),
+                         "[FRICTION]\nACTIVE = 0\n[MOUNT_STIFFNESS]\nACTIVE = 0\n"), 0);
+    assert_false(b->has_states);
+    usrsub_bushing_free(b);
+}
+
+static void state_block_errors_name_the_block(void **state)
+{
+    (void)state;
+    usrsub_bushing *b = NULL;
+    usrsub_message notice, msg;
+    int has_notice;
+    char h[512];
+    snprintf(h, sizeof h, "%s", header("mm", "newton", "radian"));
+    const char *rubber_row = activity("'RUBBER_DAMPING' 1 0 0 0 0 0\n");
+    static const struct {
+        const char *block;
+        const char *needles[3];
+    } cases[] = {
+        {"[RUBBER_DAMPING_FX]\nNPRELOADS = 2\n", {"NPRELOADS = 2", "[RUBBER_DAMPING_FX]", "one load case"}},
+        {"[RUBBER_DAMPING_FX]\nNPRELOADS = 1\n(PRELOAD_1)\nR = 5\nK0 = 1\nC0 = 1\nK1 = 1500\n",
+         {"K1 = 1500", "not published", "set it to 0"}},
+        {"[RUBBER_DAMPING_FX]\nNPRELOADS = 1\n(PRELOAD_1)\nR = 5\nK0 = 1\nC0 = 1\nQ0 = 2\n",
+         {"Q0 = 2", "[RUBBER_DAMPING_FX]", "set it to 1"}},
+        {"[RUBBER_DAMPING_FX]\nNPRELOADS = 1\n(PRELOAD_1)\nR = 0\nK0 = 1\nC0 = 1\n",
+         {"line 16", "[RUBBER_DAMPING_FX]", "R (or RMIN) > 0"}},
+        {"[RUBBER_DAMPING_FX]\nNPRELOADS = 1\n(PRELOAD_1)\nPRELOAD = 100\nR = 3\nK0 = 1\nC0 = 1\n",
+         {"PRELOAD = 100", "multiple-preload", "set"}},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        assert_int_equal(GBS("rubber_error.gbs", model_mm_n_kg_s, h, rubber_row, cases[k].block), -1);
+        assert_contains(msg.text, cases[k].needles[0], cases[k].needles[1], cases[k].needles[2]);
+    }
+    assert_int_equal(GBS("both.gbs", model_mm_n_kg_s, h,
+                         activity("'CONSTANT_DAMPING' 1 0 0 0 0 0\n'RUBBER_DAMPING' 1 0 0 0 0 0\n")), -1);
+    assert_contains(msg.text, "FX has more than one active damping");
+    assert_int_equal(GBS("row.gbs", model_mm_n_kg_s, h, activity("'FRICTION' 0 0 0 1 0 0\n")), -1);
+    assert_contains(msg.text, "line 15", "ACTIVE = 1 in its [FRICTION] block");
+    assert_int_equal(GBS("mu.gbs", model_mm_n_kg_s, h, activity(""),
+                         "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.3\nMU_DYNAMIC = 0.5\n"), -1);
+    assert_contains(msg.text, "line 18", "MU_DYNAMIC = 0.5", "at most the static coefficient");
+    assert_int_equal(GBS("reaction.gbs", model_mm_n_kg_s, h, activity(""), friction_block,
+                         "USE_REACTION_FORCE = 0\n"), -1);
+    assert_contains(msg.text, "USE_REACTION_FORCE = 0", "normal force");
+    assert_int_equal(GBS("effect.gbs", model_mm_n_kg_s, h, activity(""), friction_block,
+                         "ANALYSIS_MODES = 'STATICS'\n"), -1);
+    assert_contains(msg.text, "ANALYSIS_MODES = 'STATICS'", "[FRICTION]", "DYNAMICS_ONLY");
+    assert_int_equal(GBS("mount.gbs", model_mm_n_kg_s, h, activity(""),
+                         "[MOUNT_STIFFNESS]\n{ direction K C }\nFX 100 1\nFX 200 0\n"), -1);
+    assert_contains(msg.text, "line 18", "FX appears twice in MOUNT_STIFFNESS");
+    assert_int_equal(GBS("mount_k.gbs", model_mm_n_kg_s, h, activity(""),
+                         "[MOUNT_STIFFNESS]\n{ direction K C }\nTY 0 1\n"), -1);
+    assert_contains(msg.text, "line 17", "mount of TY needs K > 0");
+    assert_int_equal(GBS("mount_table.gbs", model_mm_n_kg_s, h, activity(""),
+                         "[MOUNT_STIFFNESS]\nK = 100\n"), -1);
+    assert_contains(msg.text, "line 15", "no { direction K C } table");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(reads_the_state_blocks),
+        cmocka_unit_test(state_block_errors_name_the_block),
         cmocka_unit_test(reads_and_converts_units),
         cmocka_unit_test(without_units_values_are_used_as_they_are),
         cmocka_unit_test(case_and_vendor_misspellings),

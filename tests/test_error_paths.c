@@ -58,9 +58,9 @@ static const char *strings(void)
                              "[HEADER]\nFILE_TYPE = 'gbs'\n[DIRECTIONS]\n(ACTIVITY)\n"
                              "{ formulation FX FY FZ TX TY TZ }\n'CONSTANT_STIFFNESS' 1 0 0 0 0 0\n"
                              "[CONSTANT_STIFFNESS_FX]\nK = stiff\n"),
-             test_write_file("rubber.gbs",
+             test_write_file("hydromount.gbs",
                              "[HEADER]\nFILE_TYPE = 'gbs'\n[DIRECTIONS]\n(ACTIVITY)\n"
-                             "{ formulation FX FY FZ TX TY TZ }\n'RUBBER_DAMPING' 1 0 0 0 0 0\n"),
+                             "{ formulation FX FY FZ TX TY TZ }\n'HYDROMOUNT_DAMPING' 1 0 0 0 0 0\n"),
              test_write_file("missing.gbi", gbi_missing), test_write_file("short.gfj", gfj_short),
              test_write_file("table.tbl", "# x y\n0 0\n1 oops\n2 4\n"),
              test_write_file("unclosed.gbs", "[HEADER\nFILE_TYPE = 'gbs'\n"),
@@ -127,7 +127,7 @@ static const error_case cases[] = {
     {"FLEX_JOINT_FIELD", 210, 0, 1, {201}, {"FLEX_JOINT_FIELD element 210", "FILE_TYPE is 'gbs'", "expected 'gfj'"}},
     /* property files: each names its line */
     {"ABM_BUSHING_FIELD", 301, 0, 1, {301}, {"element 301", "bad_number.gbs' line 8", "not a finite number"}},
-    {"ABM_BUSHING_FIELD", 302, 0, 1, {302}, {"element 302", "rubber.gbs' line 6", "RUBBER_DAMPING"}},
+    {"ABM_BUSHING_FIELD", 302, 0, 1, {302}, {"element 302", "hydromount.gbs' line 6", "HYDROMOUNT_DAMPING"}},
     {"MOUNT_LIMITS_FIELD", 303, 0, 1, {303}, {"element 303", "missing.gbi' line 9", "IMPACT_PARAMETERS_TRA_X_NEG"}},
     {"FLEX_JOINT_FIELD", 304, 0, 1, {304}, {"element 304", "short.gfj' line 7", "row 2 has 5 entries"}},
     {"ABM_BUSHING_FIELD", 306, 0, 1, {306}, {"element 306", "unclosed.gbs' line 1", "not closed"}},

@@ -123,10 +123,23 @@ static void gfosub_and_fiesub_forms_agree_and_query_what_they_need(void **state)
             assert_close(G[i], F[i], 1e-12, 1e-9);
         char text[256];
         hx_dependencies_text(&vector->deps, text, sizeof text);
-        assert_string_equal(text, pair == 0 ? "DISP(20,10,10) VEL(20,10,10,10)" : "TDISP(20,10,10)");
+        assert_string_equal(text, pair == 0 ? "DISP(20,10,10) AZ(20,10) VEL(20,10,10,10)" : "TDISP(20,10,10)");
         if (pair == 1) /* translational springs alone: no torque */
             assert_true(F[3] == 0.0 && F[4] == 0.0 && F[5] == 0.0);
     }
+    hx_session_close(&s);
+}
+
+/* the revolute joint has no stiffness about z: the twist never enters its
+ * force, so it has no use for AZ at rest (docs/interface.md §3.1) */
+static void a_joint_free_about_z_does_not_ask_for_az(void **state)
+{
+    (void)state;
+    hx_session s;
+    open_session(&s, EXAMPLES_DIR "/flex_revolute.xml");
+    char text[256];
+    hx_dependencies_text(&s.bindings.items[0].deps, text, sizeof text);
+    assert_string_equal(text, "DISP(21,10,10) VEL(21,10,10,10)");
     hx_session_close(&s);
 }
 
@@ -294,6 +307,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(each_column_of_k_and_d),
         cmocka_unit_test(gfosub_and_fiesub_forms_agree_and_query_what_they_need),
+        cmocka_unit_test(a_joint_free_about_z_does_not_ask_for_az),
         cmocka_unit_test(input_errors_name_the_element_and_parameter),
         cmocka_unit_test(a_conservative_joint_keeps_its_energy),
         cmocka_unit_test(a_damped_joint_loses_energy_monotonically),

@@ -207,7 +207,7 @@ static void gfosub_and_fiesub_forms_agree_and_query_what_they_need(void **state)
     assert_true(F3[0] < 0.0 && F3[3] < 0.0);
     char text[256];
     hx_dependencies_text(&s.bindings.items[0].deps, text, sizeof text);
-    assert_string_equal(text, "DISP(20,10,10) VEL(20,10,10,10)");
+    assert_string_equal(text, "DISP(20,10,10) AZ(20,10) VEL(20,10,10,10)");
     hx_dependencies_text(&s.bindings.items[3].deps, text, sizeof text);
     assert_string_equal(text, "TDISP(20,10,10)"); /* undamped translational limits */
     double G10[6];

@@ -109,6 +109,47 @@ static void two_points_is_a_line(void **state)
     usrsub_spline_free(&s);
 }
 
+/* Equally spaced knots take the division path; its interval must be the one
+ * the search would find, at knots and one rounding step either side. */
+static void equally_spaced_knots_find_the_same_interval(void **state)
+{
+    (void)state;
+    enum { N = 21 };
+    double x[N], y[N], xu[N];
+    for (int i = 0; i < N; ++i) {
+        x[i] = -1.0 + 0.1 * i; /* 0.1 is not a binary number: spacings differ by rounding */
+        y[i] = sin(3.0 * x[i]) + 0.2 * x[i] * x[i];
+        xu[i] = x[i] + (i % 3 == 1 ? 1e-3 : 0.0); /* not equally spaced */
+    }
+    usrsub_spline u, searched, uneven;
+    usrsub_message msg;
+    assert_int_equal(usrsub_spline_init(&u, N, x, y, &msg), 0);
+    assert_int_equal(usrsub_spline_init(&searched, N, x, y, &msg), 0);
+    assert_int_equal(usrsub_spline_init(&uneven, N, xu, y, &msg), 0);
+    assert_true(u.uniform);
+    assert_false(uneven.uniform);
+    searched.uniform = 0; /* the same spline through the bucket search */
+    for (int i = 0; i < N; ++i)
+        for (int side = -2; side <= 2; ++side) {
+            double at = x[i];
+            for (int k = 0; k < (side < 0 ? -side : side); ++k)
+                at = nextafter(at, side < 0 ? -INFINITY : INFINITY);
+            double s1, s2;
+            const double v1 = usrsub_spline_value_slope(&u, at, &s1);
+            const double v2 = usrsub_spline_value_slope(&searched, at, &s2);
+            assert_true(v1 == v2 && s1 == s2); /* the same interval, bit for bit */
+        }
+    for (double at = -1.2; at < 1.2; at += 0.0137) {
+        double s1, s2;
+        assert_true(usrsub_spline_value_slope(&u, at, &s1) ==
+                    usrsub_spline_value_slope(&searched, at, &s2));
+        assert_true(s1 == s2);
+    }
+    usrsub_spline_free(&u);
+    usrsub_spline_free(&searched);
+    usrsub_spline_free(&uneven);
+}
+
 static void bad_input_is_named(void **state)
 {
     (void)state;
@@ -135,6 +176,7 @@ int main(void)
         cmocka_unit_test(c2_at_knots_and_natural_ends),
         cmocka_unit_test(derivatives_match_finite_differences),
         cmocka_unit_test(two_points_is_a_line),
+        cmocka_unit_test(equally_spaced_knots_find_the_same_interval),
         cmocka_unit_test(bad_input_is_named),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -36,6 +36,12 @@ static void usage(FILE *f)
                "  --end T               horizon of the sweep (default 0.1)\n"
                "  --out PREFIX          PREFIX_work_precision.csv and its plots\n"
                "  --quick               a short sweep (seconds), for CI\n"
+               "  --outputs ID[,ID..]   the slow outputs: errors of these bodies' states (default:\n"
+               "                        every body; the error of all states is shown beside)\n"
+               "  --atol-ratio R        adaptive methods' atol = R * rtol (default 1e-3)\n"
+               "  --target E            the error at which the methods' costs are compared\n"
+               "                        (default 1e-8)\n"
+               "  --max-order Q         BDF's highest order in the sweep, 1 to 5 (default 5)\n"
                "  --long-run STEPS      STEPS fixed steps of symplectic Euler and RK4 at a\n"
                "                        fifth of the fastest mode's period / 2 pi (or --step)\n"
                "  --step H              the long runs' step\n");
@@ -78,6 +84,9 @@ typedef struct bench_options {
     int ncompare;
     int work_precision, quick;
     double end, step;
+    double atol_ratio, target;
+    int noutputs, outputs[HX_WP_MAX_OUTPUTS];
+    int max_order;
     long long_steps;
     const char *out;
 } bench_options;
@@ -140,9 +149,49 @@ static int stability_section(hx_session *s, hx_stability *st)
     return status == 0 ? 0 : 1;
 }
 
+/* Each series' cost at the target error, and what BDF with the elements'
+ * partials gains over the best explicit method and over BDF with differences. */
+static void work_at_target(const hx_wp_result *r, double target, int largest)
+{
+    printf("cost for an error of %.0e %s (right-hand sides, run time):", target,
+           largest ? "over the whole trajectory" : "at the end");
+    double best_explicit = INFINITY, bdf_seconds = 0.0, bdf_evaluations = 0.0, fd_evaluations = 0.0;
+    const char *best = NULL;
+    for (int k = 0; k < HX_WP_SERIES; ++k) {
+        double e, t;
+        const char *name = hx_wp_series_name((hx_wp_series)k);
+        if (hx_wp_work_at(r, (hx_wp_series)k, target, largest, &e, &t) != 0) {
+            int present = 0;
+            for (int p = 0; p < r->npoints; ++p)
+                present |= r->point[p].series == (hx_wp_series)k;
+            if (present)
+                printf("%s %s not reached", k ? "," : "", name);
+            continue;
+        }
+        printf("%s %s %.0f, %.3g s", k ? "," : "", name, e, t);
+        if (k == HX_WP_BDF)
+            bdf_seconds = t, bdf_evaluations = e;
+        else if (k == HX_WP_BDF_FD)
+            fd_evaluations = e;
+        else if (t < best_explicit)
+            best_explicit = t, best = name;
+    }
+    printf("\n");
+    if (bdf_seconds > 0.0 && best != NULL)
+        printf("bdf with the elements' partials: %.3g times the speed of the best explicit method"
+               " (%s)", best_explicit / bdf_seconds, best);
+    if (bdf_evaluations > 0.0 && fd_evaluations > 0.0)
+        printf("%s%.3g times fewer right-hand sides than bdf-fd", best != NULL ? "; " : "",
+               fd_evaluations / bdf_evaluations);
+    if (bdf_seconds > 0.0)
+        printf("\n");
+}
+
 static int work_precision_section(hx_session *s, const bench_options *o, const char *model)
 {
-    hx_wp_options wo = {o->end, o->quick ? 1 : 3, o->quick};
+    hx_wp_options wo = {o->end, o->quick ? 1 : 3, o->quick, o->atol_ratio, o->noutputs, {0},
+                        o->max_order};
+    memcpy(wo.outputs, o->outputs, sizeof wo.outputs);
     hx_wp_result *r = calloc(1, sizeof *r);
     hx_message msg;
     if (r == NULL || hx_work_precision(s, &wo, r, &msg) != 0) {
@@ -151,16 +200,8 @@ static int work_precision_section(hx_session *s, const bench_options *o, const c
         return 1;
     }
     hx_wp_print(stdout, r);
-    const double target = 1e-8;
-    printf("evaluations for an end-point error of %.0e:", target);
-    for (int m = 0; m < HX_METHOD_COUNT; ++m) {
-        const double e = hx_wp_evaluations_at(r, (hx_method)m, target);
-        printf("%s %s %s", m ? "," : "", hx_method_name((hx_method)m),
-               e > 0.0 ? "" : "not reached");
-        if (e > 0.0)
-            printf("%.0f", e);
-    }
-    printf("\n");
+    work_at_target(r, o->target > 0.0 ? o->target : 1e-8, 0);
+    work_at_target(r, o->target > 0.0 ? o->target : 1e-8, 1);
     int status = 0;
     if (o->out != NULL) {
         char prefix[4096], title[256];
@@ -179,6 +220,25 @@ static int work_precision_section(hx_session *s, const bench_options *o, const c
     }
     free(r);
     return status;
+}
+
+/* "2,3": body ids of the slow outputs. */
+static int parse_outputs(const char *text, bench_options *o)
+{
+    const char *p = text;
+    o->noutputs = 0;
+    while (*p != '\0') {
+        char *end;
+        const long id = strtol(p, &end, 10);
+        if (end == p || (*end != ',' && *end != '\0') || o->noutputs == HX_WP_MAX_OUTPUTS) {
+            fprintf(stderr, "usrsub-harness bench: --outputs '%s': expected body ids separated by"
+                    " commas (at most %d)\n", text, HX_WP_MAX_OUTPUTS);
+            return -1;
+        }
+        o->outputs[o->noutputs++] = (int)id;
+        p = *end == ',' ? end + 1 : end;
+    }
+    return 0;
 }
 
 static int long_run_section(hx_session *s, const bench_options *o, const hx_stability *st)
@@ -224,6 +284,10 @@ int hx_command_bench(int argc, char **argv)
                                             {"quick", no_argument, NULL, 'q'},
                                             {"long-run", required_argument, NULL, 'l'},
                                             {"step", required_argument, NULL, 's'},
+                                            {"outputs", required_argument, NULL, 'O'},
+                                            {"atol-ratio", required_argument, NULL, 'A'},
+                                            {"target", required_argument, NULL, 'T'},
+                                            {"max-order", required_argument, NULL, 'M'},
                                             {"help", no_argument, NULL, 'h'},
                                             {0, 0, 0, 0}};
     bench_options o = {.repeats = 21, .end = 0.1};
@@ -250,6 +314,20 @@ int hx_command_bench(int argc, char **argv)
         case 'q': o.quick = 1; break;
         case 'l': bad = hx_option_count("bench", "long-run", optarg, 1, &o.long_steps); break;
         case 's': bad = hx_option_positive("bench", "step", optarg, &o.step); break;
+        case 'O': bad = parse_outputs(optarg, &o); break;
+        case 'A': bad = hx_option_positive("bench", "atol-ratio", optarg, &o.atol_ratio); break;
+        case 'T': bad = hx_option_positive("bench", "target", optarg, &o.target); break;
+        case 'M': {
+            long order = 0;
+            bad = hx_option_count("bench", "max-order", optarg, 1, &order);
+            if (!bad && order > 5) {
+                fprintf(stderr, "usrsub-harness bench: --max-order %ld: BDF's orders are 1 to 5\n",
+                        order);
+                bad = 1;
+            }
+            o.max_order = (int)order;
+            break;
+        }
         case 'h': usage(stdout); return 0;
         default: usage(stderr); return 2;
         }

@@ -84,6 +84,9 @@ static int check_element(hx_session *s, hx_binding *b)
              b->names[0], b->names[1], b->names[2]);
     printf("%s %d (%s in %s)\n  declared dependencies: %s\n", b->element, b->id, functions,
            basename(lib), hx_dependencies_text(&b->deps, deps, sizeof deps));
+    if (b->setup_bytes >= 0) /* property data shared with earlier elements is theirs */
+        printf("  set-up footprint: %ld bytes kept allocated by its first calls\n",
+               b->setup_bytes);
     const int finite = evaluate(s, b, outputs, sizeof outputs);
     printf("  outputs at t = 0: %s\n", outputs);
     if (hx_messages_stopped(&s->messages))

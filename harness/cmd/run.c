@@ -16,15 +16,24 @@ static void usage(FILE *f)
             "usage: usrsub-harness run MODEL.xml --end T [options]\n"
             "\n"
             "  --end T             end time\n"
-            "  --integrator NAME   dopri5 (default: adaptive, error-controlled) | rk4 |\n"
-            "                      euler | symplectic-euler (fixed steps: give --step)\n"
-            "  --step H            fixed step (dopri5: its first step; default automatic)\n"
+            "  --integrator NAME   dopri5 (default: adaptive, error-controlled) |\n"
+            "                      bdf (implicit, variable order and step: stiff models) |\n"
+            "                      rk4 | euler | symplectic-euler (fixed steps: give --step) |\n"
+            "                      dopri5-arkode (ARKODE's Dormand-Prince, for comparison)\n"
+            "  --jacobian KIND     bdf's Newton matrix: analytic (default: the elements' own\n"
+            "                      partials) | fd (differences of the whole right-hand side)\n"
+            "  --max-order Q       bdf's highest order, 1 to 5 (default 5)\n"
+            "  --step H            fixed step (adaptive methods: the first step; default\n"
+            "                      automatic)\n"
             "  --out FILE.csv      joint coordinates, velocities, multipliers, element\n"
             "                      deformations and loads, energy and residuals\n"
             "  --output-interval DT  time between CSV rows (default: end/1000)\n"
-            "  --rtol R, --atol A  dopri5 tolerances (default 1e-6, 1e-9)\n"
-            "  --max-step H        dopri5's largest step\n"
-            "  --quiet             no progress line\n");
+            "  --rtol R, --atol A  tolerances of the adaptive methods (default 1e-6, 1e-9)\n"
+            "  --max-step H        the adaptive methods' largest step\n"
+            "  --quiet             no progress line\n"
+            "\n"
+            "The summary says when the model is stiff for the run (its fastest mode against\n"
+            "the end time) and recommends bdf then, or an explicit method when it is not.\n");
 }
 
 static int stability_at_start(hx_dynamics *d, hx_stability *st)
@@ -39,6 +48,59 @@ static int stability_at_start(hx_dynamics *d, hx_stability *st)
     return status;
 }
 
+/* The model is stiff for a run when the stability limit of its fastest mode
+ * alone would hold an explicit method to this many steps or more. */
+#define STIFF_STEPS 500.0
+
+/* The highest BDF order stable on a mode at any step: the order's A(alpha)
+ * sector (90, 90, 86.0, 73.4, 51.8 degrees for orders 1 to 5) must hold the
+ * mode's angle from the negative real axis. */
+static int stable_bdf_order(double re, double im)
+{
+    static const double alpha[5] = {90.0, 90.0, 86.03, 73.35, 51.84};
+    const double angle = atan2(fabs(im), -re) * 180.0 / M_PI;
+    int q = 1;
+    while (q < 5 && alpha[q] >= angle)
+        ++q;
+    return q;
+}
+
+/* Nothing chosen silently: whether the model is stiff for this run, with the
+ * figures, and the integrator (and BDF order) that suits it. */
+static void stiffness_advice(FILE *f, const hx_stability *st, const hx_integrator_options *io,
+                             const hx_integrator_stats *stats)
+{
+    const double h = st->max_step[HX_METHOD_DOPRI5];
+    if (!isfinite(h) || !(h > 0.0))
+        return;
+    const double steps = io->t_end / h;
+    const int stiff = steps >= STIFF_STEPS;
+    const int order = stable_bdf_order(st->re, st->im);
+    const int max_order = io->max_order > 0 ? io->max_order : 5;
+    if (stiff && io->method != HX_METHOD_BDF)
+        fprintf(f, "  stiff for this run: the fastest mode (lambda = %.4g + %.4gi, |lambda| = %.4g"
+                " 1/s at t = 0) holds dopri5 to steps below %.3g s, at least %.0f steps (%.0f"
+                " right-hand sides) to t = %g, however slow the motion of interest (this run: %ld"
+                " steps); --integrator bdf is not bound by it (Newton matrix from the elements'"
+                " partials)\n", st->re, st->im, st->magnitude, h, ceil(steps), 6.0 * ceil(steps),
+                io->t_end, stats->steps);
+    else if (stiff)
+        fprintf(f, "  stiff for this run: the fastest mode (|lambda| = %.4g 1/s at t = 0) would hold"
+                " dopri5 to steps below %.3g s, at least %.0f steps to t = %g; bdf took %ld\n",
+                st->magnitude, h, ceil(steps), io->t_end, stats->steps);
+    else if (io->method == HX_METHOD_BDF)
+        fprintf(f, "  not stiff for this run: dopri5's stable step %.3g s (|lambda| = %.4g 1/s at"
+                " t = 0) reaches t = %g in %.0f steps; an explicit method (--integrator dopri5)"
+                " needs no Newton matrix and is likely cheaper here (bench --work-precision"
+                " measures both)\n", h, st->magnitude, io->t_end, ceil(steps));
+    if (stiff && order < 5 && (io->method != HX_METHOD_BDF || max_order > order))
+        fprintf(f, "  the fastest mode is lightly damped (damping ratio %.3g): BDF above order %d"
+                " is unstable on it at steps beyond about 1/|lambda|, and its error control then"
+                " holds the step near that limit; --max-order %d keeps BDF stable on it at any"
+                " step (a step beyond its period damps it away)\n",
+                -st->re / st->magnitude, order, order);
+}
+
 /* Reads the options into so; returns -1 (exit 2) on a bad one, 1 on --help. */
 static int parse(int argc, char **argv, hx_simulation_options *so, const char **out,
                  int *fixed_step_given)
@@ -49,6 +111,7 @@ static int parse(int argc, char **argv, hx_simulation_options *so, const char **
         {"output-interval", required_argument, NULL, 'I'},
         {"rtol", required_argument, NULL, 'r'},       {"atol", required_argument, NULL, 'a'},
         {"max-step", required_argument, NULL, 'm'},   {"quiet", no_argument, NULL, 'q'},
+        {"jacobian", required_argument, NULL, 'j'},   {"max-order", required_argument, NULL, 'O'},
         {"help", no_argument, NULL, 'h'},             {0, 0, 0, 0}};
     hx_integrator_options *io = &so->integration;
     int opt;
@@ -58,11 +121,29 @@ static int parse(int argc, char **argv, hx_simulation_options *so, const char **
         switch (opt) {
         case 'i':
             if (hx_method_parse(optarg, &io->method) != 0) {
-                fprintf(stderr, "usrsub-harness run: --integrator '%s' is not one of dopri5, rk4,"
-                        " euler, symplectic-euler\n", optarg);
+                fprintf(stderr, "usrsub-harness run: --integrator '%s' is not one of dopri5, bdf,"
+                        " rk4, euler, symplectic-euler, dopri5-arkode\n", optarg);
                 bad = 1;
             }
             break;
+        case 'j':
+            if (hx_jacobian_parse(optarg, &io->jacobian) != 0) {
+                fprintf(stderr, "usrsub-harness run: --jacobian '%s' is not analytic or fd\n",
+                        optarg);
+                bad = 1;
+            }
+            break;
+        case 'O': {
+            long order = 0;
+            bad = hx_option_count("run", "max-order", optarg, 1, &order);
+            if (!bad && order > 5) {
+                fprintf(stderr, "usrsub-harness run: --max-order %ld: BDF's orders are 1 to 5\n",
+                        order);
+                bad = 1;
+            }
+            io->max_order = (int)order;
+            break;
+        }
         case 's': bad = hx_option_positive("run", "step", optarg, &io->step); *fixed_step_given = 1; break;
         case 'e': bad = hx_option_positive("run", "end", optarg, &io->t_end); break;
         case 'o': *out = optarg; break;
@@ -86,7 +167,7 @@ static int parse(int argc, char **argv, hx_simulation_options *so, const char **
         fprintf(stderr, "usrsub-harness run: --end T is needed\n");
         return -1;
     }
-    if (io->method != HX_METHOD_DOPRI5 && !*fixed_step_given) {
+    if (!hx_method_adaptive(io->method) && !*fixed_step_given) {
         fprintf(stderr, "usrsub-harness run: %s takes fixed steps: give --step (or use the"
                 " default dopri5, which chooses its own)\n", hx_method_name(io->method));
         return -1;
@@ -123,10 +204,12 @@ int hx_command_run(int argc, char **argv)
         return 1;
     }
     hx_crash_report_begin();
-    /* a fixed step beyond the stability limit of the fastest mode: say so before */
+    /* the fastest mode at the start: a fixed step beyond its stability limit is
+     * said before the run, and whether the model is stiff for it after */
     hx_stability st;
-    const int fixed = so.integration.method != HX_METHOD_DOPRI5;
-    const int limited = fixed && stability_at_start(&d, &st) == 0;
+    const int known = stability_at_start(&d, &st) == 0;
+    const int fixed = !hx_method_adaptive(so.integration.method);
+    const int limited = fixed && known;
     const double limit = limited ? st.max_step[so.integration.method] : INFINITY;
     if (limited && so.integration.step > limit)
         fprintf(stderr, "run: warning: the step %g is above %s's stability limit %.3g for the"
@@ -140,6 +223,8 @@ int hx_command_run(int argc, char **argv)
         printf("  the step %g %s the stability limit %.3g of %s at t = 0 (|lambda| = %.4g)\n",
                so.integration.step, so.integration.step > limit ? "exceeds" : "is within",
                limit, hx_method_name(so.integration.method), st.magnitude);
+    if (known)
+        stiffness_advice(stdout, &st, &so.integration, &result.stats);
     hx_crash_report_end();
     if (so.csv != NULL)
         fclose(so.csv);

@@ -133,11 +133,14 @@ static void report_undeclared(hx_call *c, const hx_query *q)
     }
 }
 
-static int find_declared(const hx_dependencies *d, const hx_query *q)
+static int find_declared(hx_call *c, const hx_query *q)
 {
-    for (int k = 0; k < d->count; ++k)
-        if (hx_query_same(&d->query[k], q))
+    const hx_dependencies *d = c->declared;
+    for (int n = 0, k = c->next_declared; n < d->count; ++n, k = k + 1 < d->count ? k + 1 : 0)
+        if (hx_query_same(&d->query[k], q)) {
+            c->next_declared = k + 1 < d->count ? k + 1 : 0;
             return k;
+        }
     return -1;
 }
 
@@ -165,7 +168,7 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
     if (c->dependency_pass) {
         for (int k = 0; k < count; ++k)
             values[k] = 0.0; /* the dependency pass sees zeros, as in a solver */
-        if (c->declared != NULL && find_declared(c->declared, &q) < 0) {
+        if (c->declared != NULL && find_declared(c, &q) < 0) {
             if (c->declared->count < HX_MAX_QUERIES)
                 c->declared->query[c->declared->count++] = q;
             else
@@ -174,7 +177,7 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
         return count;
     }
     if (c->declared != NULL) {
-        const int k = find_declared(c->declared, &q);
+        const int k = find_declared(c, &q);
         if (k < 0) {
             report_undeclared(c, &q);
         } else {

@@ -2,6 +2,8 @@
 #include "host/binding.h"
 
 #include <limits.h>
+#include <malloc.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -11,6 +13,7 @@ static int bind_one(const hx_model *m, hx_bindings *bs, hx_binding *b, const hx_
                     int line, hx_message *msg)
 {
     b->model = m;
+    b->setup_bytes = -1;
     char path[PATH_MAX];
     if (hx_loader_resolve(u->dll_name, m->dir, path, sizeof path, msg) != 0 ||
         (b->library = strdup(path)) == NULL)
@@ -40,6 +43,37 @@ static int bind_one(const hx_model *m, hx_bindings *bs, hx_binding *b, const hx_
 failed:
     hx_message_prefix(msg, "%s:%d: %s %d", m->path, line, b->element, b->id);
     return -1;
+}
+
+/* The FIESUB twin of a GFOSUB element, when the library exports it
+ * (docs/interface.md §3.0): GFOSUB(code, I, J, rest) -> FIESUB(code, rest),
+ * NAME(I, J, rest) -> NAME_FIELD(rest). A library without one is no error. */
+static int bind_twin(hx_bindings *bs, hx_binding *b)
+{
+    const int named = strcmp(b->names[0], "GFOSUB") != 0;
+    const int first_marker = named ? 0 : 1;
+    if (b->npar < first_marker + 2)
+        return 0;
+    char name[256];
+    if (named)
+        snprintf(name, sizeof name, "%s_FIELD", b->names[0]);
+    else
+        snprintf(name, sizeof name, "FIESUB");
+    hx_message ignored;
+    void *handle = hx_loader_open(&bs->loader, b->library, &ignored);
+    void *fn = handle != NULL ? hx_loader_symbol(handle, b->library, name, &ignored) : NULL;
+    if (fn == NULL)
+        return 0;
+    b->twin_name = strdup(name);
+    b->twin_par = malloc(sizeof(double) * (size_t)b->npar);
+    if (b->twin_name == NULL || b->twin_par == NULL)
+        return -1;
+    b->twin_npar = 0;
+    for (int k = 0; k < b->npar; ++k)
+        if (k != first_marker && k != first_marker + 1)
+            b->twin_par[b->twin_npar++] = b->par[k];
+    b->twin = (usrsub_fiesub_fn *)fn;
+    return 0;
 }
 
 int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_message *msg)
@@ -80,6 +114,8 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
         b->names[0] = f->user.fnc_name ? f->user.fnc_name : gfo ? "GFOSUB" : "FIESUB";
         if (bind_one(m, bs, b, &f->user, f->line, msg) != 0)
             return -1;
+        if (gfo && bind_twin(bs, b) != 0)
+            return hx_fail(msg, "out of memory");
     }
     return 0;
 }
@@ -89,6 +125,8 @@ void hx_bindings_free(hx_bindings *bs)
     for (int k = 0; k < bs->count; ++k) {
         free(bs->items[k].library);
         free(bs->items[k].par);
+        free(bs->items[k].twin_name);
+        free(bs->items[k].twin_par);
     }
     free(bs->items);
     hx_loader_close_all(&bs->loader);
@@ -121,12 +159,21 @@ void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_stat
     call->reported_refused = &b->reported_refused;
 }
 
+/* Bytes in use in the C library's allocator (mallinfo2: small blocks and
+ * mmap'd ones); sanitizers bring their own allocator and answer 0. */
+static long allocated_bytes(void)
+{
+    const struct mallinfo2 info = mallinfo2();
+    return (long)(info.uordblks + info.hblkhd);
+}
+
 int hx_dependency_passes(hx_bindings *bs, const hx_state *s)
 {
     const hx_model *m = s->model;
     for (int k = 0; k < bs->count; ++k) {
         hx_binding *b = &bs->items[k];
         double out[64];
+        const long before = allocated_bytes();
         if (b->kind == HX_BIND_COUPLER) {
             const hx_coupler *c = &m->couplers[b->index];
             double disp[3];
@@ -141,6 +188,8 @@ int hx_dependency_passes(hx_bindings *bs, const hx_state *s)
             hx_force_deformation(s, b->index, disp, velo);
             hx_call_fiesub(b, s, disp, velo, 0, 1, out, dfd, dfv, NULL);
         }
+        const long after = allocated_bytes();
+        b->setup_bytes = before > 0 || after > 0 ? after - before : -1;
         if (b->messages != NULL && hx_messages_stopped(b->messages))
             return -1;
     }
@@ -222,5 +271,20 @@ void hx_call_fiesub(hx_binding *b, const hx_state *s, const double disp[6], cons
     b->fiesub(&id, &t, b->par, &npar, d, v, &df, &flag, field, dfddis, dfdvel);
     if (b->log != NULL)
         b->log->returned++;
+    hx_host_unbind();
+}
+
+void hx_call_twin(hx_binding *b, const hx_state *s, const double disp[6], const double velo[6],
+                  double field[6], double dfddis[36], double dfdvel[36], hx_messages *messages)
+{
+    hx_call call;
+    hx_call_init(&call, b->element, b->id, b->twin_name, b->model, s, messages, 0, NULL);
+    call.may_query = 0; /* a FIESUB entry (docs/interface.md §1) */
+    hx_host_bind(&call);
+    int id = b->id, npar = b->twin_npar, df = 0, flag = 0;
+    double t = s->time, d[6], v[6];
+    memcpy(d, disp, sizeof d);
+    memcpy(v, velo, sizeof v);
+    b->twin(&id, &t, b->twin_par, &npar, d, v, &df, &flag, field, dfddis, dfdvel);
     hx_host_unbind();
 }

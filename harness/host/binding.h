@@ -41,7 +41,19 @@ typedef struct hx_binding {
     usrsub_fiesub_fn *fiesub;
     double *par;         /* the USER list handed to the entries */
     int npar;
+    /* GFOSUB elements: the library's FIESUB twin of the element, when it
+     * exports one (docs/interface.md §3.0: NAME_FIELD for a named entry NAME,
+     * FIESUB for GFOSUB), with the USER list less the I and J marker ids; the
+     * implicit integrator takes its partials from it. NULL: none. */
+    usrsub_fiesub_fn *twin;
+    char *twin_name;
+    double *twin_par;
+    int twin_npar;
     hx_dependencies deps; /* declared in the dependency pass */
+    /* bytes the library kept allocated across the element's first calls (its
+     * dependency pass, where a library sets an element up), as the C
+     * library's allocator counts them; -1: not measured */
+    long setup_bytes;
     /* what the host has reported of this element: each read once */
     hx_noted_queries reported_undeclared, reported_refused;
     const hx_model *model;
@@ -80,5 +92,11 @@ void hx_call_gfosub(hx_binding *b, const hx_state *s, int dflag, int iflag, doub
 void hx_call_fiesub(hx_binding *b, const hx_state *s, const double disp[6], const double velo[6],
                     int dflag, int iflag, double field[6], double dfddis[36], double dfdvel[36],
                     hx_call *call);
+/* The FIESUB twin of a GFOSUB element (b->twin must be set), at the
+ * deformation of its I marker relative to its J marker; it may not query.
+ * Its messages go to `messages` (the caller's, kept apart from the session's:
+ * a twin that refuses the list disqualifies itself, it does not stop the run). */
+void hx_call_twin(hx_binding *b, const hx_state *s, const double disp[6], const double velo[6],
+                  double field[6], double dfddis[36], double dfdvel[36], hx_messages *messages);
 
 #endif

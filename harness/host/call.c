@@ -7,7 +7,16 @@ void hx_call_init(hx_call *c, const char *element, int id, const char *routine,
                   const hx_model *model, const hx_state *state, hx_messages *messages,
                   int dependency_pass, hx_dependencies *declared)
 {
-    memset(c, 0, sizeof *c);
+    /* field by field: the noted queries' arrays are read only up to their
+     * counts, and clearing them would cost more than most calls */
+    c->undeclared.count = c->undeclared.distinct = 0;
+    c->refused.count = c->refused.distinct = 0;
+    c->reported_undeclared = c->reported_refused = NULL;
+    c->host_calls = 0;
+    c->used = 0;
+    c->next_declared = 0;
+    c->perturb_component = 0;
+    c->perturb_delta = 0.0;
     c->element = element;
     c->id = id;
     c->routine = routine;

@@ -47,6 +47,7 @@ typedef struct hx_call {
      * NULL: each call reports on its own), so that a read is reported once */
     hx_noted_queries *reported_undeclared, *reported_refused;
     unsigned used;             /* bit k: declared query k was asked */
+    int next_declared;         /* where the look-up starts: libraries ask in order */
     int perturb_query;         /* -1, or the declared query whose answer is shifted */
     int perturb_component;
     double perturb_delta;

@@ -42,21 +42,23 @@ int hx_loader_resolve(const char *dll_name, const char *model_dir, char *path, s
     if (usable(candidate, path, size))
         return 0;
     const char *dirs = getenv("MS_USERDLL_DIR");
-    if (dirs != NULL) {
-        char *copy = strdup(dirs);
-        char *save = NULL;
-        for (char *dir = copy ? strtok_r(copy, ";:", &save) : NULL; dir != NULL;
-             dir = strtok_r(NULL, ";:", &save)) {
-            if (n > 0 && (size_t)n < sizeof looked)
-                n += snprintf(looked + n, sizeof looked - (size_t)n, ", %s", dir);
-            snprintf(candidate, sizeof candidate, "%s/%s", dir, name);
-            if (usable(candidate, path, size)) {
-                free(copy);
-                return 0;
-            }
+    if (dirs == NULL || *dirs == '\0')
+        return hx_fail(msg, "library '%s' (%s) not found; looked in the model's folder (%s),"
+                           " and MS_USERDLL_DIR is not set (set it to the library's folder)",
+                       name, source, looked);
+    char *copy = strdup(dirs);
+    char *save = NULL;
+    for (char *dir = copy ? strtok_r(copy, ";:", &save) : NULL; dir != NULL;
+         dir = strtok_r(NULL, ";:", &save)) {
+        if (n > 0 && (size_t)n < sizeof looked)
+            n += snprintf(looked + n, sizeof looked - (size_t)n, ", %s", dir);
+        snprintf(candidate, sizeof candidate, "%s/%s", dir, name);
+        if (usable(candidate, path, size)) {
+            free(copy);
+            return 0;
         }
-        free(copy);
     }
+    free(copy);
     return hx_fail(msg, "library '%s' (%s) not found; looked in the model's folder and"
                        " MS_USERDLL_DIR: %s", name, source, looked);
 }

@@ -14,58 +14,66 @@ enum {
 };
 static const int max_nsize[F_COUNT] = {3, 3, 2, 4, 4, 3, 2, 3, 3, 3, 2, 2, 2, 4, 4, 4, 3, 3, 3};
 
-static int is(const char *f, const char *name)
-{
-    while (*name != '\0' && *f == *name)
-        ++f, ++name;
-    return *name == '\0' && *f == '\0';
-}
+/* The name packed into an integer, one byte per character, as the library's
+ * pointer may be to any text: a switch on it replaces string comparisons on
+ * the host's hot path. */
+#define PACK2(a, b) ((unsigned long long)(a) | (unsigned long long)(b) << 8)
+#define PACK3(a, b, c) (PACK2(a, b) | (unsigned long long)(c) << 16)
+#define PACK4(a, b, c, d) (PACK3(a, b, c) | (unsigned long long)(d) << 24)
+#define PACK5(a, b, c, d, e) (PACK4(a, b, c, d) | (unsigned long long)(e) << 32)
 
-static int function_code(const char *f)
+static int function_code(unsigned long long name)
 {
-    if (f == NULL || f[0] == '\0')
-        return -1;
-    const int axis = f[1] >= 'X' && f[1] <= 'Z' && f[2] == '\0' ? f[1] - 'X' : -1;
-    switch (f[0]) {
-    case 'D':
-        return is(f, "DISP") ? F_DISP : is(f, "DM") ? F_DM : axis >= 0 ? F_DX + axis : -1;
-    case 'T':
-        return is(f, "TDISP") ? F_TDISP : is(f, "TVEL") ? F_TVEL : -1;
-    case 'R':
-        return is(f, "RDISP") ? F_RDISP : is(f, "RVEL") ? F_RVEL : -1;
-    case 'V':
-        return is(f, "VEL") ? F_VEL : axis >= 0 ? F_VX + axis : -1;
-    case 'A':
-        return axis >= 0 ? F_AX + axis : -1;
-    case 'W':
-        return axis >= 0 ? F_WX + axis : -1;
-    default:
-        return -1;
+    switch (name) {
+    case PACK4('D', 'I', 'S', 'P'): return F_DISP;
+    case PACK5('T', 'D', 'I', 'S', 'P'): return F_TDISP;
+    case PACK5('R', 'D', 'I', 'S', 'P'): return F_RDISP;
+    case PACK3('V', 'E', 'L'): return F_VEL;
+    case PACK4('T', 'V', 'E', 'L'): return F_TVEL;
+    case PACK4('R', 'V', 'E', 'L'): return F_RVEL;
+    case PACK2('D', 'M'): return F_DM;
+    case PACK2('D', 'X'): return F_DX;
+    case PACK2('D', 'Y'): return F_DX + 1;
+    case PACK2('D', 'Z'): return F_DX + 2;
+    case PACK2('A', 'X'): return F_AX;
+    case PACK2('A', 'Y'): return F_AX + 1;
+    case PACK2('A', 'Z'): return F_AX + 2;
+    case PACK2('V', 'X'): return F_VX;
+    case PACK2('V', 'Y'): return F_VX + 1;
+    case PACK2('V', 'Z'): return F_VX + 2;
+    case PACK2('W', 'X'): return F_WX;
+    case PACK2('W', 'Y'): return F_WX + 1;
+    case PACK2('W', 'Z'): return F_WX + 2;
+    default: return -1;
     }
 }
 
 void hx_query_make(hx_query *q, const char *fnc, const int *ipar, int nsize, int is_array)
 {
-    q->function = function_code(fnc);
+    /* a plain copy: snprintf would cost more than the answer on the host's hot path */
+    unsigned long long name = 0;
+    int n = 0;
+    for (; fnc != NULL && n < (int)sizeof q->fnc - 1 && fnc[n] != '\0'; ++n) {
+        q->fnc[n] = fnc[n];
+        name |= (unsigned long long)(unsigned char)fnc[n] << 8 * n;
+    }
+    q->fnc[n] = '\0';
+    /* a longer name is none of ours, whatever its first seven characters */
+    q->function = fnc != NULL && fnc[n] == '\0' ? function_code(name) : -1;
     q->nsize = nsize;
     q->is_array = is_array;
     for (int k = 0; k < 4; ++k)
         q->ipar[k] = k < nsize && ipar != NULL ? ipar[k] : 0;
-    /* a plain copy: snprintf would cost more than the answer on the host's hot path */
-    int n = 0;
-    for (; fnc != NULL && n < (int)sizeof q->fnc - 1 && fnc[n] != '\0'; ++n)
-        q->fnc[n] = fnc[n];
-    q->fnc[n] = '\0';
 }
 
 int hx_query_same(const hx_query *a, const hx_query *b)
 {
-    if (a->function != b->function || a->nsize != b->nsize || strcmp(a->fnc, b->fnc) != 0)
+    /* a known function code stands for its name; unknown ones compare by text */
+    if (a->function != b->function || a->nsize != b->nsize || a->is_array != b->is_array ||
+        a->ipar[0] != b->ipar[0] || a->ipar[1] != b->ipar[1] || a->ipar[2] != b->ipar[2] ||
+        a->ipar[3] != b->ipar[3])
         return 0;
-    for (int k = 0; k < a->nsize && k < 4; ++k)
-        if (a->ipar[k] != b->ipar[k])
-            return 0;
-    return 1;
+    return a->function >= 0 || strcmp(a->fnc, b->fnc) == 0;
 }
 
 const char *hx_query_text(const hx_query *q, char *text, size_t size)
@@ -139,8 +147,7 @@ int hx_answer(const hx_state *s, const hx_query *q, const int *ipar, double *val
         values[0] = v[code - F_DX];
     } else if (code < F_VX) {
         hx_relative_rotation(I, J, R);
-        hx_projection_angles(R, v);
-        values[0] = v[code - F_AX];
+        values[0] = hx_projection_angle(R, code - F_AX);
     } else if (code < F_WX) {
         hx_relative_velocity(I, J, K, L, v);
         values[0] = v[code - F_VX];

@@ -50,7 +50,12 @@ typedef struct hx_dynamics {
                                    * for good (on ground, unturned) */
     double *force, *torque;     /* per body, world, torque about the cm */
     double *scratch;
-    long evaluations;
+    /* Non-NULL: 6 outputs per force element, in the element's own axes, that
+     * the evaluation applies as they are instead of calling the elements (the
+     * Newton matrix's frozen differences, newton_matrix.h). */
+    const double *frozen_outputs;
+    long evaluations;           /* with the elements called */
+    long frozen_evaluations;    /* with their outputs frozen */
     int failed;
     char message[1024];
     double max_phi, max_phidot; /* largest constraint residuals after projections */

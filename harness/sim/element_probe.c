@@ -50,27 +50,25 @@ int hx_rotation_from_angles(const double a[3], double R[9])
     return hx_max_abs(f, 3) < 1e-12 ? 0 : -1;
 }
 
-void hx_place_relative(const hx_state *base, hx_state *out, int i_marker, int j_marker,
-                       const double disp[6], const double velo[6])
+void hx_place_pose(const hx_state *base, hx_state *out, int i_marker, int j_marker,
+                   const double p[3], const double Rrel[9], const double v[3],
+                   const double w[3])
 {
     const hx_model *m = base->model;
     hx_state_copy(out, base);
     hx_frame scratch;
     const hx_frame *J = hx_state_marker(base, j_marker, &scratch);
-    double Rrel[9];
-    if (hx_rotation_from_angles(disp + 3, Rrel) != 0)
-        rotation_of_vector(disp + 3, Rrel);
     hx_frame I;
     m3_mul(I.R, J->R, Rrel);
-    m3_apply(I.p, J->R, disp);
+    m3_apply(I.p, J->R, p);
     v3_add(I.p, I.p, J->p);
-    double w[3], v[3], r[3], wr[3];
-    m3_apply(w, J->R, velo + 3);
-    v3_add(I.w, J->w, w);
-    m3_apply(v, J->R, velo);
+    double wg[3], vg[3], r[3], wr[3];
+    m3_apply(wg, J->R, w);
+    v3_add(I.w, J->w, wg);
+    m3_apply(vg, J->R, v);
     v3_sub(r, I.p, J->p);
     v3_cross(wr, J->w, r);
-    v3_add(I.v, J->v, v);
+    v3_add(I.v, J->v, vg);
     v3_add(I.v, I.v, wr);
     /* the body frame that carries the I marker there */
     const hx_marker *mk = &m->markers[i_marker];
@@ -86,12 +84,19 @@ void hx_place_relative(const hx_state *base, hx_state *out, int i_marker, int j_
     hx_state_update(out);
 }
 
-/* GFOSUB at a placed state; result turned into J axes. */
-static int gfosub_at(hx_session *s, hx_binding *b, hx_state *scratch, const hx_state *base,
-                     double t, const double disp[6], const double velo[6], double F[6])
+void hx_place_relative(const hx_state *base, hx_state *out, int i_marker, int j_marker,
+                       const double disp[6], const double velo[6])
+{
+    double Rrel[9];
+    if (hx_rotation_from_angles(disp + 3, Rrel) != 0)
+        rotation_of_vector(disp + 3, Rrel);
+    hx_place_pose(base, out, i_marker, j_marker, disp, Rrel, velo, velo + 3);
+}
+
+/* GFOSUB at the state placed in scratch; result turned into J axes. */
+static int gfosub_placed(hx_session *s, hx_binding *b, hx_state *scratch, double t, double F[6])
 {
     const hx_force *f = &s->model->forces[b->index];
-    hx_place_relative(base, scratch, f->i_marker, f->j_marker, disp, velo);
     scratch->time = t;
     double out[6];
     hx_call_gfosub(b, scratch, 1, 0, out, NULL);
@@ -103,6 +108,14 @@ static int gfosub_at(hx_session *s, hx_binding *b, hx_state *scratch, const hx_s
     m3_apply(F, Rjr, out);
     m3_apply(F + 3, Rjr, out + 3);
     return hx_messages_stopped(&s->messages) ? -1 : 0;
+}
+
+static int gfosub_at(hx_session *s, hx_binding *b, hx_state *scratch, const hx_state *base,
+                     double t, const double disp[6], const double velo[6], double F[6])
+{
+    const hx_force *f = &s->model->forces[b->index];
+    hx_place_relative(base, scratch, f->i_marker, f->j_marker, disp, velo);
+    return gfosub_placed(s, b, scratch, t, F);
 }
 
 int hx_element_at(hx_session *s, hx_state *scratch, const hx_state *base, int force, double t,
@@ -139,8 +152,25 @@ int hx_element_at(hx_session *s, hx_state *scratch, const hx_state *base, int fo
     return status;
 }
 
+/* Force and torque on I in J axes with I at rest at pose (p, R) relative to J. */
+static int element_at_pose(hx_session *s, hx_state *scratch, const hx_state *base, int force,
+                           double t, const double p[3], const double R[9], double F[6])
+{
+    const double zero[6] = {0, 0, 0, 0, 0, 0};
+    hx_binding *b = hx_binding_of_force(&s->bindings, force);
+    if (b->kind == HX_BIND_FIESUB) {
+        double disp[6];
+        v3_copy(disp, p);
+        hx_projection_angles(R, disp + 3);
+        return hx_element_at(s, scratch, base, force, t, disp, zero, F, NULL, NULL);
+    }
+    const hx_force *f = &s->model->forces[b->index];
+    hx_place_pose(base, scratch, f->i_marker, f->j_marker, p, R, zero, zero);
+    return gfosub_placed(s, b, scratch, t, F);
+}
+
 double hx_element_potential(hx_session *s, hx_state *scratch, const hx_state *base, int force,
-                            double t, const double disp[6])
+                            double t)
 {
     static const double node[8] = {0.0198550717512319, 0.1016667612931866, 0.2372337950418355,
                                    0.4082826787521751, 0.5917173212478249, 0.7627662049581645,
@@ -148,16 +178,31 @@ double hx_element_potential(hx_session *s, hx_state *scratch, const hx_state *ba
     static const double weight[8] = {0.0506142681451881, 0.1111905172266872, 0.1568533229389436,
                                      0.1813418916891810, 0.1813418916891810, 0.1568533229389436,
                                      0.1111905172266872, 0.0506142681451881};
-    const double zero[6] = {0, 0, 0, 0, 0, 0};
+    /* the pose of I in J: position x, rotation vector r */
+    const hx_force *f = &s->model->forces[force];
+    hx_frame frames[2];
+    const hx_frame *I = hx_state_marker(base, f->i_marker, &frames[0]);
+    const hx_frame *J = hx_state_marker(base, f->j_marker, &frames[1]);
+    double x[3], R[9], r[3];
+    hx_displacement(I, J, J, x);
+    hx_relative_rotation(I, J, R);
+    hx_rotation_vector(R, r);
+    const double angle = v3_norm(r);
     double energy = 0.0;
     for (int k = 0; k < 8; ++k) {
-        double d[6], F[6];
-        for (int i = 0; i < 6; ++i)
-            d[i] = node[k] * disp[i];
-        if (hx_element_at(s, scratch, base, force, t, d, zero, F, NULL, NULL) != 0)
+        /* along the path, I moves at x and turns at r (in J axes): the power of
+         * the force and torque on it is F . x + T . r */
+        double p[3], Rk[9], F[6];
+        v3_scale(p, x, node[k]);
+        if (angle > 0.0) {
+            const double axis[3] = {r[0] / angle, r[1] / angle, r[2] / angle};
+            m3_axis_angle(Rk, axis, node[k] * angle);
+        } else {
+            m3_identity(Rk);
+        }
+        if (element_at_pose(s, scratch, base, force, t, p, Rk, F) != 0)
             return NAN;
-        for (int i = 0; i < 6; ++i)
-            energy -= weight[k] * F[i] * disp[i];
+        energy -= weight[k] * (v3_dot(F, x) + v3_dot(F + 3, r));
     }
     return energy;
 }

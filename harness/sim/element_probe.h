@@ -16,8 +16,14 @@
  * when Newton's method does not converge (angles near +-pi/2 or beyond). */
 int hx_rotation_from_angles(const double a[3], double R[9]);
 
-/* out = base with I's body moved so that the I marker sits at disp and moves
- * at velo relative to the J marker (markers updated). */
+/* out = base with I's body moved so that the I marker sits at p with
+ * orientation R and moves at v, w relative to the J marker (all in J axes;
+ * markers updated). */
+void hx_place_pose(const hx_state *base, hx_state *out, int i_marker, int j_marker,
+                   const double p[3], const double R[9], const double v[3],
+                   const double w[3]);
+
+/* The same with the orientation given by projection angles disp[3..5]. */
 void hx_place_relative(const hx_state *base, hx_state *out, int i_marker, int j_marker,
                        const double disp[6], const double velo[6]);
 
@@ -29,9 +35,12 @@ int hx_element_at(hx_session *s, hx_state *scratch, const hx_state *base, int fo
                   const double disp[6], const double velo[6], double F[6], double *dFdd,
                   double *dFdv);
 
-/* Elastic energy -integral_0^1 F(s disp, 0) . disp ds (8-point Gauss-Legendre):
- * the potential of a conservative element, in force * length units. */
+/* Elastic energy of the element at state base: minus the work of its force
+ * and torque on I, at rest, along the path from J's pose to I's that moves
+ * straight and turns about one fixed axis (I at s x and exp(s [r]x) in J, s
+ * from 0 to 1; 8-point Gauss-Legendre). For a conservative element any path
+ * gives the same: this is its potential, in force * length units. */
 double hx_element_potential(hx_session *s, hx_state *scratch, const hx_state *base, int force,
-                            double t, const double disp[6]);
+                            double t);
 
 #endif

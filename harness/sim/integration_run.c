@@ -1,4 +1,4 @@
-/* Bookkeeping shared by the explicit integrators (integration_run.h). */
+/* Bookkeeping shared by the integrators (integration_run.h). */
 #include "sim/integration_run.h"
 
 #include <math.h>

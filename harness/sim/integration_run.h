@@ -1,7 +1,7 @@
 /*
- * One integration in progress, shared by the explicit integrators
- * (integrator.c, dopri5.c): the problem, the options, the counters, and the
- * bookkeeping of output times and divergence.
+ * One integration in progress, shared by the integrators (integrator.c,
+ * dopri5.c, bdf.c, arkode_dopri5.c): the problem, the options, the counters,
+ * and the bookkeeping of output times and divergence.
  */
 #ifndef HX_SIM_INTEGRATION_RUN_H
 #define HX_SIM_INTEGRATION_RUN_H
@@ -27,5 +27,7 @@ int hx_run_evaluate(hx_run *r, double t, const double *y, double *ydot);
 int hx_run_finite_and_bounded(const hx_run *r, const double *y);
 
 hx_status hx_integrate_dopri5(hx_run *r, double t0, double *y);
+hx_status hx_integrate_bdf(hx_run *r, double t0, double *y);
+hx_status hx_integrate_arkode_dopri5(hx_run *r, double t0, double *y);
 
 #endif

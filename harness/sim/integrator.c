@@ -1,4 +1,4 @@
-/* Explicit integrators (integrator.h). */
+/* The integrators' common entry, names and fixed-step methods (integrator.h). */
 #include "sim/integrator.h"
 #include "sim/integration_run.h"
 
@@ -21,13 +21,15 @@ const char *hx_method_name(hx_method method)
     case HX_METHOD_SYMPLECTIC_EULER: return "symplectic-euler";
     case HX_METHOD_RK4: return "rk4";
     case HX_METHOD_DOPRI5: return "dopri5";
+    case HX_METHOD_BDF: return "bdf";
+    case HX_METHOD_DOPRI5_ARKODE: return "dopri5-arkode";
     }
     return "?";
 }
 
 int hx_method_parse(const char *name, hx_method *method)
 {
-    for (int k = HX_METHOD_EULER; k <= HX_METHOD_DOPRI5; ++k)
+    for (int k = 0; k < HX_METHOD_COUNT; ++k)
         if (strcmp(name, hx_method_name((hx_method)k)) == 0) {
             *method = (hx_method)k;
             return 0;
@@ -41,8 +43,32 @@ int hx_method_order(hx_method method)
     case HX_METHOD_EULER:
     case HX_METHOD_SYMPLECTIC_EULER: return 1;
     case HX_METHOD_RK4: return 4;
-    case HX_METHOD_DOPRI5: return 5;
+    case HX_METHOD_DOPRI5:
+    case HX_METHOD_DOPRI5_ARKODE:
+    case HX_METHOD_BDF: return 5;
     }
+    return 0;
+}
+
+int hx_method_adaptive(hx_method method)
+{
+    return method == HX_METHOD_DOPRI5 || method == HX_METHOD_BDF ||
+           method == HX_METHOD_DOPRI5_ARKODE;
+}
+
+const char *hx_jacobian_name(hx_jacobian jacobian)
+{
+    return jacobian == HX_JACOBIAN_FD ? "fd" : "analytic";
+}
+
+int hx_jacobian_parse(const char *name, hx_jacobian *jacobian)
+{
+    if (strcmp(name, "analytic") == 0)
+        *jacobian = HX_JACOBIAN_ANALYTIC;
+    else if (strcmp(name, "fd") == 0)
+        *jacobian = HX_JACOBIAN_FD;
+    else
+        return -1;
     return 0;
 }
 
@@ -55,6 +81,7 @@ const char *hx_status_text(hx_status status)
     case HX_INTEGRATION_STEP_TOO_SMALL: return "step size too small";
     case HX_INTEGRATION_TOO_MANY_STEPS: return "too many steps";
     case HX_INTEGRATION_STOPPED: return "stopped";
+    case HX_INTEGRATION_NO_CONVERGENCE: return "Newton iterations failed to converge";
     }
     return "?";
 }
@@ -158,7 +185,10 @@ hx_status hx_integrate(const hx_ode *ode, double t0, double *y, const hx_integra
     r.limit = (opt->growth_limit > 0.0 ? opt->growth_limit : 1e12) * (1.0 + hx_run_norm(y, m));
     if (opt->method == HX_METHOD_SYMPLECTIC_EULER && ode->advance == NULL)
         return HX_INTEGRATION_FAILED;
-    if (opt->method == HX_METHOD_DOPRI5)
-        return hx_integrate_dopri5(&r, t0, y);
-    return integrate_fixed(&r, t0, y);
+    switch (opt->method) {
+    case HX_METHOD_DOPRI5: return hx_integrate_dopri5(&r, t0, y);
+    case HX_METHOD_BDF: return hx_integrate_bdf(&r, t0, y);
+    case HX_METHOD_DOPRI5_ARKODE: return hx_integrate_arkode_dopri5(&r, t0, y);
+    default: return integrate_fixed(&r, t0, y);
+    }
 }

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "base/clock.h"
+#include "sim/newton_matrix.h"
 
 
 /* Energy the force elements took out since the start: the work they did not
@@ -20,6 +21,7 @@ typedef struct run_context {
     const hx_simulation_options *opt;
     hx_simulation_result *result;
     double started, last_progress;
+    hx_newton_matrix *newton; /* BDF with analytic partials */
 } run_context;
 
 static int rhs(void *ctx, double t, const double *y, double *ydot)
@@ -38,6 +40,11 @@ static int project(void *ctx, double t, double *y)
 static void advance(void *ctx, double *y, double h)
 {
     hx_dynamics_advance_positions(((run_context *)ctx)->d, y, h);
+}
+
+static int jacobian(void *ctx, double t, const double *y, double *J)
+{
+    return hx_newton_matrix_build(((run_context *)ctx)->newton, t, y, J);
 }
 
 static int output_work(run_context *rc, double t, const double *y);
@@ -98,21 +105,38 @@ int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
     }
     result->energy0 = hx_dynamics_energy(d, 0.0, y);
     result->energy_scale = fmax(fabs(result->energy0.total), fabs(result->energy0.kinetic));
-    run_context rc = {d, opt, result, hx_seconds(), hx_seconds()};
+    run_context rc = {d, opt, result, hx_seconds(), hx_seconds(), NULL};
+    hx_newton_matrix newton;
+    const int analytic = opt->integration.method == HX_METHOD_BDF &&
+                         opt->integration.jacobian == HX_JACOBIAN_ANALYTIC;
+    if (analytic) {
+        hx_message msg;
+        if (hx_newton_matrix_init(&newton, d, &msg) != 0) {
+            snprintf(result->message, sizeof result->message, "%s", msg.text);
+            result->status = HX_INTEGRATION_FAILED;
+            free(y);
+            return -1;
+        }
+        rc.newton = &newton;
+    }
     if (opt->csv != NULL) {
         hx_csv_header(opt->csv, d);
         hx_csv_row(opt->csv, d, 0.0, y, &result->energy0, &result->energy0);
     }
     if (opt->observer != NULL)
         opt->observer(opt->observer_ctx, d, 0.0, y);
-    hx_ode ode = {d->n, d->nq, d->nu, rhs, project, advance, &rc};
+    hx_ode ode = {d->n, d->nq, d->nu, rhs, project, advance, &rc, analytic ? jacobian : NULL};
     hx_integrator_options io = opt->integration;
     io.output = output;
-    const long evaluations_before = d->evaluations;
     const double start = hx_seconds();
     result->status = hx_integrate(&ode, 0.0, y, &io, &result->stats);
     result->seconds = hx_seconds() - start;
-    (void)evaluations_before;
+    if (analytic) {
+        result->stats.frozen_evaluations = newton.frozen_evaluations;
+        result->stats.partial_calls = newton.partial_calls;
+        hx_newton_matrix_describe(&newton, result->newton_matrix, sizeof result->newton_matrix);
+        hx_newton_matrix_free(&newton);
+    }
     if (opt->progress && result->seconds >= 1.0)
         fprintf(stderr, "\n");
     result->energy_end = hx_dynamics_energy(d, result->stats.t_reached, y);
@@ -128,6 +152,25 @@ int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
         memcpy(y_end, y, sizeof(double) * (size_t)d->n);
     free(y);
     return result->status == HX_INTEGRATION_OK ? 0 : -1;
+}
+
+/* Newton iterations and Jacobians per step, and what the Newton matrix cost. */
+static void bdf_summary(FILE *f, const hx_simulation_options *opt, const hx_simulation_result *r)
+{
+    const hx_integrator_stats *st = &r->stats;
+    const double steps = st->steps > 0 ? (double)st->steps : 1.0;
+    fprintf(f, "  bdf (CVODE, max order %d, last order %d): %ld Newton iterations (%.2f per step),"
+            " %ld Jacobians (one per %.1f steps), %ld error-test and %ld convergence failures\n",
+            opt->integration.max_order > 0 ? opt->integration.max_order : 5, st->last_order,
+            st->newton_iterations, (double)st->newton_iterations / steps, st->jacobians,
+            st->jacobians > 0 ? steps / (double)st->jacobians : 0.0, st->error_test_failures,
+            st->convergence_failures);
+    if (opt->integration.jacobian == HX_JACOBIAN_FD)
+        fprintf(f, "  Newton matrix by CVODE's differences of the whole right-hand side: %ld of the"
+                " %ld right-hand sides\n", st->fd_jacobian_evaluations, st->evaluations);
+    else
+        fprintf(f, "  %s\n  its cost: %ld frozen right-hand sides (harness only), %ld element"
+                " calls\n", r->newton_matrix, st->frozen_evaluations, st->partial_calls);
 }
 
 void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_options *opt,
@@ -154,8 +197,12 @@ void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_op
     fprintf(f, "  energy balance (dissipation counted): largest error %.3g (%.3g relative)\n",
             r->balance_error_max, r->balance_error_max / scale);
     fprintf(f, "  (relative to max(|E(0)|, largest kinetic energy) = %.6g)\n", r->energy_scale);
+    if (opt->integration.method == HX_METHOD_BDF)
+        bdf_summary(f, opt, r);
     if (r->stats.stiff)
         fprintf(f, "  dopri5: the problem seems to become stiff at t = %.6g\n", r->stats.t_stiff);
+    if (r->stats.solver_message[0] != '\0' && r->status != HX_INTEGRATION_OK)
+        fprintf(f, "  %s\n", r->stats.solver_message);
     if (r->message[0] != '\0')
         fprintf(f, "  %s\n", r->message);
 }

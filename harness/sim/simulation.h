@@ -1,7 +1,9 @@
 /*
  * One simulation of a session's model: the dynamics integrated by the chosen
- * method, CSV rows at the output times, and a summary (steps, evaluations,
- * run time, constraint residuals, energy error and the elements' dissipation).
+ * method (BDF with its Newton matrix from the elements' partials,
+ * newton_matrix.h, unless differences are asked for), CSV rows at the output
+ * times, and a summary (steps, evaluations, Newton iterations, run time,
+ * constraint residuals, energy error and the elements' dissipation).
  */
 #ifndef HX_SIMULATION_H
 #define HX_SIMULATION_H
@@ -35,6 +37,7 @@ typedef struct hx_simulation_result {
     double energy_scale;      /* max(|E(0)|, largest kinetic energy): relative errors use it */
     double dissipated;        /* energy the force elements took out by the end */
     double max_phi, max_phidot;
+    char newton_matrix[1024]; /* BDF with analytic partials: where they came from */
     char message[1024];
 } hx_simulation_result;
 

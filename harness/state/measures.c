@@ -17,11 +17,19 @@ void hx_relative_rotation(const hx_frame *I, const hx_frame *J, double R[9])
     m3_tmul(R, J->R, I->R);
 }
 
+double hx_projection_angle(const double R[9], int axis)
+{
+    switch (axis) {
+    case 0: return atan2(R[7], R[4]); /* Y_I . Z_J, Y_I . Y_J */
+    case 1: return atan2(R[2], R[8]); /* Z_I . X_J, Z_I . Z_J */
+    default: return atan2(R[3], R[0]); /* X_I . Y_J, X_I . X_J */
+    }
+}
+
 void hx_projection_angles(const double R[9], double a[3])
 {
-    a[0] = atan2(R[7], R[4]); /* Y_I . Z_J, Y_I . Y_J */
-    a[1] = atan2(R[2], R[8]); /* Z_I . X_J, Z_I . Z_J */
-    a[2] = atan2(R[3], R[0]); /* X_I . Y_J, X_I . X_J */
+    for (int axis = 0; axis < 3; ++axis)
+        a[axis] = hx_projection_angle(R, axis);
 }
 
 static double wrap(double angle)
@@ -38,7 +46,7 @@ void hx_euler313(const double R[9], double e[3])
     /* R = [[. . s_psi s_th], [. . -c_psi s_th], [s_th s_phi, s_th c_phi, c_th]]; and
      *   R10 - R01 = (1 + c_th) sin(psi + phi),  R00 + R11 = (1 + c_th) cos(psi + phi),
      *   R10 + R01 = (1 - c_th) sin(psi - phi),  R00 - R11 = (1 - c_th) cos(psi - phi) */
-    const double s = hypot(R[2], R[5]);
+    const double s = sqrt(R[2] * R[2] + R[5] * R[5]); /* entries of at most 1: no overflow */
     e[1] = atan2(s, R[8]);
     /* psi is arbitrary where sin(theta) is rounding; where it is exactly 0, all
      * of the defined sum goes to psi */
@@ -48,6 +56,19 @@ void hx_euler313(const double R[9], double e[3])
         e[2] = wrap(atan2(R[3] - R[1], R[0] + R[4]) - e[0]);
     else
         e[2] = wrap(e[0] - atan2(R[3] + R[1], R[0] - R[4]));
+}
+
+void hx_rotation_vector(const double R[9], double r[3])
+{
+    double q[4];
+    quat_from_matrix(q, R);
+    if (q[0] < 0.0) /* the shorter way round: angle in [0, pi] */
+        for (int k = 0; k < 4; ++k)
+            q[k] = -q[k];
+    const double s = sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    /* angle / sin(angle / 2), which tends to 2 at rest */
+    const double scale = s > 1e-8 ? 2.0 * atan2(s, q[0]) / s : 2.0 / q[0];
+    v3_scale(r, q + 1, scale);
 }
 
 void hx_relative_euler313(const hx_frame *I, const hx_frame *J, double e[3])

@@ -13,8 +13,11 @@
 void hx_displacement(const hx_frame *I, const hx_frame *J, const hx_frame *K, double d[3]);
 /* Orientation of I relative to J: R_J^T R_I */
 void hx_relative_rotation(const hx_frame *I, const hx_frame *J, double R[9]);
-/* AX, AY, AZ: projection angles of a relative rotation. */
+/* AX, AY, AZ: projection angles of a relative rotation (one: axis 0, 1, 2). */
 void hx_projection_angles(const double R[9], double a[3]);
+double hx_projection_angle(const double R[9], int axis);
+/* The rotation vector r (axis times angle, angle in [0, pi]) with R = exp([r]x). */
+void hx_rotation_vector(const double R[9], double r[3]);
 /* Body 3-1-3 Euler angles (psi, theta, phi) with R = Rz(psi) Rx(theta) Rz(phi).
  * Where sin(theta) is small only psi + phi (or psi - phi near theta = pi) is
  * defined: it is taken from the entries that stay well conditioned there, so

@@ -36,6 +36,21 @@ typedef void STDCALL usrsub_fiesub_fn(int *id, double *time, double *par, int *n
                                       double *disp, double *velo, int *dflag, int *iflag,
                                       double *field, double *dfddis, double *dfdvel);
 
+/* YFOSUB (Force_StateEqn): stated (nstate) and output (noutpt: Fx Fy Fz Tx Ty
+ * Tz on I in J axes) from states (nstate) and input (ninput). */
+typedef void STDCALL usrsub_yfosub_fn(int *id, double *time, double *par, int *npar, int *dflag,
+                                      int *iflag, int *nstate, double *states, int *ninput,
+                                      double *input, int *noutpt, double *stated,
+                                      double *output);
+
+/* YFOXX, YFOXU, YFOYX, YFOYU: d stated/d states (nstate x nstate), d stated/d
+ * input (nstate x ninput), d output/d states (noutpt x nstate), d output/d
+ * input (noutpt x ninput); column-major, [i + rows*j] = d out_i / d in_j. */
+typedef void STDCALL usrsub_state_partial_fn(int *id, double *time, double *par, int *npar,
+                                             int *iflag, int *nstate, double *states,
+                                             int *ninput, double *input, int *noutpt,
+                                             double *matrix);
+
 /* ---- Entries the library exports ---------------------------------------- */
 
 USRSUB_EXPORT usrsub_coupler_fn COUSUB;
@@ -53,6 +68,13 @@ USRSUB_EXPORT usrsub_gfosub_fn FLEX_JOINT;
 USRSUB_EXPORT usrsub_fiesub_fn ABM_BUSHING_FIELD;
 USRSUB_EXPORT usrsub_fiesub_fn MOUNT_LIMITS_FIELD;
 USRSUB_EXPORT usrsub_fiesub_fn FLEX_JOINT_FIELD;
+
+/* The bushing with internal states (par[0] = 1, as GFOSUB's without markers). */
+USRSUB_EXPORT usrsub_yfosub_fn YFOSUB;
+USRSUB_EXPORT usrsub_state_partial_fn YFOXX;
+USRSUB_EXPORT usrsub_state_partial_fn YFOXU;
+USRSUB_EXPORT usrsub_state_partial_fn YFOYX;
+USRSUB_EXPORT usrsub_state_partial_fn YFOYU;
 
 /* ---- Utilities a host provides (resolved from the host at load time) ---- */
 

@@ -8,15 +8,12 @@
 void usrsub_bushing_force(const usrsub_bushing *b, const double d[6], const double v[6],
                           double F[6], double *dFdd, double *dFdv)
 {
-    if (dFdd != NULL) {
+    if (dFdd != NULL) { /* the partials are sparse: blocks and a diagonal */
         memset(dFdd, 0, 36 * sizeof(double));
         memset(dFdv, 0, 36 * sizeof(double));
     }
-    unsigned coupled = 0;
-    for (int g = 0; g < 2; ++g) {
+    for (int g = 0; g < b->ngroups; ++g) {
         const int m = b->group_size[g];
-        if (m < 2)
-            continue;
         const usrsub_bushing_direction *dirs[3];
         double q[3], qd[3], Fg[3], J[9], Jv[9];
         for (int i = 0; i < m; ++i) {
@@ -31,24 +28,18 @@ void usrsub_bushing_force(const usrsub_bushing *b, const double d[6], const doub
             const int k = b->group[g][i];
             const double V = dirs[i]->force_scale;
             F[k] = -dirs[i]->preload + V * Fg[i];
-            coupled |= 1u << k;
             if (dFdd == NULL)
                 continue;
             for (int j = 0; j < m; ++j) {
                 const int kj = b->group[g][j];
-                dFdd[k + 6 * kj] = V * J[i * m + j] * dirs[j]->disp_scale;
-                dFdv[k + 6 * kj] = V * Jv[i * m + j] * dirs[j]->disp_scale;
+                dFdd[k + 6 * kj] = V * J[i + m * j] * dirs[j]->disp_scale;
+                dFdv[k + 6 * kj] = V * Jv[i + m * j] * dirs[j]->disp_scale;
             }
         }
     }
-    for (int k = 0; k < 6; ++k) {
-        if (coupled & (1u << k))
-            continue;
+    for (int n = 0; n < b->nsingle; ++n) {
+        const int k = b->single[n];
         const usrsub_bushing_direction *dk = &b->dir[k];
-        if (!dk->active) {
-            F[k] = 0.0;
-            continue;
-        }
         const double H = dk->disp_scale, V = dk->force_scale;
         double slope;
         const double g = usrsub_characteristic(dk, H * d[k] - dk->offset, dFdd != NULL ? &slope : NULL);
@@ -58,12 +49,17 @@ void usrsub_bushing_force(const usrsub_bushing *b, const double d[6], const doub
             dFdv[k + 6 * k] = -V * dk->c * H;
         }
     }
+    for (int n = 0; n < b->ninactive; ++n)
+        F[b->inactive[n]] = 0.0;
 }
 
 void usrsub_bushing_prepare(usrsub_bushing *b)
 {
     const int size = b->coupling == USRSUB_SPHERICAL ? 3 : b->coupling == USRSUB_CYLINDRICAL ? 2 : 0;
     b->uses_translation = b->uses_rotation = b->uses_velocity = 0;
+    b->has_states = b->friction.active;
+    for (int k = 0; k < 6; ++k)
+        b->has_states |= b->dir[k].rubber || b->dir[k].mount;
     for (int k = 0; k < 6; ++k) {
         usrsub_bushing_direction *d = &b->dir[k];
         d->active = d->stiffness != USRSUB_STIFFNESS_NONE || d->damped;
@@ -80,13 +76,34 @@ void usrsub_bushing_prepare(usrsub_bushing *b)
         if (d->damped)
             b->uses_velocity = 1;
     }
+    /* the coupled groups first (one active member alone is not coupled), then
+     * each direction that is evaluated on its own, then the inactive ones */
+    b->ngroups = b->nsingle = b->ninactive = 0;
+    unsigned grouped = 0;
     for (int g = 0; g < 2; ++g) {
-        b->group_size[g] = 0;
+        int members[3], count = 0;
         for (int i = 0; i < size; ++i)
             if (b->dir[3 * g + i].active)
-                b->group[g][b->group_size[g]++] = 3 * g + i;
-        if (b->group_size[g] < 2) /* one active member alone is not coupled */
-            b->group_size[g] = 0;
+                members[count++] = 3 * g + i;
+        if (count < 2)
+            continue;
+        b->epsilon[b->ngroups] = b->group_epsilon[g];
+        b->group_size[b->ngroups] = count;
+        for (int i = 0; i < count; ++i) {
+            b->group[b->ngroups][i] = members[i];
+            grouped |= 1u << members[i];
+        }
+        b->ngroups++;
+    }
+    /* a damped-only direction's deflection matters only inside a group */
+    b->uses_twist = b->dir[5].stiffness != USRSUB_STIFFNESS_NONE || (grouped & (1u << 5)) != 0;
+    for (int k = 0; k < 6; ++k) {
+        if (grouped & (1u << k))
+            continue;
+        if (b->dir[k].active)
+            b->single[b->nsingle++] = k;
+        else
+            b->inactive[b->ninactive++] = k;
     }
 }
 

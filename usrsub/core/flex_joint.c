@@ -28,6 +28,9 @@ void usrsub_flex_joint_prepare(usrsub_flex_joint *j)
     j->uses_translation = ((j->k_blocks | j->d_blocks) & left) != 0;
     j->uses_rotation = ((j->k_blocks | j->d_blocks) & right) != 0;
     j->uses_velocity = j->d_blocks != 0;
+    j->uses_twist = 0;
+    for (int r = 0; r < 6; ++r)
+        j->uses_twist |= j->k[r + 6 * 5] != 0.0;
 }
 
 /* F[rows] -= m[rows, columns] x[columns] for each non-zero 3x3 block. */

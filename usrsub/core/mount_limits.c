@@ -101,7 +101,7 @@ void usrsub_mount_limits_add(const usrsub_mount_limits *m, const double d[6], co
 
 void usrsub_mount_limits_prepare(usrsub_mount_limits *m)
 {
-    m->uses_translation = m->uses_rotation = m->uses_velocity = 0;
+    m->uses_translation = m->uses_rotation = m->uses_velocity = m->uses_twist = 0;
     m->directions = 0;
     for (int k = 0; k < 6; ++k)
         for (int side = 0; side < 2; ++side)
@@ -118,6 +118,8 @@ void usrsub_mount_limits_prepare(usrsub_mount_limits *m)
             m->uses_rotation = 1;
         if (s->c > 0.0)
             m->uses_velocity = 1;
+        if (s->direction == 5)
+            m->uses_twist = 1;
     }
 }
 

@@ -1,7 +1,8 @@
 /*
  * Natural cubic spline with linear extension (include/usrsub/spline.h).
  * Set-up solves the tridiagonal system for the knot curvatures once; an
- * evaluation is one binary search and a cubic in Horner form.
+ * evaluation finds its interval (by division for equally spaced knots, else
+ * a bucket and a step or two) and is a cubic in Horner form.
  */
 #include "usrsub/core/spline.h"
 
@@ -69,6 +70,11 @@ int usrsub_spline_init(usrsub_spline *s, int n, const double *x, const double *y
             ++i;
         bucket[b] = i;
     }
+    const double h0 = x[1] - x[0];
+    s->uniform = 1;
+    for (int i = 1; i < m && s->uniform; ++i)
+        s->uniform = fabs((x[i + 1] - x[i]) - h0) <= 1e-12 * h0;
+    s->inverse_spacing = 1.0 / h0;
     free(curv);
     free(work);
     return 0;
@@ -88,6 +94,15 @@ static inline int interval_of(const usrsub_spline *s, double x)
 {
     const double *xs = s->x;
     const int last = s->n - 1;
+    if (s->uniform) { /* the quotient, then one step where rounding put x across a knot */
+        int i = (int)((x - xs[0]) * s->inverse_spacing);
+        i = i < 0 ? 0 : i > last - 1 ? last - 1 : i;
+        if (i > 0 && xs[i] > x)
+            --i;
+        else if (i + 1 < last && xs[i + 1] <= x)
+            ++i;
+        return i;
+    }
     int b = (int)((x - xs[0]) * s->bucket_scale);
     if (b >= s->nbuckets)
         b = s->nbuckets - 1;

@@ -17,7 +17,8 @@
 enum element_interface {
     ELEMENT_COUPLER = 1, /* COUSUB, COUXX, COUXX2 share one set-up */
     ELEMENT_GFOSUB = 2,
-    ELEMENT_FIESUB = 3
+    ELEMENT_FIESUB = 3,
+    ELEMENT_YFOSUB = 4 /* YFOSUB and its four partials share one set-up */
 };
 
 typedef struct element_signature {

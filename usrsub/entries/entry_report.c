@@ -60,3 +60,12 @@ void entry_report_error(const char *routine, int id, const char *kind, const cha
     snprintf(text, sizeof text, "%s element %d: %s", routine, id, what);
     host_report_error(id, text);
 }
+
+int entry_arguments_ok(const char *routine, const int *id, const double *par, const int *npar)
+{
+    if (id != NULL && npar != NULL && *npar >= 0 && (*npar == 0 || par != NULL))
+        return 1;
+    entry_report_error(routine, id != NULL ? *id : 0, NULL, "called with a missing argument (id,"
+                       " par or npar) or a negative npar");
+    return 0;
+}

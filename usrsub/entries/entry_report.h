@@ -20,4 +20,8 @@ void entry_report_setup(const char *routine, int id, int set_up_now, const void 
 void entry_report_error(const char *routine, int id, const char *kind, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 
+/* 1 when id, npar and par (for npar > 0) are there and npar >= 0; else the
+ * call breaks the calling convention, which is reported (every time). */
+int entry_arguments_ok(const char *routine, const int *id, const double *par, const int *npar);
+
 #endif

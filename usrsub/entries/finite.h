@@ -21,9 +21,22 @@ static inline int all_finite_strided(const double *v, int n, int stride)
     return (carry >> 63) == 0;
 }
 
+/* The same over contiguous values, two lanes at a time (SSE2, in every
+ * x86-64): the 72 partials of a FIESUB call in 36 steps. */
 static inline int all_finite(const double *v, int n)
 {
-    return all_finite_strided(v, n, 1);
+    typedef uint64_t lanes __attribute__((vector_size(16)));
+    const lanes exponent = {0x7ff0000000000000u, 0x7ff0000000000000u};
+    const lanes unit = {0x0010000000000000u, 0x0010000000000000u};
+    lanes carry = {0, 0};
+    int k = 0;
+    for (; k + 2 <= n; k += 2) {
+        lanes bits;
+        memcpy(&bits, v + k, sizeof bits);
+        carry |= (bits & exponent) + unit;
+    }
+    const uint64_t tail = k < n ? !all_finite_strided(v + k, n - k, 1) : 0;
+    return ((carry[0] | carry[1]) >> 63 | tail) == 0;
 }
 
 #endif

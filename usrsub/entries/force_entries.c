@@ -13,32 +13,6 @@
 #include "force_model.h"
 #include "usrsub/solver_abi.h"
 
-static int gfosub_interface = ELEMENT_GFOSUB;
-static int fiesub_interface = ELEMENT_FIESUB;
-
-static int arguments_ok(const char *routine, const int *id, const double *par, const int *npar)
-{
-    if (id != NULL && npar != NULL && *npar >= 0 && (*npar == 0 || par != NULL))
-        return 1;
-    entry_report_error(routine, id != NULL ? *id : 0, NULL, "called with a missing argument (id,"
-                       " par or npar) or a negative npar");
-    return 0;
-}
-
-static const force_model *model_of(const char *routine, int interface, int code, int id,
-                                   const double *par, int npar)
-{
-    element_signature sig = {interface, id, code, par, npar};
-    element_setup_report report;
-    int set_up_now;
-    const force_model *m = element_cache_lookup(
-        &sig, force_model_setup, force_model_release,
-        interface == ELEMENT_GFOSUB ? &gfosub_interface : &fiesub_interface, &set_up_now, &report);
-    if (set_up_now)
-        entry_report_setup(routine, id, set_up_now, m, &report);
-    return m;
-}
-
 static void gfosub_entry(const char *routine, int code, int *id, double *time, double *par,
                          int *npar, int *dflag, int *iflag, double *result)
 {
@@ -46,14 +20,16 @@ static void gfosub_entry(const char *routine, int code, int *id, double *time, d
     if (result == NULL)
         return;
     memset(result, 0, 6 * sizeof(double));
-    if (!arguments_ok(routine, id, par, npar))
+    if (!entry_arguments_ok(routine, id, par, npar))
         return;
-    const force_model *m = model_of(routine, ELEMENT_GFOSUB, code, *id, par, *npar);
+    const force_model *m = force_model_of(routine, ELEMENT_GFOSUB, code, *id, par, *npar);
     if (m == NULL)
         return;
-    double d[6] = {0, 0, 0, 0, 0, 0}, v[6] = {0, 0, 0, 0, 0, 0};
+    double d[6] = {0, 0, 0, 0, 0, 0}, v[6] = {0, 0, 0, 0, 0, 0}, R[9];
     char failed[64];
-    if (measure_deformation(m->i_marker, m->j_marker, m->needs, d, v, failed) != 0) {
+    const int wants_rotation = m->rotation_measure == USRSUB_ROTATION_VECTOR;
+    if (measure_deformation(m->i_marker, m->j_marker, m->needs, d, v, wants_rotation ? R : NULL,
+                            failed) != 0) {
         entry_report_error(routine, *id, "query", "the host could not answer %s (markers %d and %d);"
                            " the output is zero", failed, m->i_marker, m->j_marker);
         return;
@@ -64,7 +40,8 @@ static void gfosub_entry(const char *routine, int code, int *id, double *time, d
                            d[2], d[3], d[4], d[5], v[0], v[1], v[2], v[3], v[4], v[5]);
         return;
     }
-    force_model_evaluate(m, d, v, result, NULL, NULL);
+    force_model_evaluate(m, d, v, wants_rotation && m->needs.rotation ? R : NULL, result, NULL,
+                         NULL);
     if (!all_finite(result, 6)) {
         memset(result, 0, 6 * sizeof(double));
         entry_report_error(routine, *id, "result", "the force at deformation (%g %g %g %g %g %g) is not"
@@ -91,7 +68,7 @@ static void fiesub_entry(const char *routine, int code, int *id, double *time, d
         return;
     const int partials = dfddis != NULL && dfdvel != NULL;
     /* the evaluation writes every output; each way out before it zeros them */
-    if (!arguments_ok(routine, id, par, npar)) {
+    if (!entry_arguments_ok(routine, id, par, npar)) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
         return;
     }
@@ -100,7 +77,7 @@ static void fiesub_entry(const char *routine, int code, int *id, double *time, d
         entry_report_error(routine, *id, NULL, "called without disp or velo");
         return;
     }
-    const force_model *m = model_of(routine, ELEMENT_FIESUB, code, *id, par, *npar);
+    const force_model *m = force_model_of(routine, ELEMENT_FIESUB, code, *id, par, *npar);
     if (m == NULL) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
         return;
@@ -113,7 +90,13 @@ static void fiesub_entry(const char *routine, int code, int *id, double *time, d
                            velo[4], velo[5]);
         return;
     }
-    force_model_evaluate(m, disp, velo, field, partials ? dfddis : NULL, partials ? dfdvel : NULL);
+    if (force_model_evaluate(m, disp, velo, NULL, field, partials ? dfddis : NULL,
+                             partials ? dfdvel : NULL) != 0) {
+        entry_report_error(routine, *id, "angles", "the projection angles (%g %g %g) belong to no"
+                           " rotation near them (the rotation-vector measure needs one); the"
+                           " output is zero", disp[3], disp[4], disp[5]);
+        return;
+    }
     if (!all_finite(field, 6) || (partials && (!all_finite(dfddis, 36) || !all_finite(dfdvel, 36)))) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
         entry_report_error(routine, *id, "result", "the force at disp (%g %g %g %g %g %g) is not finite (a"

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "entry_report.h"
 #include "host.h"
 #include "property_cache.h"
 #include "usrsub/readers/bushing_reader.h"
@@ -99,6 +100,7 @@ static int limits_named(force_model *m, usrsub_user_list *u, element_setup_repor
         m->needs.translation |= l->uses_translation;
         m->needs.rotation |= l->uses_rotation;
         m->needs.velocity |= l->uses_velocity;
+        m->needs.twist |= l->uses_twist;
     }
     return 0;
 }
@@ -124,23 +126,43 @@ void *force_model_setup(const element_signature *sig, void *ctx, element_setup_r
         return NULL;
     }
     m->code = code;
+    if (interface == ELEMENT_YFOSUB && code != FORCE_BUSHING) {
+        usrsub_fail(&report->error, "element code %d: the state-equation form (YFOSUB) carries"
+                    " only the bushing, code 1 (ABM_BUSHING)", code);
+        free(m);
+        return NULL;
+    }
     if (interface == ELEMENT_GFOSUB &&
         (usrsub_user_list_int(&u, "the I marker id", 1, INT_MAX, &m->i_marker, &report->error) != 0 ||
          usrsub_user_list_int(&u, "the J marker id", 1, INT_MAX, &m->j_marker, &report->error) != 0)) {
         free(m);
         return NULL;
     }
-    int status = 0;
+    int status = 0, string_id = 0;
     const char *ends = "the list";
     switch (code) {
     case FORCE_BUSHING:
+        string_id = u.next < u.npar ? (int)u.par[u.next] : 0;
         m->bushing = property_named(&u, "the Reference_String id of the .gbs bushing file", "gbs",
                                     read_bushing, free_bushing, report);
         status = m->bushing != NULL ? 0 : -1;
+        if (status == 0 && m->bushing->has_states && interface != ELEMENT_YFOSUB)
+            status = usrsub_fail(&report->error, "Reference_String %d: the bushing has internal"
+                                 " states (friction, a mount or a rubber filter): it runs as a"
+                                 " state equation, Force_StateEqn with YFOSUB (docs/interface.md"
+                                 " §3.8)", string_id);
+        if (status == 0 && interface == ELEMENT_YFOSUB &&
+            m->bushing->rotation_measure == USRSUB_ROTATION_VECTOR)
+            status = usrsub_fail(&report->error, "Reference_String %d: ROTATION_MEASURE ="
+                                 " 'ROTATION_VECTOR' is not available in the state-equation form"
+                                 " (docs/interface.md §3.8)", string_id);
         if (status == 0) {
+            usrsub_bushing_state_layout(m->bushing, &m->states);
             m->needs.translation = m->bushing->uses_translation;
             m->needs.rotation = m->bushing->uses_rotation;
             m->needs.velocity = m->bushing->uses_velocity;
+            m->needs.twist = m->bushing->uses_twist;
+            m->rotation_measure = m->bushing->rotation_measure;
         }
         if (status == 0 && u.next < u.npar)
             status = limits_named(m, &u, report);
@@ -158,6 +180,8 @@ void *force_model_setup(const element_signature *sig, void *ctx, element_setup_r
             m->needs.translation = m->joint->uses_translation;
             m->needs.rotation = m->joint->uses_rotation;
             m->needs.velocity = m->joint->uses_velocity;
+            m->needs.twist = m->joint->uses_twist;
+            m->rotation_measure = m->joint->rotation_measure;
         }
         ends = "a FLEX_JOINT list (markers, .gfj id)";
         break;
@@ -165,6 +189,11 @@ void *force_model_setup(const element_signature *sig, void *ctx, element_setup_r
         status = usrsub_fail(&report->error, "element code %d is not one of %s", code, code_names);
         break;
     }
+    /* the host's split of psi and phi goes wrong only where the tilt is of the
+     * size of rounding, and there phi moves ax and ay by that size alone: only
+     * az needs the rest rule; every component of the rotation vector does */
+    if (m->rotation_measure == USRSUB_ROTATION_VECTOR)
+        m->needs.twist |= m->needs.rotation;
     if (status == 0)
         status = usrsub_user_list_end(&u, ends, &report->error);
     if (status != 0) {
@@ -179,8 +208,9 @@ void force_model_release(void *model)
     free(model); /* the property data belongs to the property cache */
 }
 
-void force_model_evaluate(const force_model *m, const double d[6], const double v[6],
-                          double F[6], double *dFdd, double *dFdv)
+/* The force law on the generalized deformation (x, rotation measure). */
+static void evaluate_law(const force_model *m, const double d[6], const double v[6], double F[6],
+                         double *dFdd, double *dFdv)
 {
     switch (m->code) {
     case FORCE_BUSHING:
@@ -199,4 +229,48 @@ void force_model_evaluate(const force_model *m, const double d[6], const double 
     }
     if (m->limits != NULL) /* on the raw deformation: never offset, scaled or coupled */
         usrsub_mount_limits_add(m->limits, d, v, F, dFdd, dFdv);
+}
+
+int force_model_evaluate(const force_model *m, const double d[6], const double v[6],
+                         const double *R, double F[6], double *dFdd, double *dFdv)
+{
+    if (m->rotation_measure != USRSUB_ROTATION_VECTOR || !m->needs.rotation) {
+        evaluate_law(m, d, v, F, dFdd, dFdv);
+        return 0;
+    }
+    /* the law on (x, r) and (v, rdot); its rotational forces become torques */
+    double rotation[9], A[9];
+    if (R == NULL) {
+        if (usrsub_rotation_of_projection_angles(d + 3, rotation, dFdd != NULL ? A : NULL) != 0) {
+            memset(F, 0, 6 * sizeof(double));
+            if (dFdd != NULL) {
+                memset(dFdd, 0, 36 * sizeof(double));
+                memset(dFdv, 0, 36 * sizeof(double));
+            }
+            return -1;
+        }
+        R = rotation;
+    }
+    usrsub_rotation_map map;
+    usrsub_rotation_map_make(&map, R, v + 3, R == rotation && dFdd != NULL ? A : NULL);
+    const double dm[6] = {d[0], d[1], d[2], map.r[0], map.r[1], map.r[2]};
+    const double vm[6] = {v[0], v[1], v[2], map.rdot[0], map.rdot[1], map.rdot[2]};
+    double Q[6], dQdd[36], dQdv[36];
+    evaluate_law(m, dm, vm, Q, dFdd != NULL ? dQdd : NULL, dFdd != NULL ? dQdv : NULL);
+    usrsub_rotation_map_forces(&map, Q, dFdd != NULL ? dQdd : NULL, dQdv, F, dFdd, dFdv);
+    return 0;
+}
+
+const force_model *force_model_of(const char *routine, int interface, int code, int id,
+                                  const double *par, int npar)
+{
+    static int interfaces[5] = {0, ELEMENT_COUPLER, ELEMENT_GFOSUB, ELEMENT_FIESUB, ELEMENT_YFOSUB};
+    element_signature sig = {interface, id, code, par, npar};
+    element_setup_report report;
+    int set_up_now;
+    const force_model *m = element_cache_lookup(&sig, force_model_setup, force_model_release,
+                                                &interfaces[interface], &set_up_now, &report);
+    if (set_up_now)
+        entry_report_setup(routine, id, set_up_now, m, &report);
+    return m;
 }

@@ -9,8 +9,10 @@
 #include "deformation.h"
 #include "element_cache.h"
 #include "usrsub/core/bushing.h"
+#include "usrsub/core/bushing_states.h"
 #include "usrsub/core/flex_joint.h"
 #include "usrsub/core/mount_limits.h"
+#include "usrsub/core/rotation.h"
 
 enum force_code { FORCE_BUSHING = 1, FORCE_MOUNT_LIMITS = 2, FORCE_FLEX_JOINT = 3 };
 
@@ -21,17 +23,30 @@ typedef struct force_model {
     const usrsub_mount_limits *limits; /* shared; NULL when none is active */
     const usrsub_flex_joint *joint;    /* shared; NULL when unused */
     deformation_needs needs;
+    int rotation_measure;              /* enum usrsub_rotation_measure */
+    usrsub_state_layout states;        /* the YFOSUB form's internal states */
 } force_model;
 
 /* Element cache set-up of a force element; ctx points to the interface
- * (ELEMENT_GFOSUB or ELEMENT_FIESUB). sig->code is the named entry's code, or 0
- * for GFOSUB/FIESUB, whose par[0] holds it. */
+ * (ELEMENT_GFOSUB, ELEMENT_FIESUB or ELEMENT_YFOSUB). sig->code is the named
+ * entry's code, or 0 for GFOSUB/FIESUB/YFOSUB, whose par[0] holds it. A
+ * bushing with internal states sets up only in the YFOSUB form, which takes
+ * only bushings (with or without states) on projection angles. */
 void *force_model_setup(const element_signature *sig, void *ctx, element_setup_report *report);
 void force_model_release(void *model);
 
-/* Force and torque on I in J axes; partials (may be NULL) column-major.
- * Writes every output. */
-void force_model_evaluate(const force_model *m, const double d[6], const double v[6],
-                          double F[6], double *dFdd, double *dFdv);
+/* The element's model from the cache, set up on its first call (whose notices
+ * and error are reported under routine); NULL when it could not be. */
+const force_model *force_model_of(const char *routine, int interface, int code, int id,
+                                  const double *par, int npar);
+
+/* Force and torque on I in J axes at the deformation d (x, y, z, AX, AY, AZ)
+ * and rate v; partials (may be NULL) column-major. R: the rotation of I
+ * relative to J when the caller measured it (GFOSUB form), else NULL (it is
+ * rebuilt from the projection angles when the rotation vector needs it).
+ * Writes every output; returns 0, or -1 when the angles are degenerate for
+ * the rotation-vector measure (outputs zero). */
+int force_model_evaluate(const force_model *m, const double d[6], const double v[6],
+                         const double *R, double F[6], double *dFdd, double *dFdv);
 
 #endif

@@ -49,3 +49,10 @@ int host_query_array(const char *fnc, const int *ipar, int nsize, double *states
     c_sysary(fnc, ipar, nsize, states, &nstates, &errflg);
     return (errflg == 0 && nstates == expected) ? 0 : -1;
 }
+
+int host_query_value(const char *fnc, const int *ipar, int nsize, double *value)
+{
+    int errflg = 0;
+    c_sysfnc(fnc, ipar, nsize, value, &errflg);
+    return errflg == 0 ? 0 : -1;
+}

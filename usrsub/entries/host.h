@@ -21,6 +21,9 @@ int host_read_string(int string_id, char *text, int capacity);
  * when the model declares its units, 0 otherwise. */
 int host_model_units(double scales[USRSUB_UNIT_COUNT]);
 
+/* c_sysfnc; returns 0 when the host answered. */
+int host_query_value(const char *fnc, const int *ipar, int nsize, double *value);
+
 /* c_sysary; returns 0 when the host answered with the expected count. */
 int host_query_array(const char *fnc, const int *ipar, int nsize, double *states,
                      int expected);

@@ -1,9 +1,11 @@
 /*
  * Reads a .gbs bushing property file (TeimOrbit) into a bushing in the
  * model's units: HEADER, UNITS, GLOBAL, DIRECTIONS (ACTIVITY), the
- * SPLINE/CONSTANT/CUBIC_STIFFNESS_<dir> and CONSTANT_DAMPING_<dir> blocks, and
- * PRELOAD_OFFSET_SCALE. An active block the library does not model yet
- * (rubber, hydromount, friction) is an error that names it.
+ * SPLINE/CONSTANT/CUBIC_STIFFNESS_<dir> and CONSTANT_DAMPING_<dir> blocks,
+ * PRELOAD_OFFSET_SCALE, and the blocks with internal states (docs/interface.md
+ * §3.8): FRICTION, MOUNT_STIFFNESS and RUBBER_DAMPING_<dir>. An active
+ * hydromount, or a rubber parameter whose equations are not published, is an
+ * error that names it.
  */
 #include <math.h>
 #include <stdio.h>
@@ -63,7 +65,7 @@ static const usrsub_teim_block *method_block(reader *r, int method, int k, int a
 static int read_global(reader *r, usrsub_bushing *b)
 {
     b->coupling = USRSUB_UNCOUPLED;
-    b->epsilon[0] = b->epsilon[1] = 1e-9;
+    b->group_epsilon[0] = b->group_epsilon[1] = 1e-9;
     const usrsub_teim_block *g = usrsub_teim_find_block(r->f, "GLOBAL");
     const usrsub_teim_entry *c = usrsub_teim_find_entry(g, "COUPLING");
     if (c != NULL) {
@@ -77,6 +79,8 @@ static int read_global(reader *r, usrsub_bushing *b)
             return usrsub_fail(r->msg, "'%s' line %d: COUPLING = '%s': expected UNCOUPLED,"
                                " CYLINDRICAL or SPHERICAL", r->f->path, c->line, c->value);
     }
+    if (usrsub_read_rotation_measure(r->f, &b->rotation_measure, r->msg) != 0)
+        return -1;
     if (usrsub_teim_find_entry(g, "EPSILON") != NULL) {
         double eps;
         if (number(r, g, "EPSILON", &eps) != 0)
@@ -84,8 +88,8 @@ static int read_global(reader *r, usrsub_bushing *b)
         if (!(eps > 0.0))
             return usrsub_fail(r->msg, "'%s' line %d: EPSILON = %g must be positive",
                                r->f->path, usrsub_teim_find_entry(g, "EPSILON")->line, eps);
-        b->epsilon[0] = eps * r->units.length;
-        b->epsilon[1] = eps * r->units.angle;
+        b->group_epsilon[0] = eps * r->units.length;
+        b->group_epsilon[1] = eps * r->units.angle;
     }
     return 0;
 }
@@ -134,9 +138,14 @@ static int read_activity(reader *r, int active[METHOD_COUNT][6], int *line)
                 return usrsub_fail(r->msg, "'%s' line %d: %s, column %s: expected 0 or 1", r->f->path,
                                    rw->line, label, direction_names[k]);
             active[method][k] = v == 1.0;
-            if (v == 1.0 && method >= RUBBER_DAMPING)
+            if (v == 1.0 && method == FRICTION)
+                return usrsub_fail(r->msg, "'%s' line %d: friction is switched on by ACTIVE = 1"
+                                   " in its [FRICTION] block, not in DIRECTIONS", r->f->path,
+                                   rw->line);
+            if (v == 1.0 && method == HYDROMOUNT_DAMPING)
                 return usrsub_fail(r->msg, "'%s' line %d: %s is active for %s, but this library"
-                                   " does not model %s yet; set it to 0 in DIRECTIONS",
+                                   " does not model %s (its fluid equations are not published;"
+                                   " docs/interface.md §3.8); set it to 0 in DIRECTIONS",
                                    r->f->path, rw->line, label, direction_names[k], label);
         }
     }
@@ -147,6 +156,10 @@ static int read_activity(reader *r, int active[METHOD_COUNT][6], int *line)
             return usrsub_fail(r->msg, "'%s' line %d: %s has more than one active stiffness"
                                " (at most one of SPLINE, CONSTANT and CUBIC_STIFFNESS)",
                                r->f->path, t->line, direction_names[k]);
+        if (active[CONSTANT_DAMPING][k] + active[RUBBER_DAMPING][k] > 1)
+            return usrsub_fail(r->msg, "'%s' line %d: %s has more than one active damping"
+                               " (at most one of CONSTANT and RUBBER_DAMPING)", r->f->path,
+                               t->line, direction_names[k]);
     }
     return 0;
 }
@@ -276,24 +289,195 @@ static int read_preload_offset_scale(reader *r, usrsub_bushing *b)
     return 0;
 }
 
+/* A keyword that must lie in [low, high] (inclusive bounds unless open). */
+static int bounded(reader *r, const usrsub_teim_block *b, const char *key, double low,
+                   int open_low, double high, double *value)
+{
+    if (number(r, b, key, value) != 0)
+        return -1;
+    if (*value < low || (open_low && *value == low) || *value > high)
+        return usrsub_fail(r->msg, "'%s' line %d: %s = %g in [%s] must be %s %g%s", r->f->path,
+                           usrsub_teim_find_entry(b, key)->line, key, *value, b->name,
+                           open_low ? "greater than" : "at least", low,
+                           isinf(high) ? "" : " and at most the static coefficient");
+    return 0;
+}
+
+/* An optional keyword: its default when absent. */
+static int optional(reader *r, const usrsub_teim_block *b, const char *key, double fallback,
+                    double *value)
+{
+    *value = fallback;
+    return usrsub_teim_find_entry(b, key) != NULL ? number(r, b, key, value) : 0;
+}
+
+/* A text keyword among choices: its index, the default when absent, -1 on error. */
+static int choice(reader *r, const usrsub_teim_block *b, const char *key,
+                  const char *const *choices, int count, int fallback)
+{
+    const usrsub_teim_entry *e = usrsub_teim_find_entry(b, key);
+    if (e == NULL)
+        return fallback;
+    for (int k = 0; k < count; ++k)
+        if (strcasecmp(e->value, choices[k]) == 0)
+            return k;
+    return usrsub_fail(r->msg, "'%s' line %d: %s = '%s' in [%s]: expected '%s' or '%s'",
+                       r->f->path, e->line, key, e->value, b->name, choices[0], choices[1]);
+}
+
+/* Whether a state block is switched on: its ACTIVE flag (default on). */
+static int block_active(reader *r, const usrsub_teim_block *b, int *active)
+{
+    double on = 1.0;
+    if (optional(r, b, "ACTIVE", 1.0, &on) != 0)
+        return -1;
+    if (on != 0.0 && on != 1.0)
+        return usrsub_fail(r->msg, "'%s' line %d: ACTIVE = %g in [%s]: expected 0 or 1",
+                           r->f->path, usrsub_teim_find_entry(b, "ACTIVE")->line, on, b->name);
+    *active = on == 1.0;
+    return 0;
+}
+
+/* [FRICTION] (docs/interface.md §3.8): LuGre on the rotations. */
+static int read_friction(reader *r, usrsub_bushing *b, const usrsub_teim_block *f)
+{
+    usrsub_friction *fr = &b->friction;
+    if (block_active(r, f, &fr->active) != 0 || !fr->active)
+        return 0;
+    static const char *const effects[2] = {"SLIDING", "STICTION"};
+    static const char *const modes[2] = {"DYNAMICS_ONLY", "STATICS_AND_DYNAMICS"};
+    double use_reaction;
+    const double L = r->units.length, T = r->units.time;
+    if (bounded(r, f, "MU_STATIC", 0.0, 1, INFINITY, &fr->mu_static) != 0 ||
+        bounded(r, f, "MU_DYNAMIC", 0.0, 1, fr->mu_static, &fr->mu_dynamic) != 0 ||
+        bounded(r, f, "TRANSITION_VELOCITY", 0.0, 1, INFINITY, &fr->transition_velocity) != 0 ||
+        bounded(r, f, "BRISTLE_STIFFNESS", 0.0, 1, INFINITY, &fr->bristle_stiffness) != 0 ||
+        bounded(r, f, "BALL_RADIUS", 0.0, 1, INFINITY, &fr->ball_radius) != 0 ||
+        optional(r, f, "BRISTLE_DAMPING", 0.0, &fr->bristle_damping) != 0 ||
+        optional(r, f, "SLIP_DAMPING", 0.0, &fr->slip_damping) != 0 ||
+        optional(r, f, "PRELOAD_TORQUE", 0.0, &fr->preload_torque) != 0 ||
+        optional(r, f, "USE_REACTION_FORCE", 1.0, &use_reaction) != 0)
+        return -1;
+    if ((fr->stiction = choice(r, f, "EFFECT", effects, 2, 1)) < 0 ||
+        choice(r, f, "ANALYSIS_MODES", modes, 2, 0) < 0)
+        return -1;
+    if (fr->bristle_damping < 0.0 || fr->slip_damping < 0.0 || fr->preload_torque < 0.0)
+        return usrsub_fail(r->msg, "'%s' line %d: BRISTLE_DAMPING, SLIP_DAMPING and PRELOAD_TORQUE"
+                           " in [FRICTION] must not be negative", r->f->path, f->line);
+    if (use_reaction != 1.0)
+        return usrsub_fail(r->msg, "'%s' line %d: USE_REACTION_FORCE = %g: this library takes the"
+                           " bushing's own force as the normal force (1); another joint's"
+                           " reaction is not available to it", r->f->path,
+                           usrsub_teim_find_entry(f, "USE_REACTION_FORCE")->line, use_reaction);
+    /* to the model's units: velocities L/T, sigma0 1/L, sigma1 and sigma2 T/L */
+    fr->transition_velocity *= L / T;
+    fr->bristle_stiffness /= L;
+    fr->bristle_damping *= T / L;
+    fr->slip_damping *= T / L;
+    fr->ball_radius *= L;
+    fr->preload_torque *= usrsub_direction_force_factor(&r->units, 3);
+    return 0;
+}
+
+/* [MOUNT_STIFFNESS] { direction K C }: a series spring and damper per direction. */
+static int read_mount(reader *r, usrsub_bushing *b, const usrsub_teim_block *blk)
+{
+    int active;
+    if (block_active(r, blk, &active) != 0 || !active)
+        return 0;
+    const usrsub_teim_table *t = usrsub_teim_find_table(blk, NULL);
+    int c[3] = {-1, -1, -1};
+    static const char *const cols[3] = {"DIRECTION", "K", "C"};
+    for (int i = 0; t != NULL && i < 3; ++i)
+        c[i] = usrsub_teim_column(t, cols[i]);
+    if (t == NULL || c[0] < 0 || c[1] < 0 || c[2] < 0)
+        return usrsub_fail(r->msg, "'%s' line %d: [MOUNT_STIFFNESS] has no { direction K C }"
+                           " table", r->f->path, blk->line);
+    for (int i = 0; i < t->nrows; ++i) {
+        const usrsub_teim_row *rw = &t->row[i];
+        const int k = rw->ncells == t->ncolumns ? direction_of(rw->cell[c[0]]) : -1;
+        double K, C;
+        if (k < 0 || usrsub_teim_number(rw->cell[c[1]], &K) != 0 ||
+            usrsub_teim_number(rw->cell[c[2]], &C) != 0)
+            return usrsub_fail(r->msg, "'%s' line %d: expected a direction (FX FY FZ TX TY TZ),"
+                               " a stiffness K and a damping C", r->f->path, rw->line);
+        if (b->dir[k].mount)
+            return usrsub_fail(r->msg, "'%s' line %d: %s appears twice in MOUNT_STIFFNESS",
+                               r->f->path, rw->line, direction_names[k]);
+        if (!(K > 0.0) || C < 0.0)
+            return usrsub_fail(r->msg, "'%s' line %d: the mount of %s needs K > 0 and C >= 0"
+                               " (got K = %g, C = %g); leave a rigid direction out",
+                               r->f->path, rw->line, direction_names[k], K, C);
+        const double ff = usrsub_direction_force_factor(&r->units, k);
+        const double fd = usrsub_direction_displacement_factor(&r->units, k);
+        b->dir[k].mount = 1;
+        b->dir[k].mount_k = K * ff / fd;
+        b->dir[k].mount_c = C * ff * r->units.time / fd;
+    }
+    return 0;
+}
+
+/* RUBBER_DAMPING_<dir>: the first-order filter with the dynamic part's K0 and
+ * C0; the parts the vendor leaves unpublished must be neutral. */
+static int read_rubber(reader *r, usrsub_bushing_direction *dir, int k, int line)
+{
+    const usrsub_teim_block *b = method_block(r, RUBBER_DAMPING, k, line);
+    double n, preload, R, rmin, v[12];
+    static const char *const neutral[] = {"K1", "K2", "C1", "C2", "P0", "P1", "Q0", "Q1"};
+    static const double neutral_value[] = {0, 0, 0, 0, 1, 0, 1, 0};
+    if (b == NULL || number(r, b, "NPRELOADS", &n) != 0)
+        return -1;
+    if (n != 1.0)
+        return usrsub_fail(r->msg, "'%s' line %d: NPRELOADS = %g in [%s]: this library models one"
+                           " load case (the weights of several are not published)",
+                           r->f->path, usrsub_teim_find_entry(b, "NPRELOADS")->line, n, b->name);
+    if (optional(r, b, "PRELOAD", 0.0, &preload) != 0 || number(r, b, "R", &R) != 0 ||
+        optional(r, b, "RMIN", 0.0, &rmin) != 0 || number(r, b, "K0", &dir->rubber_k) != 0 ||
+        number(r, b, "C0", &dir->rubber_c) != 0)
+        return -1;
+    for (int i = 0; i < 8; ++i) {
+        if (optional(r, b, neutral[i], neutral_value[i], &v[i]) != 0)
+            return -1;
+        if (v[i] != neutral_value[i])
+            return usrsub_fail(r->msg, "'%s' line %d: %s = %g in [%s]: this library models the"
+                               " rubber's first-order filter with K0 and C0 (docs/interface.md"
+                               " §3.8); the equations %s belongs to are not published: set it"
+                               " to %g", r->f->path, usrsub_teim_find_entry(b, neutral[i])->line,
+                               neutral[i], v[i], b->name, neutral[i], neutral_value[i]);
+    }
+    if (preload != 0.0)
+        return usrsub_fail(r->msg, "'%s' line %d: PRELOAD = %g in [%s]: one load case's preload"
+                           " weighs nothing without the (unpublished) multiple-preload rule; set"
+                           " it to 0", r->f->path, usrsub_teim_find_entry(b, "PRELOAD")->line,
+                           preload, b->name);
+    R = fmax(R, rmin);
+    if (!(R > 0.0) || dir->rubber_k < 0.0 || dir->rubber_c < 0.0)
+        return usrsub_fail(r->msg, "'%s' line %d: [%s] needs R (or RMIN) > 0, K0 >= 0 and C0 >= 0"
+                           " (got R %g, K0 %g, C0 %g)", r->f->path, b->line, b->name, R,
+                           dir->rubber_k, dir->rubber_c);
+    const double ff = usrsub_direction_force_factor(&r->units, k);
+    const double fd = usrsub_direction_displacement_factor(&r->units, k);
+    dir->rubber = 1;
+    dir->rubber_r = R / r->units.time;
+    dir->rubber_k *= ff / fd;
+    dir->rubber_c *= ff * r->units.time / fd;
+    return 0;
+}
+
 static int read_bushing(reader *r, usrsub_bushing *b, usrsub_read_report *report)
 {
     int active[METHOD_COUNT][6], line = 0;
     if (read_global(r, b) != 0 || read_activity(r, active, &line) != 0)
         return -1;
     const usrsub_teim_block *friction = usrsub_teim_find_block(r->f, "FRICTION");
-    if (friction != NULL) {
-        const usrsub_teim_entry *a = usrsub_teim_find_entry(friction, "ACTIVE");
-        double on = 0.0;
-        if (a != NULL && (usrsub_teim_number(a->value, &on) != 0 || on != 0.0))
-            return usrsub_fail(r->msg, "'%s' line %d: FRICTION is active, but this library does"
-                               " not model bushing friction yet; set ACTIVE = 0", r->f->path,
-                               a->line);
-        if (a == NULL)
-            usrsub_read_report_add(report, "'%s': [FRICTION] has no ACTIVE flag and is taken as"
-                                   " inactive", r->f->path);
+    if (friction != NULL && usrsub_teim_find_entry(friction, "ACTIVE") == NULL) {
+        usrsub_read_report_add(report, "'%s': [FRICTION] has no ACTIVE flag and is taken as"
+                               " inactive", r->f->path);
+        friction = NULL;
     }
-    if (read_preload_offset_scale(r, b) != 0)
+    const usrsub_teim_block *mount = usrsub_teim_find_block(r->f, "MOUNT_STIFFNESS");
+    if ((friction != NULL && read_friction(r, b, friction) != 0) ||
+        (mount != NULL && read_mount(r, b, mount) != 0) || read_preload_offset_scale(r, b) != 0)
         return -1;
     for (int k = 0; k < 6; ++k) {
         usrsub_bushing_direction *d = &b->dir[k];
@@ -314,6 +498,8 @@ static int read_bushing(reader *r, usrsub_bushing *b, usrsub_read_report *report
             d->damped = 1;
             status = read_constant(r, CONSTANT_DAMPING, "C", k, line, ff * r->units.time / fd, &d->c);
         }
+        if (status == 0 && active[RUBBER_DAMPING][k])
+            status = read_rubber(r, d, k, line);
         if (status != 0)
             return -1;
     }

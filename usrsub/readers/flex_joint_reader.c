@@ -137,17 +137,19 @@ static int read_joint(const usrsub_teim_file *f, const usrsub_unit_factors *u, v
                       usrsub_read_report *report, usrsub_message *msg)
 {
     usrsub_flex_joint *j = ctx;
-    static const char *const known[] = {"HEADER", "UNITS", "STIFFNESS", "DAMPING", "PRELOAD"};
+    static const char *const known[] = {"HEADER", "UNITS", "GLOBAL", "STIFFNESS", "DAMPING",
+                                        "PRELOAD"};
     for (int b = 0; b < f->nblocks; ++b) {
         int found = 0;
         for (size_t k = 0; k < sizeof known / sizeof known[0]; ++k)
             found |= strcmp(f->block[b].name, known[k]) == 0;
         if (!found) /* a misspelled block would otherwise be lost */
             return usrsub_fail(msg, "'%s' line %d: [%s] is not a flexible-joint block (expected"
-                               " HEADER, UNITS, STIFFNESS, DAMPING or PRELOAD)", f->path,
+                               " HEADER, UNITS, GLOBAL, STIFFNESS, DAMPING or PRELOAD)", f->path,
                                f->block[b].line, f->block[b].name);
     }
-    if (read_matrix(f, "STIFFNESS", u, 0.0, j->k, 1, msg) != 0 ||
+    if (usrsub_read_rotation_measure(f, &j->rotation_measure, msg) != 0 ||
+        read_matrix(f, "STIFFNESS", u, 0.0, j->k, 1, msg) != 0 ||
         read_matrix(f, "DAMPING", u, 1.0, j->d, 0, msg) != 0 || read_preload(f, u, j->preload, msg) != 0)
         return -1;
     usrsub_flex_joint_prepare(j);

@@ -1,6 +1,8 @@
 /* The one TeimOrbit property-file driver (include/usrsub/readers/property_file.h). */
 #include "usrsub/readers/property_file.h"
 
+#include "usrsub/core/rotation.h"
+
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -53,4 +55,19 @@ int usrsub_property_file_read(const char *path, const char *file_type, const cha
         status = body(f, &units, ctx, report, msg);
     usrsub_teim_free(f);
     return status;
+}
+
+int usrsub_read_rotation_measure(const usrsub_teim_file *f, int *measure, usrsub_message *msg)
+{
+    *measure = USRSUB_PROJECTION_ANGLES;
+    const usrsub_teim_entry *e =
+        usrsub_teim_find_entry(usrsub_teim_find_block(f, "GLOBAL"), "ROTATION_MEASURE");
+    if (e == NULL || strcasecmp(e->value, "PROJECTION_ANGLES") == 0)
+        return 0;
+    if (strcasecmp(e->value, "ROTATION_VECTOR") == 0) {
+        *measure = USRSUB_ROTATION_VECTOR;
+        return 0;
+    }
+    return usrsub_fail(msg, "'%s' line %d: ROTATION_MEASURE = '%s': expected PROJECTION_ANGLES"
+                       " or ROTATION_VECTOR", f->path, e->line, e->value);
 }

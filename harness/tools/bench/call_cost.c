@@ -9,6 +9,7 @@
 #include "base/clock.h"
 
 #include "state/measures.h"
+#include "tools/bench/call_floor.h"
 #include "tools/check/coupler_ranges.h"
 
 #define SAMPLE_POINTS 256
@@ -171,16 +172,49 @@ int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int c
     return hx_measure_call_costs_with(s, repeats, costs, capacity, NULL, 0);
 }
 
+/* The median over rounds of an entry's cost divided by its floor's in the
+ * same round: a slow spell falls on both. */
+static double median_ratio(const double *ns, const double *empty, const double *host, int repeats)
+{
+    double *r = malloc(sizeof(double) * (size_t)repeats);
+    if (r == NULL)
+        return NAN;
+    for (int k = 0; k < repeats; ++k)
+        r[k] = ns[k] / (empty[k] + (host != NULL ? host[k] : 0.0));
+    const double median = hx_median(r, repeats);
+    free(r);
+    return median;
+}
+
+static double median_of(const double *ns, int repeats)
+{
+    double *sorted = malloc(sizeof(double) * (size_t)repeats);
+    if (sorted == NULL)
+        return NAN;
+    memcpy(sorted, ns, sizeof(double) * (size_t)repeats);
+    const double median = hx_median(sorted, repeats);
+    free(sorted);
+    return median;
+}
+
 int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
                                hx_timed_body *extra, int nextra)
 {
-    timed_entry entries[256 + 4];
-    if (nextra > 4)
-        nextra = 4;
-    void *contexts[256];
+    /* the entries, the empty call, the host replays (one per GFOSUB row), the extras */
+    enum { MAX_ROWS = 256, MAX_EXTRA = 4 };
+    timed_entry entries[2 * MAX_ROWS + 1 + MAX_EXTRA];
+    int replay_of[MAX_ROWS]; /* the row's host replay among entries, or -1 */
+    if (nextra > MAX_EXTRA)
+        nextra = MAX_EXTRA;
+    void *contexts[2 * MAX_ROWS + 1];
     int rows = 0, ncontexts = 0;
-    if (capacity > 256)
-        capacity = 256;
+    if (capacity > MAX_ROWS)
+        capacity = MAX_ROWS;
+    hx_empty_call empty;
+    hx_message msg;
+    const int has_floor = hx_empty_call_init(&empty, &msg) == 0;
+    hx_host_replay *replays = calloc(MAX_ROWS, sizeof *replays);
+    int nreplays = 0;
     pin_to_this_cpu();
     for (int k = 0; k < s->bindings.count; ++k) {
         hx_binding *b = &s->bindings.items[k];
@@ -192,6 +226,7 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
                 cb->fn = b->coupler[fn];
                 coupler_points(s, b, c->njoints, cb);
                 contexts[ncontexts++] = cb;
+                replay_of[rows] = -1;
                 entries[rows] = (timed_entry){run_coupler, cb, 0, NULL};
                 hx_call_cost *r = &costs[rows++];
                 snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
@@ -210,6 +245,12 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
             *gb = (gfosub_bench){b->gfosub, eval, b->id, b->npar, b->par, {0}, 0.0};
             contexts[ncontexts++] = gb;
             contexts[ncontexts++] = eval;
+            if (replays != NULL) {
+                hx_host_replay_init(&replays[nreplays], eval);
+                replay_of[rows] = nreplays++;
+            } else {
+                replay_of[rows] = -1;
+            }
             entries[rows] = (timed_entry){run_gfosub, gb, 0, NULL};
             hx_call_cost *r = &costs[rows++];
             snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
@@ -222,6 +263,7 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
             fb->fn = b->fiesub, fb->id = b->id, fb->npar = b->npar, fb->par = b->par;
             field_points(s, b, fb);
             contexts[ncontexts++] = fb;
+            replay_of[rows] = -1;
             entries[rows] = (timed_entry){run_fiesub, fb, 0, NULL};
             hx_call_cost *r = &costs[rows++];
             snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
@@ -230,9 +272,16 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
             r->force_index = b->index;
         }
     }
-    const int timed = rows + nextra;
+    int timed = rows;
+    const int empty_index = has_floor ? timed++ : -1;
+    if (has_floor)
+        entries[empty_index] = (timed_entry){hx_run_empty_call, &empty, 0, NULL};
+    const int first_replay = timed;
+    for (int k = 0; k < nreplays; ++k)
+        entries[timed++] = (timed_entry){hx_run_host_replay, &replays[k], 0, NULL};
+    const int first_extra = timed;
     for (int k = 0; k < nextra; ++k)
-        entries[rows + k] = (timed_entry){extra[k].run, extra[k].ctx, 0, NULL};
+        entries[timed++] = (timed_entry){extra[k].run, extra[k].ctx, 0, NULL};
     spin_up();
     for (int k = 0; k < timed; ++k) {
         entries[k].calls = calibrate(entries[k].run, entries[k].ctx);
@@ -246,31 +295,47 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
             entries[k].ns[round] = 1e9 * (hx_seconds() - start) / (double)entries[k].calls;
         }
     for (int k = 0; k < nextra; ++k) {
-        memcpy(extra[k].rounds, entries[rows + k].ns, sizeof(double) * (size_t)repeats);
-        free(entries[rows + k].ns);
+        memcpy(extra[k].rounds, entries[first_extra + k].ns, sizeof(double) * (size_t)repeats);
+        free(entries[first_extra + k].ns);
     }
+    const double *empty_ns = has_floor ? entries[empty_index].ns : NULL;
     for (int k = 0; k < rows; ++k) {
-        costs[k].rounds = entries[k].ns; /* the caller frees them */
+        hx_call_cost *c = &costs[k];
+        c->rounds = entries[k].ns; /* the caller frees them */
         double *sorted = malloc(sizeof(double) * (size_t)repeats);
         memcpy(sorted, entries[k].ns, sizeof(double) * (size_t)repeats);
-        costs[k].median_ns = hx_median(sorted, repeats);
-        costs[k].min_ns = sorted[0];
-        costs[k].max_ns = sorted[repeats - 1];
+        c->median_ns = hx_median(sorted, repeats);
+        c->min_ns = sorted[0];
+        c->max_ns = sorted[repeats - 1];
         free(sorted);
+        const double *host = replay_of[k] >= 0 ? entries[first_replay + replay_of[k]].ns : NULL;
+        c->empty_ns = has_floor ? median_of(empty_ns, repeats) : NAN;
+        c->host_ns = host != NULL ? median_of(host, repeats) : 0.0;
+        c->floor_ratio = has_floor ? median_ratio(entries[k].ns, empty_ns, host, repeats) : NAN;
     }
+    for (int k = rows; k < first_extra; ++k)
+        free(entries[k].ns);
     for (int k = 0; k < ncontexts; ++k)
         free(contexts[k]);
+    free(replays);
     return rows;
 }
 
 void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count)
 {
-    fprintf(f, "%-26s %-20s %12s %12s %12s %10s %10s\n", "element", "function", "median ns",
-            "min ns", "max ns", "host/eval", "host/dep");
-    for (int k = 0; k < count; ++k)
-        fprintf(f, "%-26s %-20s %12.1f %12.1f %12.1f %10d %10d\n", costs[k].element,
-                costs[k].function, costs[k].median_ns, costs[k].min_ns, costs[k].max_ns,
-                costs[k].host_calls, costs[k].dependency_calls);
+    fprintf(f, "%-26s %-20s %10s %8s %8s %10s %9s %9s %9s %7s\n", "element", "function",
+            "median ns", "min ns", "max ns", "host/eval", "host/dep", "host ns", "floor ns",
+            "ratio");
+    for (int k = 0; k < count; ++k) {
+        const hx_call_cost *c = &costs[k];
+        fprintf(f, "%-26s %-20s %10.1f %8.1f %8.1f %10d %9d %9.1f %9.1f %7.2f\n", c->element,
+                c->function, c->median_ns, c->min_ns, c->max_ns, c->host_calls,
+                c->dependency_calls, c->host_ns, c->empty_ns + c->host_ns, c->floor_ratio);
+    }
+    if (count > 0)
+        fprintf(f, "floor: an empty call through a dlsym'd pointer (%.1f ns) plus the host alone"
+                " answering what one evaluation asks (host ns); ratio: median over rounds of the"
+                " entry's cost over its floor's in the same round\n", costs[0].empty_ns);
 }
 
 void hx_call_costs_free(hx_call_cost *costs, int count)

@@ -19,6 +19,10 @@ typedef struct hx_call_cost {
     int dependency_calls; /* in the dependency pass */
     int force_index;      /* the model's force element, or -1 (a coupler) */
     double *rounds;       /* ns per call in each round, in round order */
+    /* the floor (tools/bench/call_floor.h): an empty call, the host alone
+     * answering one evaluation's queries (0 for FIESUB and couplers), and the
+     * median over rounds of the cost over the floor */
+    double empty_ns, host_ns, floor_ratio;
 } hx_call_cost;
 
 /* Times each entry of each user element (COUSUB, COUXX and COUXX2 separately).

@@ -1,17 +1,16 @@
 /*
- * Stability limits of the explicit integrators for a model: the fastest mode
+ * Stability limits of the integrators for a model: the fastest mode
  * of the dynamics linearized at a state (its eigenvalue lambda, by power
  * iteration on J^2 with J v from central differences of the right-hand side,
  * then a two-vector Arnoldi step for the pair it converged to), and for each
- * method the largest fixed step h with h lambda inside its stability region.
+ * method the largest fixed step h with h lambda inside its stability region
+ * (BDF, A(alpha)-stable, has none: any step).
  */
 #ifndef HX_STABILITY_H
 #define HX_STABILITY_H
 
 #include "sim/dynamics.h"
 #include "sim/integrator.h"
-
-#define HX_METHOD_COUNT 4
 
 typedef struct hx_stability {
     double magnitude;                 /* |lambda|, per time unit */

@@ -10,6 +10,27 @@
 #include "tools/plot.h"
 #include "sim/simulation.h"
 
+/* A fixed-step sweep stops halving past this many right-hand sides a run:
+ * on a stiff model the stable steps alone cost millions. */
+#define FIXED_STEP_BUDGET 3e6
+/* Runs longer than this are timed once: their timing noise is small. */
+#define LONG_RUN_SECONDS 0.5
+
+const char *hx_wp_series_name(hx_wp_series series)
+{
+    static const char *const names[HX_WP_SERIES] = {
+        "euler", "symplectic-euler", "rk4", "dopri5", "dopri5-arkode", "bdf", "bdf-fd"};
+    return series < HX_WP_SERIES ? names[series] : "?";
+}
+
+static hx_method method_of(hx_wp_series series)
+{
+    static const hx_method methods[HX_WP_SERIES] = {
+        HX_METHOD_EULER, HX_METHOD_SYMPLECTIC_EULER, HX_METHOD_RK4, HX_METHOD_DOPRI5,
+        HX_METHOD_DOPRI5_ARKODE, HX_METHOD_BDF, HX_METHOD_BDF};
+    return methods[series];
+}
+
 /* ---- kinds of state, for errors that never mix units ---------------------------------- */
 
 enum { KIND_POSITION, KIND_ROTATION, KIND_JOINT_ANGLE, KIND_JOINT_SLIDE, KIND_VELOCITY,
@@ -18,7 +39,9 @@ enum { KIND_POSITION, KIND_ROTATION, KIND_JOINT_ANGLE, KIND_JOINT_SLIDE, KIND_VE
 typedef struct reference_grid {
     int m;                 /* compared components: positions and velocities */
     int *kind;             /* per component */
-    double scale[KIND_COUNT];
+    unsigned char *slow;   /* per component: a state of a slow-output body */
+    double scale[KIND_COUNT];     /* over the slow outputs */
+    double all_scale[KIND_COUNT]; /* over every state */
     double *y;             /* (HX_WP_GRID + 1) x m reference states */
 } reference_grid;
 
@@ -47,30 +70,69 @@ static void assign_kinds(const hx_dynamics *d, int *kind)
     }
 }
 
-/* Per kind: the largest excursion (positions) or value (velocities). */
+/* The slow outputs: the states of the bodies named (every body without names). */
+static int assign_outputs(const hx_dynamics *d, const hx_wp_options *o, unsigned char *slow,
+                          hx_message *msg)
+{
+    const hx_model *m = d->m;
+    for (int b = 0; b < m->nbodies; ++b) {
+        const hx_body_dof *dof = &d->dof[b];
+        int chosen = o->noutputs == 0;
+        for (int k = 0; k < o->noutputs; ++k)
+            chosen |= m->bodies[b].id == o->outputs[k];
+        if (!chosen || dof->kind == HX_DOF_GROUND)
+            continue;
+        const int free = dof->kind == HX_DOF_FREE;
+        for (int i = 0; i < (free ? 7 : 1); ++i)
+            slow[dof->q + i] = 1;
+        for (int i = 0; i < (free ? 6 : 1); ++i)
+            slow[d->nq + dof->u + i] = 1;
+    }
+    for (int k = 0; k < o->noutputs; ++k) {
+        int found = 0;
+        for (int b = 0; b < m->nbodies; ++b)
+            found |= m->bodies[b].id == o->outputs[k] && !m->bodies[b].is_ground;
+        if (!found)
+            return hx_fail(msg, "--outputs: no moving Body_Rigid with id %d", o->outputs[k]);
+    }
+    return 0;
+}
+
+/* Per kind: the largest excursion (positions) or value (velocities), over
+ * the slow outputs and over every state. */
 static void grid_scales(reference_grid *g, int nq)
 {
     memset(g->scale, 0, sizeof g->scale);
+    memset(g->all_scale, 0, sizeof g->all_scale);
     for (int r = 0; r <= HX_WP_GRID; ++r)
         for (int i = 0; i < g->m; ++i) {
             const double v = g->y[r * g->m + i];
             const double size = i < nq ? fabs(v - g->y[i]) : fabs(v);
-            g->scale[g->kind[i]] = fmax(g->scale[g->kind[i]], size);
+            g->all_scale[g->kind[i]] = fmax(g->all_scale[g->kind[i]], size);
+            if (g->slow[i])
+                g->scale[g->kind[i]] = fmax(g->scale[g->kind[i]], size);
         }
-    double largest = 0.0;
-    for (int k = 0; k < KIND_COUNT; ++k)
+    double largest = 0.0, all_largest = 0.0;
+    for (int k = 0; k < KIND_COUNT; ++k) {
         largest = fmax(largest, g->scale[k]);
-    for (int k = 0; k < KIND_COUNT; ++k) /* kinds that do not move are not compared */
+        all_largest = fmax(all_largest, g->all_scale[k]);
+    }
+    for (int k = 0; k < KIND_COUNT; ++k) { /* kinds that do not move are not compared */
         if (g->scale[k] <= 1e-12 * largest)
             g->scale[k] = 0.0;
+        if (g->all_scale[k] <= 1e-12 * all_largest)
+            g->all_scale[k] = 0.0;
+    }
 }
 
-static double state_error(const reference_grid *g, int row, const double *y)
+/* The error of a state at a grid row: of the slow outputs, or of every state. */
+static double state_error(const reference_grid *g, int row, const double *y, int all)
 {
+    const double *scale = all ? g->all_scale : g->scale;
     double e = 0.0;
     for (int i = 0; i < g->m; ++i) {
-        const double s = g->scale[g->kind[i]];
-        if (s > 0.0)
+        const double s = scale[g->kind[i]];
+        if (s > 0.0 && (all || g->slow[i]))
             e = fmax(e, fabs(y[i] - g->y[row * g->m + i]) / s);
     }
     return e;
@@ -81,7 +143,7 @@ static double state_error(const reference_grid *g, int row, const double *y)
 typedef struct observed {
     const reference_grid *g;
     double *store;      /* non-NULL: keep the states here (reference runs) */
-    double end_error, max_error;
+    double end_error, max_error, all_error;
     int rows;
     double t_end;
 } observed;
@@ -96,8 +158,9 @@ static int observe(void *ctx, hx_dynamics *d, double t, const double *y)
     if (o->store != NULL)
         memcpy(o->store + row * o->g->m, y, sizeof(double) * (size_t)o->g->m);
     else {
-        const double e = state_error(o->g, row, y);
+        const double e = state_error(o->g, row, y, 0);
         o->max_error = fmax(o->max_error, e);
+        o->all_error = fmax(o->all_error, state_error(o->g, row, y, 1));
         if (row == HX_WP_GRID)
             o->end_error = e;
     }
@@ -105,17 +168,19 @@ static int observe(void *ctx, hx_dynamics *d, double t, const double *y)
     return 0;
 }
 
-static int simulate(hx_dynamics *d, hx_method method, double setting, double t_end,
-                    observed *obs, hx_simulation_result *result)
+static int simulate(hx_dynamics *d, hx_wp_series series, double setting, double atol_ratio,
+                    int max_order, double t_end, observed *obs, hx_simulation_result *result)
 {
     hx_simulation_options so = {0};
     hx_integrator_defaults(&so.integration);
-    so.integration.method = method;
+    so.integration.method = method_of(series);
+    so.integration.max_order = max_order;
+    so.integration.jacobian = series == HX_WP_BDF_FD ? HX_JACOBIAN_FD : HX_JACOBIAN_ANALYTIC;
     so.integration.t_end = t_end;
     so.integration.output_interval = t_end / HX_WP_GRID;
-    if (method == HX_METHOD_DOPRI5) {
+    if (hx_method_adaptive(so.integration.method)) {
         so.integration.rtol = setting;
-        so.integration.atol = setting * 1e-3;
+        so.integration.atol = setting * atol_ratio;
         so.integration.max_steps = 50000000;
     } else {
         so.integration.step = setting;
@@ -127,30 +192,56 @@ static int simulate(hx_dynamics *d, hx_method method, double setting, double t_e
 }
 
 static void measure_point(hx_dynamics *d, const reference_grid *g, const hx_wp_options *o,
-                          hx_method method, double setting, hx_wp_point *p)
+                          hx_wp_series series, double setting, hx_wp_point *p)
 {
-    observed obs = {g, NULL, INFINITY, 0.0, 0, o->t_end};
+    observed obs = {g, NULL, INFINITY, 0.0, 0.0, 0, o->t_end};
     hx_simulation_result result;
     double seconds[15];
+    const double atol_ratio = o->atol_ratio > 0.0 ? o->atol_ratio : 1e-3;
     const int repeats = o->repeats < 1 ? 1 : o->repeats > 15 ? 15 : o->repeats;
-    simulate(d, method, setting, o->t_end, &obs, &result);
-    p->method = method;
+    simulate(d, series, setting, atol_ratio, o->max_order, o->t_end, &obs, &result);
+    const int ok = result.status == HX_INTEGRATION_OK;
+    memset(p, 0, sizeof *p);
+    p->series = series;
+    p->method = method_of(series);
     p->setting = setting;
     p->status = result.status;
     p->evaluations = result.stats.evaluations;
     p->steps = result.stats.steps;
-    p->end_error = result.status == HX_INTEGRATION_OK ? obs.end_error : INFINITY;
-    p->max_error = result.status == HX_INTEGRATION_OK ? obs.max_error : INFINITY;
+    p->newton_iterations = result.stats.newton_iterations;
+    p->jacobians = result.stats.jacobians;
+    p->fd_evaluations = result.stats.fd_jacobian_evaluations;
+    p->frozen_evaluations = result.stats.frozen_evaluations;
+    p->partial_calls = result.stats.partial_calls;
+    p->end_error = ok ? obs.end_error : INFINITY;
+    p->max_error = ok ? obs.max_error : INFINITY;
+    p->all_error = ok ? obs.all_error : INFINITY;
     seconds[0] = result.seconds;
-    for (int k = 1; k < repeats && result.status == HX_INTEGRATION_OK; ++k) {
-        simulate(d, method, setting, o->t_end, NULL, &result);
-        seconds[k] = result.seconds;
+    int timed = 1;
+    for (; timed < repeats && ok && result.seconds < LONG_RUN_SECONDS; ++timed) {
+        simulate(d, series, setting, atol_ratio, o->max_order, o->t_end, NULL, &result);
+        seconds[timed] = result.seconds;
     }
-    const int timed = result.status == HX_INTEGRATION_OK ? repeats : 1;
     p->seconds = hx_median(seconds, timed);
 }
 
 /* ---- the reference ----------------------------------------------------------------------- */
+
+/* A tight run of a series into a grid of states. */
+static int reference_run(hx_dynamics *d, const hx_wp_options *o, reference_grid *g,
+                         hx_wp_series series, double rtol, double *into, hx_message *msg)
+{
+    observed run = {g, into, 0, 0, 0, 0, o->t_end};
+    hx_simulation_result result;
+    /* the sweep's absolute tolerances, and no tighter than atol = rtol for BDF:
+     * below that a stiff model's error estimates drown in rounding */
+    const double ratio = o->atol_ratio > 0.0 ? o->atol_ratio : 1e-3;
+    const double atol_ratio = series == HX_WP_BDF ? fmax(ratio, 1.0) : ratio;
+    if (simulate(d, series, rtol, atol_ratio, 0, o->t_end, &run, &result) != 0)
+        return hx_fail(msg, "the reference run (%s at %g) failed: %s", hx_wp_series_name(series),
+                       rtol, result.message);
+    return 0;
+}
 
 static int build_reference(hx_dynamics *d, const hx_wp_options *o, reference_grid *g,
                            hx_wp_result *r, hx_message *msg)
@@ -178,30 +269,59 @@ static int build_reference(hx_dynamics *d, const hx_wp_options *o, reference_gri
         grid_scales(g, d->nq);
         return 0;
     }
-    /* numerical: DOPRI5 at 1e-12, confirmed by 1e-13 */
-    double *second = malloc(sizeof(double) * (size_t)((HX_WP_GRID + 1) * g->m));
-    if (second == NULL)
-        return hx_fail(msg, "out of memory");
-    observed a = {g, g->y, 0, 0, 0, o->t_end}, b = {g, second, 0, 0, 0, o->t_end};
-    hx_simulation_result ra, rb;
-    if (simulate(d, HX_METHOD_DOPRI5, 1e-12, o->t_end, &a, &ra) != 0 ||
-        simulate(d, HX_METHOD_DOPRI5, 1e-13, o->t_end, &b, &rb) != 0) {
-        free(second);
-        return hx_fail(msg, "the reference run failed: %s", ra.message[0] ? ra.message : rb.message);
+    /* numerical: DOPRI5 at 1e-13, confirmed by DOPRI5 and by BDF at 1e-12 */
+    const size_t size = (size_t)((HX_WP_GRID + 1) * g->m);
+    double *dopri5 = malloc(sizeof(double) * size), *bdf = malloc(sizeof(double) * size);
+    int status = dopri5 && bdf ? 0 : hx_fail(msg, "out of memory");
+    if (status == 0)
+        status = reference_run(d, o, g, HX_WP_DOPRI5, 1e-13, g->y, msg);
+    if (status == 0)
+        status = reference_run(d, o, g, HX_WP_DOPRI5, 1e-12, dopri5, msg);
+    if (status == 0)
+        status = reference_run(d, o, g, HX_WP_BDF, 1e-12, bdf, msg);
+    if (status == 0) {
+        grid_scales(g, d->nq);
+        double by_dopri5 = 0.0, by_bdf = 0.0;
+        for (int row = 0; row <= HX_WP_GRID; ++row) {
+            by_dopri5 = fmax(by_dopri5, state_error(g, row, dopri5 + row * g->m, 1));
+            by_bdf = fmax(by_bdf, state_error(g, row, bdf + row * g->m, 1));
+        }
+        r->reference_error = fmax(by_dopri5, by_bdf);
+        snprintf(r->reference, sizeof r->reference, "numerical: DOPRI5 at tolerance 1e-13, within"
+                 " %.2g of DOPRI5 and %.2g of BDF at 1e-12 (%.700s)", by_dopri5, by_bdf, why.text);
     }
-    grid_scales(g, d->nq);
-    r->reference_error = 0.0;
-    for (int row = 0; row <= HX_WP_GRID; ++row)
-        r->reference_error = fmax(r->reference_error, state_error(g, row, second + row * g->m));
-    /* the finer run is the reference */
-    memcpy(g->y, second, sizeof(double) * (size_t)((HX_WP_GRID + 1) * g->m));
-    free(second);
-    snprintf(r->reference, sizeof r->reference, "numerical: DOPRI5 at tolerance 1e-13, within %.2g"
-             " of the run at 1e-12 (%.700s)", r->reference_error, why.text);
-    return 0;
+    free(dopri5);
+    free(bdf);
+    return status;
 }
 
 /* ---- the sweep --------------------------------------------------------------------------- */
+
+static void fixed_step_sweep(hx_dynamics *d, const reference_grid *g, const hx_wp_options *o,
+                             hx_wp_result *r, hx_wp_series series, double h0)
+{
+    const int halvings = o->quick ? 4 : 9;
+    static const int stages[3] = {1, 1, 4};
+    for (int k = 0; k < halvings && r->npoints < HX_WP_MAX_POINTS; ++k) {
+        const double h = h0 / (double)(1L << k);
+        if (k > 0 && stages[series] * o->t_end / h > FIXED_STEP_BUDGET)
+            break;
+        measure_point(d, g, o, series, h, &r->point[r->npoints++]);
+    }
+}
+
+static void tolerance_sweep(hx_dynamics *d, const reference_grid *g, const hx_wp_options *o,
+                            hx_wp_result *r, hx_wp_series series)
+{
+    /* explicit: 1e-3 down to 1e-12; BDF from 1e-2 (it is the loose end that
+     * stiff models run at) down to 1e-10 */
+    const int implicit = method_of(series) == HX_METHOD_BDF;
+    const int count = o->quick ? 4 : implicit ? 9 : 10;
+    const double first = implicit ? (o->quick ? 1e-3 : 1e-2) : 1e-3;
+    for (int k = 0; k < count && r->npoints < HX_WP_MAX_POINTS; ++k)
+        measure_point(d, g, o, series, first * pow(10.0, -(o->quick ? 2 : 1) * k),
+                      &r->point[r->npoints++]);
+}
 
 int hx_work_precision(hx_session *s, const hx_wp_options *o, hx_wp_result *r,
                       hx_message *msg)
@@ -210,13 +330,17 @@ int hx_work_precision(hx_session *s, const hx_wp_options *o, hx_wp_result *r,
     hx_dynamics d;
     if (hx_dynamics_init(&d, s, msg) != 0)
         return -1;
-    reference_grid g = {d.nq + d.nu, NULL, {0}, NULL};
+    reference_grid g = {d.nq + d.nu, NULL, NULL, {0}, {0}, NULL};
     g.kind = calloc((size_t)g.m + 1, sizeof(int));
+    g.slow = calloc((size_t)g.m + 1, 1);
     g.y = calloc((size_t)((HX_WP_GRID + 1) * g.m + 1), sizeof(double));
     double *y0 = calloc((size_t)d.n, sizeof(double));
-    int status = g.kind && g.y && y0 ? 0 : hx_fail(msg, "out of memory");
-    if (status == 0)
+    int status = g.kind && g.slow && g.y && y0 ? 0 : hx_fail(msg, "out of memory");
+    if (status == 0) {
         assign_kinds(&d, g.kind);
+        status = assign_outputs(&d, o, g.slow, msg);
+        r->restricted = o->noutputs > 0;
+    }
     if (status == 0 && (hx_dynamics_initial_state(&d, y0) != 0 ||
                         hx_estimate_stability(&d, 0.0, y0, &r->stability, msg) != 0))
         status = msg->text[0] ? -1 : hx_fail(msg, "%s", d.message);
@@ -229,56 +353,83 @@ int hx_work_precision(hx_session *s, const hx_wp_options *o, hx_wp_result *r,
         const double limit = r->stability.max_step[HX_METHOD_RK4];
         while (isfinite(limit) && h0 > 0.5 * limit)
             h0 /= 2.0;
-        const int halvings = o->quick ? 4 : 9;
-        static const hx_method fixed[3] = {HX_METHOD_EULER, HX_METHOD_SYMPLECTIC_EULER,
-                                           HX_METHOD_RK4};
-        for (int m = 0; m < 3; ++m)
-            for (int k = 0; k < halvings && r->npoints < HX_WP_MAX_POINTS; ++k)
-                measure_point(&d, &g, o, fixed[m], h0 / (double)(1L << k),
-                              &r->point[r->npoints++]);
-        const int tolerances = o->quick ? 4 : 10;
-        for (int k = 0; k < tolerances && r->npoints < HX_WP_MAX_POINTS; ++k)
-            measure_point(&d, &g, o, HX_METHOD_DOPRI5, pow(10.0, -3.0 - (o->quick ? 2 : 1) * k),
-                          &r->point[r->npoints++]);
+        for (int k = HX_WP_EULER; k <= HX_WP_RK4; ++k)
+            fixed_step_sweep(&d, &g, o, r, (hx_wp_series)k, h0);
+        for (int k = HX_WP_DOPRI5; k < HX_WP_SERIES; ++k)
+            tolerance_sweep(&d, &g, o, r, (hx_wp_series)k);
     }
     free(g.kind);
+    free(g.slow);
     free(g.y);
     free(y0);
     hx_dynamics_free(&d);
     return status;
 }
 
-double hx_wp_evaluations_at(const hx_wp_result *r, hx_method method, double target)
+int hx_wp_work_at(const hx_wp_result *r, hx_wp_series series, double target, int largest,
+                  double *evaluations, double *seconds)
 {
-    /* the method's points in order of work; the first crossing of the target */
+    /* the series' points in order of work; the first crossing of the target */
     const hx_wp_point *previous = NULL;
+    double previous_error = 0.0;
     for (int k = 0; k < r->npoints; ++k) {
         const hx_wp_point *p = &r->point[k];
-        if (p->method != method || p->status != HX_INTEGRATION_OK || !(p->end_error > 0.0))
+        const double error = largest ? p->max_error : p->end_error;
+        if (p->series != series || p->status != HX_INTEGRATION_OK || !(error > 0.0))
             continue;
-        if (p->end_error <= target) {
-            if (previous == NULL || !isfinite(previous->end_error))
-                return (double)p->evaluations;
-            const double x0 = log((double)previous->evaluations), x1 = log((double)p->evaluations);
-            const double e0 = log(previous->end_error), e1 = log(p->end_error);
-            return exp(x0 + (x1 - x0) * (log(target) - e0) / (e1 - e0));
+        if (error <= target) {
+            double e = (double)p->evaluations, s = p->seconds;
+            if (previous != NULL && isfinite(previous_error) && previous_error > target) {
+                const double f = (log(target) - log(previous_error)) /
+                                 (log(error) - log(previous_error));
+                e = exp(log((double)previous->evaluations) +
+                        f * (log((double)p->evaluations) - log((double)previous->evaluations)));
+                s = exp(log(previous->seconds) + f * (log(p->seconds) - log(previous->seconds)));
+            }
+            if (evaluations != NULL)
+                *evaluations = e;
+            if (seconds != NULL)
+                *seconds = s;
+            return 0;
         }
         previous = p;
+        previous_error = error;
     }
+    return -1;
+}
+
+double hx_wp_evaluations_at(const hx_wp_result *r, hx_method method, double target)
+{
+    for (int k = 0; k < HX_WP_SERIES; ++k)
+        if (method_of((hx_wp_series)k) == method) {
+            double e = 0.0;
+            return hx_wp_work_at(r, (hx_wp_series)k, target, 0, &e, NULL) == 0 ? e : 0.0;
+        }
     return 0.0;
 }
 
 void hx_wp_print(FILE *f, const hx_wp_result *r)
 {
     fprintf(f, "work-precision against the reference (%s)\n", r->reference);
-    fprintf(f, "  %-17s %-11s %10s %12s %12s %12s %12s\n", "method", "step/rtol", "steps",
-            "evaluations", "run time s", "end error", "max error");
+    fprintf(f, "  errors of the %s; 'all states' is the largest over the trajectory of every"
+            " state\n", r->restricted ? "slow outputs (the bodies named by --outputs)" : "states");
+    fprintf(f, "  %-17s %-9s %9s %11s %10s %10s %10s %10s  %s\n", "method", "step/rtol", "steps",
+            "evaluations", "run time s", "end error", "max error", "all states",
+            "Newton it./step, Jacobians (right-hand sides in them | frozen, element calls)");
     for (int k = 0; k < r->npoints; ++k) {
         const hx_wp_point *p = &r->point[k];
-        fprintf(f, "  %-17s %-11.3g %10ld %12ld %12.3g %12.3g %12.3g%s\n",
-                hx_method_name(p->method), p->setting, p->steps, p->evaluations, p->seconds,
-                p->end_error, p->max_error,
-                p->status == HX_INTEGRATION_OK ? "" : "  (unstable)");
+        fprintf(f, "  %-17s %-9.3g %9ld %11ld %10.3g %10.3g %10.3g %10.3g", hx_wp_series_name(p->series),
+                p->setting, p->steps, p->evaluations, p->seconds, p->end_error, p->max_error,
+                p->all_error);
+        if (p->method == HX_METHOD_BDF && p->steps > 0) {
+            fprintf(f, "  %.2f, %ld", (double)p->newton_iterations / (double)p->steps,
+                    p->jacobians);
+            if (p->series == HX_WP_BDF_FD)
+                fprintf(f, " (%ld)", p->fd_evaluations);
+            else
+                fprintf(f, " (%ld, %ld)", p->frozen_evaluations, p->partial_calls);
+        }
+        fprintf(f, "%s\n", p->status == HX_INTEGRATION_OK ? "" : "  (failed or unstable)");
     }
 }
 
@@ -289,21 +440,27 @@ int hx_wp_write(const char *prefix, const char *title, const hx_wp_result *r)
     FILE *f = fopen(csv, "w");
     if (f == NULL)
         return -1;
-    fprintf(f, "method,setting,steps,evaluations,seconds,end_error,max_error,status\n");
+    fprintf(f, "method,setting,steps,evaluations,seconds,end_error,max_error,status,all_error,"
+               "newton_iterations,jacobians,fd_evaluations,frozen_evaluations,partial_calls\n");
+    int present[HX_WP_SERIES] = {0};
     for (int k = 0; k < r->npoints; ++k) {
         const hx_wp_point *p = &r->point[k];
-        fprintf(f, "%s,%.6g,%ld,%ld,%.6g,%.6g,%.6g,%s\n", hx_method_name(p->method), p->setting,
-                p->steps, p->evaluations, p->seconds, p->end_error, p->max_error,
-                p->status == HX_INTEGRATION_OK ? "ok" : "unstable");
+        present[p->series] = 1;
+        fprintf(f, "%s,%.6g,%ld,%ld,%.6g,%.6g,%.6g,%s,%.6g,%ld,%ld,%ld,%ld,%ld\n",
+                hx_wp_series_name(p->series), p->setting, p->steps, p->evaluations, p->seconds,
+                p->end_error, p->max_error, p->status == HX_INTEGRATION_OK ? "ok" : "unstable",
+                p->all_error, p->newton_iterations, p->jacobians, p->fd_evaluations,
+                p->frozen_evaluations, p->partial_calls);
     }
     fclose(f);
     /* one series per method: end-point error (solid) and largest error (dashed) */
-    char script[8192];
+    char script[16384];
     int n = snprintf(script, sizeof script,
                      "set datafile separator ','\nset terminal pngcairo size 900,650 font ',11'\n"
                      "set logscale xy\nset grid\nset key outside right noenhanced\nset format y '10^{%%L}'\n"
                      "set format x '10^{%%L}'\n"
-                     "set ylabel 'relative error'\n");
+                     "set ylabel 'relative error%s'\n",
+                     r->restricted ? " of the slow outputs" : "");
     static const char *const axes[2][3] = {{"error_time", "run time (s)", "5"},
                                            {"error_evaluations", "right-hand-side evaluations", "4"}};
     for (int a = 0; a < 2 && n > 0 && (size_t)n < sizeof script; ++a) {
@@ -311,15 +468,18 @@ int hx_wp_write(const char *prefix, const char *title, const hx_wp_result *r)
                       "set output '%s_%s.png'\nset title '%s: error against %s' noenhanced\n"
                       "set xlabel '%s'\n"
                       "plot", prefix, axes[a][0], title, axes[a][1], axes[a][1]);
-        for (int m = 0; m < HX_METHOD_COUNT && n > 0 && (size_t)n < sizeof script; ++m) {
-            const char *name = hx_method_name((hx_method)m);
+        int plotted = 0;
+        for (int m = 0; m < HX_WP_SERIES && n > 0 && (size_t)n < sizeof script; ++m) {
+            if (!present[m])
+                continue;
+            const char *name = hx_wp_series_name((hx_wp_series)m);
             n += snprintf(script + n, sizeof script - (size_t)n,
                           "%s '%s' using (strcol(1) eq '%s' && strcol(8) eq 'ok' ? $%s : 1/0):6"
                           " with linespoints lw 2 lc %d title '%s, end',"
                           " '%s' using (strcol(1) eq '%s' && strcol(8) eq 'ok' ? $%s : 1/0):7"
                           " with lines dt 2 lc %d title '%s, largest'",
-                          m ? "," : "", csv, name, axes[a][2], m + 1, name, csv, name, axes[a][2],
-                          m + 1, name);
+                          plotted++ ? "," : "", csv, name, axes[a][2], m + 1, name, csv, name,
+                          axes[a][2], m + 1, name);
         }
         n += snprintf(script + n, sizeof script - (size_t)n, "\n");
     }

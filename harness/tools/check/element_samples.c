@@ -1,6 +1,8 @@
 /* Sampled states of force elements (element_samples.h). */
 #include "tools/check/element_samples.h"
 
+#include <math.h>
+
 #include "state/measures.h"
 
 double hx_jitter(unsigned *seed)
@@ -30,10 +32,17 @@ void hx_sample_element_state(const hx_session *s, int force, int k, double disp[
     hx_force_deformation(&s->state, force, disp, velo);
     if (k == 0)
         return;
+    const double base_twist = disp[5];
     unsigned seed = 2654435761u * (unsigned)k;
     const double amplitude = 0.5 + 9.5 * (k - 1) / (HX_FORCE_SAMPLES - 2.0);
     for (int i = 0; i < 6; ++i) {
         disp[i] += amplitude * scale[i] * hx_jitter(&seed);
         velo[i] += amplitude * scale[6 + i] * hx_jitter(&seed);
+    }
+    if (k == 1) { /* a twist at rest (I's z axis along J's), where only psi + phi is
+                   * defined, of 0.5 to 0.75 rad so that it reaches the gaps of limits */
+        const double twist = 25.0 * scale[5] * (1.0 + fabs(disp[5] - base_twist) / scale[5]);
+        disp[3] = disp[4] = 0.0;
+        disp[5] = base_twist + (disp[5] >= base_twist ? twist : -twist);
     }
 }

@@ -3,7 +3,9 @@
  * deformation at the model's initial state; samples 1.. add deterministic
  * offsets growing from 0.5 to 10 typical steps (1 mm, 0.02 rad, and those
  * over 10 ms for the rates, in the model's units), so that every term of an
- * element (a contact beyond its gap, a spline's far end) wakes in some; and
+ * element (a contact beyond its gap, a spline's far end) wakes in some;
+ * sample 1 is a twist at rest (no tilt), where hosts' Euler angles are
+ * ill-defined and elements may ask for more; and
  * each sample has its own time, so that what an element does at t > 0 is
  * seen too.
  */

@@ -10,6 +10,7 @@
 #ifndef USRSUB_BUSHING_H
 #define USRSUB_BUSHING_H
 
+#include "usrsub/core/lugre_friction.h"
 #include "usrsub/core/message.h"
 #include "usrsub/core/spline.h"
 
@@ -44,15 +45,32 @@ typedef struct usrsub_bushing_direction {
     double c;        /* constant damping */
     double preload, offset, disp_scale, force_scale; /* P, Q, H, V */
     double g_at_zero; /* g(0), set by usrsub_bushing_prepare */
+    /* internal states (docs/interface.md §3.8), read only by the
+     * state-carrying entry: the rubber filter's cut-off R and the dynamic
+     * part's K and C; the mount's series stiffness and damping */
+    int rubber;
+    double rubber_r, rubber_k, rubber_c;
+    int mount;
+    double mount_k, mount_c;
 } usrsub_bushing_direction;
 
 typedef struct usrsub_bushing {
     usrsub_bushing_direction dir[6];
+    usrsub_friction friction; /* its torque needs the state-carrying entry */
     int coupling;          /* enum usrsub_coupling */
-    double epsilon[2];     /* blend radius of the translational and rotational groups */
-    int group[2][3];       /* the active directions each coupled group joins */
-    int group_size[2];     /* < 2: the group is uncoupled */
+    int rotation_measure;  /* enum usrsub_rotation_measure (core/rotation.h) */
+    double group_epsilon[2]; /* blend radius of the translational and rotational groups */
+    /* derived by usrsub_bushing_prepare: the coupled groups of active
+     * directions, the directions evaluated alone, the inactive ones */
+    int ngroups;
+    int group[2][3];
+    int group_size[2];
+    double epsilon[2];     /* each coupled group's blend radius */
+    int nsingle, single[6];
+    int ninactive, inactive[6];
     int uses_translation, uses_rotation, uses_velocity;
+    int uses_twist; /* the force depends on the rotation about z, d[5] */
+    int has_states; /* friction, a mount or a rubber filter is active */
 } usrsub_bushing;
 
 /* Fits c2 and c3 of both sides; -1 with a message when the points cannot
@@ -76,7 +94,7 @@ void usrsub_bushing_force(const usrsub_bushing *b, const double d[6], const doub
 
 /* Force of a coupled group of m (2 or 3) directions at q, qdot (after offset
  * and scale), before preload and force scale, with its m x m partials
- * (row-major [i*m + j] = dF_i/dq_j; may be NULL). For tests and the bushing. */
+ * (column-major [i + m*j] = dF_i/dq_j; may be NULL). */
 void usrsub_bushing_group_force(const usrsub_bushing_direction *const dirs[], int m,
                                 double epsilon, const double *q, const double *qd, double *F,
                                 double *dFdq, double *dFdqd);

@@ -19,10 +19,12 @@ extern "C" {
 typedef struct usrsub_flex_joint {
     double k[36], d[36]; /* column-major: k[i + 6*j] = K_ij, in the model's units */
     double preload[6];
+    int rotation_measure;  /* enum usrsub_rotation_measure (core/bushing.h) */
     /* derived by usrsub_flex_joint_prepare */
     double minus_k[36], minus_d[36]; /* the partials */
     unsigned k_blocks, d_blocks;     /* bit 2*(i/3) + j/3: block (rows i, columns j) is not zero */
     int uses_translation, uses_rotation, uses_velocity;
+    int uses_twist; /* the force depends on the rotation about z, d[5] */
 } usrsub_flex_joint;
 
 /* Force and torque on I in J axes; partials (may be NULL) column-major. */

@@ -34,6 +34,7 @@ typedef struct usrsub_mount_limits {
     int nsides;                  /* active sides only (K > 0 or C > 0) */
     usrsub_limit_side side[12];
     int uses_translation, uses_rotation, uses_velocity;
+    int uses_twist; /* the force depends on the rotation about z, d[5] */
     /* derived by usrsub_mount_limits_prepare: the sides by [direction][0
      * positive, 1 negative], an absent side with an infinite gap */
     usrsub_limit_side by_direction[6][2];

@@ -24,6 +24,10 @@ typedef struct usrsub_spline {
     int nbuckets;
     double bucket_scale;
     int *bucket;
+    /* knots equally spaced (to 1e-12 of the spacing): the interval is
+     * (x - x0) / h itself, with no table and no search */
+    int uniform;
+    double inverse_spacing;
 } usrsub_spline;
 
 /* Builds the spline; x and y are copied. On error (n < 2, a non-finite value,

@@ -38,6 +38,10 @@ int usrsub_property_file_read(const char *path, const char *file_type, const cha
                               const double *model_scales, usrsub_property_body_fn *body,
                               void *ctx, usrsub_read_report *report, usrsub_message *msg);
 
+/* [GLOBAL] ROTATION_MEASURE = 'PROJECTION_ANGLES' (the default) or
+ * 'ROTATION_VECTOR', of a .gbs or .gfj file (docs/interface.md §3.7). */
+int usrsub_read_rotation_measure(const usrsub_teim_file *f, int *measure, usrsub_message *msg);
+
 #ifdef __cplusplus
 }
 #endif

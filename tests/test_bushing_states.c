@@ -1,0 +1,448 @@
+/*
+ * The bushing's internal states (docs/interface.md §3.8), in the core:
+ * - no state: the state equation's force and partials are the FIESUB form's,
+ *   bit for bit;
+ * - every partial (d stated and d output by d states and d inputs) against
+ *   central differences, at points that vary every input and state, for
+ *   friction, damped and undamped mounts, rubber filters and limits alone
+ *   and all together;
+ * - friction integrated with a turning body: it sticks below the breakaway
+ *   torque mu_s N r_B (slip rate to zero, bristles at T / (sigma0 r_B N)),
+ *   slips above it at mu_d, floors at the preload torque, and grows with the
+ *   normal force when a mount limit is in contact;
+ * - a mount: very stiff, the force is the stateless one to 1e-6; a static
+ *   load splits the deflection in the ratio of the stiffnesses, with damping
+ *   (integrated to rest) and without (algebraic);
+ * - the rubber filter's steady response to a sine: gain w / sqrt(R^2 + w^2),
+ *   phase atan(R / w).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "test_support.h"
+#include "usrsub/core/bushing_states.h"
+#include "usrsub/readers/bushing_reader.h"
+#include "usrsub/readers/mount_limits_reader.h"
+
+static const char header[] =
+    "[HEADER]\nFILE_TYPE = 'gbs'\n[UNITS]\nLENGTH = 'mm'\nANGLE = 'radian'\nFORCE = 'newton'\n"
+    "MASS = 'kg'\nTIME = 'second'\n";
+
+/* A bushing from its text after [UNITS]; fails the test when it is refused. */
+static usrsub_bushing *bushing(const char *name, const char *body)
+{
+    char text[8192];
+    snprintf(text, sizeof text, "%s%s", header, body);
+    usrsub_bushing *b;
+    usrsub_read_report report = {0};
+    usrsub_message msg;
+    if (usrsub_bushing_read(test_write_file(name, text), NULL, &b, &report, &msg) != 0)
+        fail_msg("%s", msg.text);
+    return b;
+}
+
+/* Mount limits with the given sides; every other side is written inactive. */
+static usrsub_mount_limits *limits(const char *name, const char *sides)
+{
+    char text[4096];
+    int n = snprintf(text, sizeof text,
+                     "[HEADER]\nFILE_TYPE = 'gbi'\n[UNITS]\nLENGTH = 'mm'\nANGLE = 'radian'\n"
+                     "FORCE = 'newton'\nMASS = 'kg'\nTIME = 'second'\n[MOUNT_LIMITS]\n%s", sides);
+    static const char *const kinds[2] = {"TRA", "ROT"}, *const axes[3] = {"X", "Y", "Z"},
+                             *const ends[2] = {"POS", "NEG"};
+    for (int k = 0; k < 12; ++k) {
+        char side[64];
+        snprintf(side, sizeof side, "IMPACT_PARAMETERS_%s_%s_%s", kinds[k / 6], axes[k / 2 % 3],
+                 ends[k % 2]);
+        if (strstr(sides, side) == NULL)
+            n += snprintf(text + n, sizeof text - (size_t)n, "%s = 0 1 0 0 0\n", side);
+    }
+    usrsub_mount_limits *m;
+    usrsub_read_report report = {0};
+    usrsub_message msg;
+    if (usrsub_mount_limits_read(test_write_file(name, text), NULL, &m, &report, &msg) != 0)
+        fail_msg("%s", msg.text);
+    return m;
+}
+
+/* a nonlinear coupled bushing, damped, with every direction active */
+static const char base_body[] =
+    "[GLOBAL]\nCOUPLING = 'CYLINDRICAL'\n[DIRECTIONS]\n(ACTIVITY)\n"
+    "{ formulation FX FY FZ TX TY TZ }\n'SPLINE_STIFFNESS' 1 1 0 0 0 0\n"
+    "'CONSTANT_STIFFNESS' 0 0 1 1 1 1\n'CONSTANT_DAMPING' 1 1 %d 1 1 %d\n"
+    "'RUBBER_DAMPING' 0 0 %d 0 0 %d\n"
+    "[SPLINE_STIFFNESS_FX]\n(SPLINE_DATA)\n{ disp force }\n-4 -9200\n-2 -3000\n0 0\n2 3000\n4 9200\n"
+    "[SPLINE_STIFFNESS_FY]\n(SPLINE_DATA)\n{ disp force }\n-4 -9000\n-2 -2800\n0 0\n2 2900\n4 9400\n"
+    "[CONSTANT_STIFFNESS_FZ]\nK = 800\n[CONSTANT_STIFFNESS_TX]\nK = 4e5\n"
+    "[CONSTANT_STIFFNESS_TY]\nK = 3e5\n[CONSTANT_STIFFNESS_TZ]\nK = 2e5\n"
+    "[CONSTANT_DAMPING_FX]\nC = 2.5\n[CONSTANT_DAMPING_FY]\nC = 3\n[CONSTANT_DAMPING_FZ]\nC = 1.5\n"
+    "[CONSTANT_DAMPING_TX]\nC = 40\n[CONSTANT_DAMPING_TY]\nC = 50\n[CONSTANT_DAMPING_TZ]\nC = 30\n"
+    "[PRELOAD_OFFSET_SCALE]\n{ direction P Q H V }\nFX 10 0.1 1.1 0.9\nTZ 50 0.01 1 1.2\n";
+
+static const char rubber_blocks[] =
+    "[RUBBER_DAMPING_FZ]\nNPRELOADS = 1\n(PRELOAD_1)\nPRELOAD = 0\nR = 30\nK0 = 400\nK1 = 0\n"
+    "K2 = 0\nC0 = 2\nC1 = 0\nC2 = 0\nP0 = 1\nP1 = 0\nP2 = 1\nQ0 = 1\nQ1 = 0\nQ2 = 1\n"
+    "[RUBBER_DAMPING_TZ]\nNPRELOADS = 1\n(PRELOAD_1)\nR = 5\nRMIN = 12\nK0 = 1e5\nC0 = 300\n";
+
+static const char friction_block[] =
+    "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.5\nMU_DYNAMIC = 0.3\nEFFECT = 'STICTION'\n"
+    "TRANSITION_VELOCITY = 20\nBRISTLE_STIFFNESS = 100\nBRISTLE_DAMPING = 0.02\n"
+    "SLIP_DAMPING = 0.001\nBALL_RADIUS = 10\nPRELOAD_TORQUE = 500\n";
+
+static const char mount_block[] =
+    "[MOUNT_STIFFNESS]\n{ direction K C }\nFX 20000 5\nFY 15000 0\nTX 2e6 100\nTZ 3e6 0\n";
+
+static usrsub_bushing *base_bushing(const char *name, int rubber, const char *extra)
+{
+    char body[8192];
+    snprintf(body, sizeof body, base_body, !rubber, !rubber, rubber, rubber);
+    snprintf(body + strlen(body), sizeof body - strlen(body), "%s%s", rubber ? rubber_blocks : "",
+             extra);
+    return bushing(name, body);
+}
+
+static const char limit_sides[] =
+    "IMPACT_PARAMETERS_TRA_X_POS = 500 2 10 0.5 0.5\nIMPACT_PARAMETERS_TRA_X_NEG = 500 2 10 0.5 0.5\n"
+    "IMPACT_PARAMETERS_TRA_Z_POS = 2000 1.5 20 0.5 0.2\nIMPACT_PARAMETERS_TRA_Z_NEG = 2000 1.5 20 0.5 0.2\n"
+    "IMPACT_PARAMETERS_ROT_Y_POS = 1e6 2 100 0.01 0.01\nIMPACT_PARAMETERS_ROT_Y_NEG = 1e6 2 100 0.01 0.01\n";
+
+static void eval(const usrsub_bushing *b, const usrsub_mount_limits *m,
+                 const usrsub_state_layout *l, const double u[12], const double *x,
+                 double *xdot, double y[6], usrsub_state_partials *p)
+{
+    usrsub_message msg;
+    if (usrsub_bushing_states_eval(b, m, l, u, x, xdot, y, p, &msg) != 0)
+        fail_msg("%s", msg.text);
+}
+
+static void without_states_it_is_the_fiesub_force(void **state)
+{
+    (void)state;
+    usrsub_bushing *b = base_bushing("plain.gbs", 0, "");
+    usrsub_mount_limits *m = limits("plain.gbi", limit_sides);
+    usrsub_state_layout l;
+    usrsub_bushing_state_layout(b, &l);
+    assert_int_equal(l.n, 0);
+    assert_false(b->has_states);
+    const double u[12] = {0.8, -0.4, 0.35, 0.004, -0.012, 0.02, 12, -7, 3, 0.4, -0.25, 0.6};
+    double y[6], F[6], dFdd[36], dFdv[36];
+    usrsub_state_partials p;
+    eval(b, m, &l, u, NULL, NULL, y, &p);
+    usrsub_bushing_force(b, u, u + 6, F, dFdd, dFdv);
+    usrsub_mount_limits_add(m, u, u + 6, F, dFdd, dFdv);
+    for (int i = 0; i < 6; ++i) {
+        assert_true(y[i] == F[i]);
+        for (int j = 0; j < 6; ++j) {
+            assert_true(p.dy_du[i + 6 * j] == dFdd[i + 6 * j]);
+            assert_true(p.dy_du[i + 6 * (6 + j)] == dFdv[i + 6 * j]);
+        }
+    }
+    usrsub_bushing_free(b);
+    usrsub_mount_limits_free(m);
+}
+
+/* Every partial against central differences at a point (u, x); returns the
+ * worst relative error (against the column's size). */
+static double partials_error(const usrsub_bushing *b, const usrsub_mount_limits *m,
+                             const double u0[12], const double *x0)
+{
+    usrsub_state_layout l;
+    usrsub_bushing_state_layout(b, &l);
+    const int n = l.n, rows = n + 6;
+    usrsub_state_partials p;
+    double xdot[USRSUB_MAX_STATES], y[6];
+    eval(b, m, &l, u0, x0, xdot, y, &p);
+    double worst = 0.0;
+    for (int j = 0; j < 12 + n; ++j) {
+        double u[12], x[USRSUB_MAX_STATES], plus[USRSUB_MAX_STATES + 6], minus[USRSUB_MAX_STATES + 6];
+        memcpy(u, u0, sizeof u);
+        memcpy(x, x0, sizeof(double) * (size_t)n);
+        double *at = j < 12 ? &u[j] : &x[j - 12];
+        const double h = 1e-6 * fmax(1e-3, fabs(*at)), mid = *at;
+        *at = mid + h;
+        eval(b, m, &l, u, x, plus, plus + n, NULL);
+        *at = mid - h;
+        eval(b, m, &l, u, x, minus, minus + n, NULL);
+        double size = 1e-9;
+        for (int i = 0; i < rows; ++i)
+            size = fmax(size, fabs(plus[i] - minus[i]) / (2.0 * h));
+        for (int i = 0; i < rows; ++i) {
+            const double fd = (plus[i] - minus[i]) / (2.0 * h);
+            double exact;
+            if (i < n)
+                exact = j < 12 ? p.dxdot_du[i + n * j] : p.dxdot_dx[i + n * (j - 12)];
+            else
+                exact = j < 12 ? p.dy_du[i - n + 6 * j] : p.dy_dx[i - n + 6 * (j - 12)];
+            const double e = fabs(exact - fd) / size;
+            if (e > worst)
+                worst = e;
+            if (e > 1e-5)
+                printf("    d out %d / d in %d: exact %.10g, differences %.10g\n", i, j, exact, fd);
+        }
+    }
+    return worst;
+}
+
+static void every_partial_against_differences(void **state)
+{
+    (void)state;
+    usrsub_mount_limits *m = limits("fd.gbi", limit_sides);
+    const char *names[5] = {"friction", "mounts", "rubber", "all, limits in contact", "all, sliding"};
+    usrsub_bushing *bs[5] = {
+        base_bushing("fd_friction.gbs", 0, friction_block),
+        base_bushing("fd_mount.gbs", 0, mount_block),
+        base_bushing("fd_rubber.gbs", 1, ""),
+        base_bushing("fd_all.gbs", 1, "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.5\nMU_DYNAMIC = 0.3\n"
+                     "TRANSITION_VELOCITY = 20\nBRISTLE_STIFFNESS = 100\nBRISTLE_DAMPING = 0.02\n"
+                     "SLIP_DAMPING = 0.001\nBALL_RADIUS = 10\nPRELOAD_TORQUE = 500\n"
+                     "[MOUNT_STIFFNESS]\n{ direction K C }\nFX 20000 5\nFY 15000 0\nTX 2e6 100\nTZ 3e6 0\n"),
+        NULL};
+    bs[4] = bs[3];
+    for (int c = 0; c < 5; ++c) {
+        usrsub_state_layout l;
+        usrsub_bushing_state_layout(bs[c], &l);
+        /* every input and state its own value; case 3 in contact in x, z and ay */
+        double u[12] = {0.8, -0.4, 0.35, 0.004, -0.012, 0.02, 12, -7, 3, 0.4, -0.25, 0.6};
+        if (c == 3)
+            u[0] = 0.9, u[2] = 0.45, u[4] = 0.017;
+        if (c == 4)
+            u[9] = 3.0, u[10] = -2.0, u[11] = 1.5;
+        double x[USRSUB_MAX_STATES];
+        for (int i = 0; i < l.n; ++i)
+            x[i] = 0.01 * (i + 1) * (i % 2 ? -1.0 : 1.0);
+        const double worst = partials_error(bs[c], c >= 3 ? m : NULL, u, x);
+        printf("  %-24s %2d states: worst partial off by %.2g of its column\n", names[c], l.n, worst);
+        assert_true(worst < 1e-6);
+    }
+    for (int c = 0; c < 4; ++c)
+        usrsub_bushing_free(bs[c]);
+    usrsub_mount_limits_free(m);
+}
+
+/* ---- friction on a turning body ----------------------------------------------------- */
+
+/* A body of inertia 1000 kg mm^2 turning about x, pressed along z by a
+ * 1000 N/mm spring compressed 2 mm (N = 2000 N), with torque T about x: its
+ * angular velocity after t seconds of RK4, and the bristle deflection. */
+typedef struct spin {
+    const usrsub_bushing *b;
+    const usrsub_mount_limits *m;
+    usrsub_state_layout l;
+    double torque, press;
+} spin;
+
+static void spin_rates(const spin *s, const double y[5], double dy[5])
+{
+    /* y = (z0, z1, z2, angle, w) */
+    double u[12] = {0, 0, -s->press, y[3], 0, 0, 0, 0, 0, y[4], 0, 0}, out[6];
+    eval(s->b, s->m, &s->l, u, y, dy, out, NULL);
+    dy[3] = y[4];
+    dy[4] = (s->torque + out[3]) * 1e3 / 1000.0; /* N mm -> kg mm^2/s^2, over the inertia */
+}
+
+/* RK4 at step h: the bristles stiffen as the slip rate grows (their rate is
+ * r_B |w| sigma0 / g), so fast slips want short runs and steps */
+static void spin_run(const spin *s, double t, double h, double y[5])
+{
+    for (double time = 0.0; time < t; time += h) {
+        double k1[5], k2[5], k3[5], k4[5], tmp[5];
+        spin_rates(s, y, k1);
+        for (int i = 0; i < 5; ++i) tmp[i] = y[i] + 0.5 * h * k1[i];
+        spin_rates(s, tmp, k2);
+        for (int i = 0; i < 5; ++i) tmp[i] = y[i] + 0.5 * h * k2[i];
+        spin_rates(s, tmp, k3);
+        for (int i = 0; i < 5; ++i) tmp[i] = y[i] + h * k3[i];
+        spin_rates(s, tmp, k4);
+        for (int i = 0; i < 5; ++i)
+            y[i] += h / 6.0 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+    }
+}
+
+static const char spin_body[] =
+    "[GLOBAL]\nCOUPLING = 'UNCOUPLED'\n[DIRECTIONS]\n(ACTIVITY)\n"
+    "{ formulation FX FY FZ TX TY TZ }\n'CONSTANT_STIFFNESS' 0 0 1 0 0 0\n"
+    "[CONSTANT_STIFFNESS_FZ]\nK = 1000\n"
+    "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.5\nMU_DYNAMIC = 0.3\nEFFECT = 'STICTION'\n"
+    "TRANSITION_VELOCITY = 5\nBRISTLE_STIFFNESS = 100\nBRISTLE_DAMPING = 0.5\n"
+    "SLIP_DAMPING = 0\nBALL_RADIUS = 10\nPRELOAD_TORQUE = %g\n";
+
+static void friction_sticks_slips_and_floors(void **state)
+{
+    (void)state;
+    char body[2048];
+    snprintf(body, sizeof body, spin_body, 0.0);
+    usrsub_bushing *b = bushing("spin.gbs", body);
+    spin s = {b, NULL, {0}, 0.0, 2.0};
+    usrsub_bushing_state_layout(b, &s.l);
+    assert_int_equal(s.l.n, 3);
+    const double N = 2000.0, rB = 10.0, breakaway = 0.5 * N * rB; /* 10 000 N mm */
+
+    /* below the breakaway torque: the body stops and the bristles hold it */
+    s.torque = 0.8 * breakaway;
+    double y[5] = {0, 0, 0, 0, 0};
+    spin_run(&s, 0.2, 1e-5, y);
+    const double z_expected = s.torque / (100.0 * rB * N);
+    printf("  stick at 0.8 breakaway: slip rate %.3g rad/s, bristles %.6g mm (expected %.6g)\n",
+           y[4], y[0], z_expected);
+    assert_true(fabs(y[4]) < 1e-6);
+    assert_close(y[0], z_expected, 1e-6, 0);
+
+    /* above it: it slides, at mu_d once fast: the acceleration is (T - mu_d N r_B) / I */
+    s.torque = 1.5 * breakaway;
+    double z[5] = {0, 0, 0, 0, 0};
+    spin_run(&s, 0.005, 2e-6, z);
+    double rates[5];
+    spin_rates(&s, z, rates);
+    const double expected = (s.torque - 0.3 * N * rB) * 1e3 / 1000.0;
+    printf("  slip at 1.5 breakaway: w = %.4g rad/s, dw/dt %.6g (expected %.6g at mu_d)\n", z[4],
+           rates[4], expected);
+    assert_true(z[4] > 20.0); /* r_B w far above the transition velocity */
+    assert_close(rates[4], expected, 1e-6, 0);
+    usrsub_bushing_free(b);
+
+    /* no normal force: the preload torque's floor, (T_pre / mu_s) mu, so
+     * T_pre mu_d / mu_s in fast sliding */
+    snprintf(body, sizeof body, spin_body, 800.0);
+    b = bushing("spin_pre.gbs", body);
+    spin p = {b, NULL, {0}, 3000.0, 0.0};
+    usrsub_bushing_state_layout(b, &p.l);
+    double w[5] = {0, 0, 0, 0, 0};
+    spin_run(&p, 0.005, 2e-6, w);
+    spin_rates(&p, w, rates);
+    printf("  preload floor: sliding torque %.6g N mm (expected %.6g)\n", 3000.0 - rates[4],
+           800.0 * 0.3 / 0.5);
+    assert_close(3000.0 - rates[4], 800.0 * 0.3 / 0.5, 1e-6, 0);
+
+    /* a z limit in contact presses harder: the sliding torque grows with N */
+    usrsub_bushing_free(b);
+    snprintf(body, sizeof body, spin_body, 0.0);
+    b = bushing("spin_limit.gbs", body);
+    usrsub_mount_limits *m = limits("spin.gbi", "IMPACT_PARAMETERS_TRA_Z_NEG = 3000 1 0 0 1.5\n"
+                                                "IMPACT_PARAMETERS_TRA_Z_POS = 3000 1 0 0 1.5\n");
+    spin free_spin = {b, NULL, {0}, 0.0, 2.0}, limited = {b, m, {0}, 0.0, 2.0};
+    usrsub_bushing_state_layout(b, &free_spin.l);
+    usrsub_bushing_state_layout(b, &limited.l);
+    double torque[2];
+    for (int k = 0; k < 2; ++k) {
+        spin *sp = k ? &limited : &free_spin;
+        /* spinning fast with the bristles at their sliding deflection */
+        double yy[5] = {0.3 / 100.0, 0, 0, 0, 500.0}, dy[5];
+        spin_rates(sp, yy, dy);
+        torque[k] = -dy[4];
+    }
+    /* the limit adds 3000 N/mm * (2 - 1.5) mm to the 2000 N of the spring */
+    printf("  sliding torque %.6g N mm free, %.6g with the z limit in contact\n", torque[0],
+           torque[1]);
+    assert_close(torque[1] / torque[0], 3500.0 / 2000.0, 1e-9, 0);
+    usrsub_mount_limits_free(m);
+    usrsub_bushing_free(b);
+}
+
+/* ---- the mount ------------------------------------------------------------------------ */
+
+static const char mount_body[] =
+    "[GLOBAL]\nCOUPLING = 'UNCOUPLED'\n[DIRECTIONS]\n(ACTIVITY)\n"
+    "{ formulation FX FY FZ TX TY TZ }\n'CONSTANT_STIFFNESS' 1 1 1 1 1 1\n"
+    "'CONSTANT_DAMPING' 1 1 1 1 1 1\n"
+    "[CONSTANT_STIFFNESS_FX]\nK = 1000\n[CONSTANT_STIFFNESS_FY]\nK = 1000\n[CONSTANT_STIFFNESS_FZ]\nK = 800\n"
+    "[CONSTANT_STIFFNESS_TX]\nK = 4e5\n[CONSTANT_STIFFNESS_TY]\nK = 3e5\n[CONSTANT_STIFFNESS_TZ]\nK = 2e5\n"
+    "[CONSTANT_DAMPING_FX]\nC = 2\n[CONSTANT_DAMPING_FY]\nC = 2\n[CONSTANT_DAMPING_FZ]\nC = 2\n"
+    "[CONSTANT_DAMPING_TX]\nC = 20\n[CONSTANT_DAMPING_TY]\nC = 20\n[CONSTANT_DAMPING_TZ]\nC = 20\n"
+    "[MOUNT_STIFFNESS]\n{ direction K C }\nFX %g %g\nFY %g 0\n";
+
+static void a_mount_splits_the_deflection(void **state)
+{
+    (void)state;
+    char body[4096];
+    /* very stiff: the stateless force to 1e-6 (the undamped mount in y) */
+    snprintf(body, sizeof body, mount_body, 1e12, 1.0, 1e12);
+    usrsub_bushing *b = bushing("stiff_mount.gbs", body);
+    char plain[4096];
+    snprintf(plain, sizeof plain, "%.*s", (int)(strstr(mount_body, "[MOUNT") - mount_body), mount_body);
+    usrsub_bushing *p = bushing("no_mount.gbs", plain);
+    usrsub_state_layout l, lp;
+    usrsub_bushing_state_layout(b, &l);
+    usrsub_bushing_state_layout(p, &lp);
+    assert_int_equal(l.n, 1); /* the damped x mount; y follows without a state */
+    const double u[12] = {0.8, -0.4, 0.35, 0.004, -0.012, 0.02, 12, -7, 3, 0.4, -0.25, 0.6};
+    double y[6], y0[6], xdot[1];
+    eval(p, NULL, &lp, u, NULL, NULL, y0, NULL);
+    /* the damped mount where its fast state has settled: K s = -F */
+    double x[1] = {-y0[0] / 1e12};
+    eval(b, NULL, &l, u, x, xdot, y, NULL);
+    printf("  mounts of 1e12 N/mm: force off the stateless one by %.2g (x) and %.2g (y)"
+           " relative\n", fabs(y[0] / y0[0] - 1), fabs(y[1] / y0[1] - 1));
+    for (int i = 0; i < 6; ++i)
+        assert_close(y[i], y0[i], 1e-6, 1e-9);
+    usrsub_bushing_free(b);
+
+    /* a static load: mount 2000 N/mm in series with the bushing's 1000 N/mm: a
+     * deflection of 3 mm puts 1 mm in the mount and 2 in the bushing */
+    snprintf(body, sizeof body, mount_body, 2000.0, 50.0, 2000.0);
+    b = bushing("soft_mount.gbs", body);
+    usrsub_bushing_state_layout(b, &l);
+    const double still[12] = {3.0, 3.0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    /* the damped x mount relaxes to rest (time constant (2 + 50) / 3000 s) */
+    double s = 0.0;
+    for (int k = 0; k < 200000; ++k) {
+        eval(b, NULL, &l, still, &s, xdot, y, NULL);
+        s += 1e-5 * xdot[0];
+    }
+    eval(b, NULL, &l, still, &s, xdot, y, NULL);
+    printf("  3 mm across mount (2000 N/mm) and bushing (1000): x mount %.9f mm, force %.6g N;"
+           " y (no damping) force %.6g N\n", s, y[0], y[1]);
+    assert_close(s, 1.0, 1e-9, 0);
+    assert_close(y[0], -2000.0, 1e-9, 0);
+    assert_close(y[1], -2000.0, 1e-12, 0); /* the algebraic form: at once */
+    usrsub_bushing_free(b);
+    usrsub_bushing_free(p);
+}
+
+/* ---- the rubber filter ---------------------------------------------------------------- */
+
+static void the_rubber_filter_is_a_high_pass(void **state)
+{
+    (void)state;
+    usrsub_bushing *b = base_bushing("filter.gbs", 1, "");
+    usrsub_state_layout l;
+    usrsub_bushing_state_layout(b, &l);
+    assert_int_equal(l.n, 2); /* FZ (R = 30) and TZ (R = max(5, RMIN 12)) */
+    assert_int_equal(l.rubber[0], 2);
+    const double R = 30.0, w = 40.0, A = 0.2, h = 1e-5;
+    double x[2] = {0, 0}, xdot[2], y[6], peak = 0.0, peak_time = 0.0;
+    const double period = 2 * M_PI / w;
+    for (double t = 0.0; t < 20 * period; t += h) {
+        /* RK2 on the filter state, driven by X = A sin(w t) along z */
+        double u[12] = {0, 0, A * sin(w * t), 0, 0, 0, 0, 0, A * w * cos(w * t), 0, 0, 0};
+        eval(b, NULL, &l, u, x, xdot, y, NULL);
+        double mid[2] = {x[0] + 0.5 * h * xdot[0], x[1] + 0.5 * h * xdot[1]};
+        u[2] = A * sin(w * (t + 0.5 * h)), u[8] = A * w * cos(w * (t + 0.5 * h));
+        eval(b, NULL, &l, u, mid, xdot, y, NULL);
+        x[0] += h * xdot[0], x[1] += h * xdot[1];
+        if (t > 19 * period && x[0] > peak)
+            peak = x[0], peak_time = t + h;
+    }
+    const double gain = w / sqrt(R * R + w * w), lead = atan(R / w);
+    /* X peaks at w t = pi/2 (mod 2 pi); x peaks lead earlier */
+    double phase = fmod(M_PI / 2 - w * peak_time, 2 * M_PI);
+    if (phase < -M_PI)
+        phase += 2 * M_PI;
+    printf("  rubber filter at w = %g, R = %g: gain %.6f (expected %.6f), lead %.5f rad"
+           " (expected %.5f)\n", w, R, peak / A, gain, phase, lead);
+    assert_close(peak / A, gain, 1e-4, 0);
+    assert_close(phase, lead, 0, 2e-3);
+    usrsub_bushing_free(b);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(without_states_it_is_the_fiesub_force),
+        cmocka_unit_test(every_partial_against_differences),
+        cmocka_unit_test(friction_sticks_slips_and_floors),
+        cmocka_unit_test(a_mount_splits_the_deflection),
+        cmocka_unit_test(the_rubber_filter_is_a_high_pass),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

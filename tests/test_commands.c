@@ -1,0 +1,220 @@
+/*
+ * What the commands say, run in-process with stdout and stderr captured:
+ * a bad option value named with the value (run, bench, rig, check); a
+ * missing library with MS_USERDLL_DIR (and that it is not set); run's
+ * default integrator; output folders created; an output path that cannot be
+ * created refused at once with the reason, before any long work.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "cmd/commands.h"
+#include "test_support.h"
+
+#define MODEL EXAMPLES_DIR "/damped_oscillator.xml"
+
+typedef int command_fn(int argc, char **argv);
+
+typedef struct captured {
+    int status;
+    char out[16384], err[16384];
+} captured;
+
+static void read_back(const char *path, char *text, size_t size)
+{
+    FILE *f = fopen(path, "r");
+    size_t n = f != NULL ? fread(text, 1, size - 1, f) : 0;
+    text[n] = '\0';
+    if (f != NULL)
+        fclose(f);
+}
+
+/* Runs command with args (argv[0] first, NULL-terminated), its stdout and
+ * stderr going to files of the temporary folder (dup2), then read back. */
+static void run_command(command_fn *command, const char *const *args, captured *c)
+{
+    char out_path[512], err_path[512];
+    snprintf(out_path, sizeof out_path, "%s/captured_stdout.txt", test_temp_dir());
+    snprintf(err_path, sizeof err_path, "%s/captured_stderr.txt", test_temp_dir());
+    char *argv[32];
+    int argc = 0;
+    for (; args[argc] != NULL && argc < 31; ++argc)
+        argv[argc] = (char *)args[argc];
+    argv[argc] = NULL;
+    fflush(stdout);
+    fflush(stderr);
+    const int out_fd = open(out_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err_fd = open(err_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int saved_out = dup(STDOUT_FILENO), saved_err = dup(STDERR_FILENO);
+    assert_true(out_fd >= 0 && err_fd >= 0 && saved_out >= 0 && saved_err >= 0);
+    dup2(out_fd, STDOUT_FILENO);
+    dup2(err_fd, STDERR_FILENO);
+    close(out_fd);
+    close(err_fd);
+    c->status = command(argc, argv);
+    fflush(stdout);
+    fflush(stderr);
+    dup2(saved_out, STDOUT_FILENO);
+    dup2(saved_err, STDERR_FILENO);
+    close(saved_out);
+    close(saved_err);
+    read_back(out_path, c->out, sizeof c->out);
+    read_back(err_path, c->err, sizeof c->err);
+}
+
+static const char *temp_path(const char *name)
+{
+    static char paths[8][512];
+    static int next;
+    char *path = paths[next++ % 8];
+    snprintf(path, 512, "%s/%s", test_temp_dir(), name);
+    return path;
+}
+
+/* ---- option values ---------------------------------------------------------------------- */
+
+static void bad_option_values_are_named(void **state)
+{
+    (void)state;
+    captured c;
+    run_command(hx_command_run, (const char *const[]){"run", MODEL, "--end", "soon", NULL}, &c);
+    assert_int_equal(c.status, 2);
+    assert_contains(c.err, "usrsub-harness run", "--end 'soon'", "not a number");
+
+    run_command(hx_command_bench, (const char *const[]){"bench", MODEL, "--repeats", "0", NULL}, &c);
+    assert_int_equal(c.status, 2);
+    assert_contains(c.err, "usrsub-harness bench", "--repeats '0'", "whole number of at least 1");
+
+    run_command(hx_command_rig, (const char *const[]){"rig", MODEL, "--element", "1", "--end", "1",
+                                                     "--step", "-0.5", "--circle", "1,1", NULL}, &c);
+    assert_int_equal(c.status, 2);
+    assert_contains(c.err, "usrsub-harness rig", "--step -0.5", "must be above zero");
+
+    run_command(hx_command_check, (const char *const[]){"check", MODEL, "--timeout", "never", NULL}, &c);
+    assert_int_equal(c.status, 2);
+    assert_contains(c.err, "usrsub-harness check", "--timeout 'never'", "not a number");
+}
+
+/* ---- the library's folder ------------------------------------------------------------------- */
+
+static void a_missing_library_mentions_ms_userdll_dir(void **state)
+{
+    (void)state;
+    const char *model = test_write_file("no_library.xml",
+        "<MotionSolve><Model>\n"
+        "<Body_Ground id=\"1\"/>\n"
+        "<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+        "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\" inertia_zz=\"1\"/>\n"
+        "<Reference_Marker id=\"20\" body_id=\"2\"/>\n"
+        "<Force_Field id=\"5\" i_marker_id=\"20\" j_marker_id=\"10\" usrsub_param_string=\"USER(1)\""
+        " usrsub_dll_name=\"libnothere.so\"/>\n"
+        "</Model></MotionSolve>\n");
+    const char *was = getenv("MS_USERDLL_DIR");
+    char *saved = was != NULL ? strdup(was) : NULL;
+    captured c;
+    unsetenv("MS_USERDLL_DIR");
+    run_command(hx_command_check, (const char *const[]){"check", model, NULL}, &c);
+    assert_int_equal(c.status, 1);
+    assert_contains(c.err, "libnothere.so", "not found", test_temp_dir(), "MS_USERDLL_DIR is not set");
+
+    setenv("MS_USERDLL_DIR", "/opt/nowhere", 1);
+    run_command(hx_command_check, (const char *const[]){"check", model, NULL}, &c);
+    assert_int_equal(c.status, 1);
+    assert_contains(c.err, "libnothere.so", "not found", "MS_USERDLL_DIR", "/opt/nowhere");
+    assert_null(strstr(c.err, "not set"));
+
+    if (saved != NULL)
+        setenv("MS_USERDLL_DIR", saved, 1);
+    else
+        unsetenv("MS_USERDLL_DIR");
+    free(saved);
+}
+
+/* ---- run ----------------------------------------------------------------------------------- */
+
+static void run_defaults_to_dopri5(void **state)
+{
+    (void)state;
+    captured c;
+    run_command(hx_command_run, (const char *const[]){"run", MODEL, "--end", "0.1", NULL}, &c);
+    assert_int_equal(c.status, 0);
+    assert_contains(c.out, "with dopri5", "t = 0.1");
+}
+
+static void run_creates_the_output_folders(void **state)
+{
+    (void)state;
+    const char *csv = temp_path("outputs/sub/x.csv");
+    struct stat st;
+    assert_int_not_equal(stat(temp_path("outputs"), &st), 0);
+    captured c;
+    run_command(hx_command_run, (const char *const[]){"run", MODEL, "--end", "0.01", "--out", csv, NULL},
+                &c);
+    assert_int_equal(c.status, 0);
+    assert_int_equal(stat(temp_path("outputs/sub"), &st), 0);
+    assert_true(S_ISDIR(st.st_mode));
+    assert_int_equal(stat(csv, &st), 0);
+    assert_true(st.st_size > 0);
+}
+
+static void an_output_that_cannot_be_created_fails_at_once(void **state)
+{
+    (void)state;
+    captured c;
+    /* under a regular file */
+    const char *file = test_write_file("a_file", "not a folder\n");
+    char under_file[600];
+    snprintf(under_file, sizeof under_file, "%s/sub/x.csv", file);
+    run_command(hx_command_run, (const char *const[]){"run", MODEL, "--end", "1", "--out", under_file,
+                                                     NULL}, &c);
+    assert_int_equal(c.status, 1);
+    assert_contains(c.err, "usrsub-harness run", "cannot create the folder", file);
+    assert_null(strstr(c.out, "run:")); /* nothing integrated */
+
+    /* a folder the system refuses: the reason is strerror's */
+    run_command(hx_command_run, (const char *const[]){"run", MODEL, "--end", "1", "--out",
+                                                     "/proc/nonexistent/x.csv", NULL}, &c);
+    assert_int_equal(c.status, 1);
+    assert_contains(c.err, "/proc/nonexistent", strerror(ENOENT));
+    assert_null(strstr(c.out, "run:"));
+
+    run_command(hx_command_rig, (const char *const[]){"rig", EXAMPLES_DIR "/bushing_coupling.xml",
+                                                     "--element", "1", "--circle", "5,6.2832", "--end",
+                                                     "1", "--step", "0.005", "--out",
+                                                     "/proc/nonexistent/rig.csv", NULL}, &c);
+    assert_int_equal(c.status, 1);
+    assert_contains(c.err, "usrsub-harness rig", "/proc/nonexistent", strerror(ENOENT));
+    assert_null(strstr(c.out, "rig:"));
+}
+
+static void bench_refuses_its_output_before_the_sweep(void **state)
+{
+    (void)state;
+    captured c;
+    run_command(hx_command_bench, (const char *const[]){"bench", MODEL, "--work-precision", "--out",
+                                                       "/proc/nonexistent/wp", NULL}, &c);
+    assert_int_equal(c.status, 1);
+    assert_contains(c.err, "usrsub-harness bench", "/proc/nonexistent", strerror(ENOENT));
+    /* refused before any work: the costs (measured before the sweep) and the sweep's
+     * table were not printed */
+    assert_null(strstr(c.out, "cost per call"));
+    assert_null(strstr(c.out, "work-precision"));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(bad_option_values_are_named),
+        cmocka_unit_test(a_missing_library_mentions_ms_userdll_dir),
+        cmocka_unit_test(run_defaults_to_dopri5),
+        cmocka_unit_test(run_creates_the_output_folders),
+        cmocka_unit_test(an_output_that_cannot_be_created_fails_at_once),
+        cmocka_unit_test(bench_refuses_its_output_before_the_sweep),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

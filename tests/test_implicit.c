@@ -1,0 +1,488 @@
+/*
+ * The implicit integrator (BDF through CVODE) and its Newton matrix from the
+ * elements' own partials: the matrix against differences of the whole
+ * right-hand side, entry by entry; BDF's order of convergence on a closed
+ * form; a deliberately wrong partial that must cost Newton iterations (or
+ * steps) but not change the trajectory; a GFOSUB twin that disagrees with its
+ * element being set aside; BDF's agreement with DOPRI5 on every bundled model
+ * (couplers held by the projection); run with bdf on every model, and its
+ * advice on stiff models.
+ */
+#include <dirent.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cmd/commands.h"
+#include "sim/newton_matrix.h"
+#include "sim_support.h"
+#include "test_support.h"
+#include "tools/bench/linear_reference.h"
+
+typedef struct model {
+    hx_session session;
+    hx_dynamics d;
+} model;
+
+static void open_model(model *m, const char *path)
+{
+    hx_message msg;
+    memset(m, 0, sizeof *m);
+    if (hx_session_open(&m->session, path, stderr, &msg) != 0 ||
+        hx_dynamics_init(&m->d, &m->session, &msg) != 0)
+        fail_msg("%s: %s", path, msg.text);
+}
+
+static void close_model(model *m)
+{
+    hx_dynamics_free(&m->d);
+    hx_session_close(&m->session);
+}
+
+/* The model from its initial state to t_end; y receives the end state.
+ * atol = rtol * atol_ratio. */
+static hx_simulation_result simulate_with(model *m, hx_method method, hx_jacobian jacobian,
+                                          double rtol, double atol_ratio, double t_end, double *y)
+{
+    hx_simulation_options so = {0};
+    hx_integrator_defaults(&so.integration);
+    so.integration.method = method;
+    so.integration.jacobian = jacobian;
+    so.integration.rtol = rtol;
+    so.integration.atol = rtol * atol_ratio;
+    so.integration.t_end = t_end;
+    so.integration.output_interval = t_end;
+    so.skip_energy = 1;
+    hx_simulation_result r;
+    hx_simulate(&m->d, &so, y, &r);
+    return r;
+}
+
+static hx_simulation_result simulate(model *m, hx_method method, hx_jacobian jacobian,
+                                     double rtol, double t_end, double *y)
+{
+    return simulate_with(m, method, jacobian, rtol, 1e-3, t_end, y);
+}
+
+/* Largest difference of positions and velocities, relative to the largest
+ * of each kind (translations, quaternions, velocities, angular velocities and
+ * joint coordinates apart): excursions from y0, and velocities at the end or
+ * at the start (a motion that has died away is measured against its start). */
+static double state_difference(const hx_dynamics *d, const double *a, const double *b,
+                               const double *y0)
+{
+    double worst = 0.0;
+    for (int pass = 0; pass < 2; ++pass)
+        for (int body = 0; body < d->m->nbodies; ++body) {
+            const hx_body_dof *dof = &d->dof[body];
+            if (dof->kind == HX_DOF_GROUND)
+                continue;
+            const int free = dof->kind == HX_DOF_FREE;
+            const int groups[4][2] = {{dof->q, free ? 3 : 1},
+                                      {dof->q + 3, free ? 4 : 0},
+                                      {d->nq + dof->u, free ? 3 : 1},
+                                      {d->nq + dof->u + 3, free ? 3 : 0}};
+            for (int g = 0; g < 4; ++g) {
+                double size = 0.0, diff = 0.0;
+                for (int i = groups[g][0]; i < groups[g][0] + groups[g][1]; ++i) {
+                    const double base = g == 0 ? y0[i] : 0.0;
+                    size = fmax(size, fmax(fabs(a[i] - base), fabs(b[i] - base)));
+                    if (g >= 2)
+                        size = fmax(size, fabs(y0[i]));
+                    diff = fmax(diff, fabs(a[i] - b[i]));
+                }
+                if (size > 1e-9)
+                    worst = fmax(worst, diff / size);
+            }
+        }
+    return worst;
+}
+
+/* ---- the Newton matrix against differences of the whole right-hand side ------------ */
+
+static void compare_jacobians(model *m, double t, const double *y, const char *what,
+                              hx_partials_source expected)
+{
+    hx_dynamics *d = &m->d;
+    const int n = d->n;
+    hx_newton_matrix nm;
+    hx_message msg;
+    assert_int_equal(hx_newton_matrix_init(&nm, d, &msg), 0);
+    double *Ja = calloc((size_t)(n * n), sizeof(double));
+    double *Jf = calloc((size_t)(n * n), sizeof(double));
+    double *yp = malloc(sizeof(double) * (size_t)n), *fp = malloc(sizeof(double) * (size_t)n);
+    double *fm = malloc(sizeof(double) * (size_t)n);
+    assert_int_equal(hx_newton_matrix_build(&nm, t, y, Ja), 0);
+    for (int k = 0; k < nm.nf; ++k)
+        assert_int_equal(nm.source[k], expected);
+    for (int c = 0; c < n; ++c) {
+        const double h = 1e-6 * fmax(1.0, fabs(y[c]));
+        memcpy(yp, y, sizeof(double) * (size_t)n);
+        yp[c] = y[c] + h;
+        assert_int_equal(hx_dynamics_rhs(d, t, yp, fp), 0);
+        yp[c] = y[c] - h;
+        assert_int_equal(hx_dynamics_rhs(d, t, yp, fm), 0);
+        for (int r = 0; r < n; ++r)
+            Jf[r + n * c] = (fp[r] - fm[r]) / (2.0 * h);
+    }
+    /* entry by entry, against the size of its row (rows mix units) */
+    double worst = 0.0;
+    int worst_r = 0, worst_c = 0;
+    for (int r = 0; r < n; ++r) {
+        double row = 0.0;
+        for (int c = 0; c < n; ++c)
+            row = fmax(row, fabs(Jf[r + n * c]));
+        for (int c = 0; c < n; ++c) {
+            const double e = row > 0.0 ? fabs(Ja[r + n * c] - Jf[r + n * c]) / row : 0.0;
+            if (e > worst)
+                worst = e, worst_r = r, worst_c = c;
+        }
+    }
+    printf("%s: analytic Newton matrix (%d x %d) against differences of the whole right-hand"
+           " side: largest difference %.2g of its row (row %d, column %d: %.10g against %.10g)\n",
+           what, n, n, worst, worst_r, worst_c, Ja[worst_r + n * worst_c], Jf[worst_r + n * worst_c]);
+    assert_true(worst < 1e-6);
+    free(Ja), free(Jf), free(yp), free(fp), free(fm);
+    hx_newton_matrix_free(&nm);
+}
+
+static void newton_matrix_equals_differences_on_the_powertrain(void **state)
+{
+    (void)state;
+    model m;
+    open_model(&m, EXAMPLES_DIR "/powertrain.xml");
+    double y[64];
+    /* rolled by the engine torque, mounts in their limits */
+    hx_simulation_result r = simulate(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-8, 0.6, y);
+    assert_int_equal(r.status, HX_INTEGRATION_OK);
+    compare_jacobians(&m, 0.6, y, "powertrain.xml at t = 0.6 s", HX_PARTIALS_TWIN);
+    close_model(&m);
+}
+
+/* ---- order of convergence on a closed form ------------------------------------------ */
+
+/* BDF of highest order q on damped_oscillator.xml to t = 0.02 s (a period)
+ * at one tolerance: its steps and its error against the closed form. */
+static double bdf_error(int order, double rtol, long *steps, int *last_order)
+{
+    model m;
+    open_model(&m, EXAMPLES_DIR "/damped_oscillator.xml");
+    hx_linear_reference ref;
+    hx_message msg;
+    if (hx_linear_reference_build(&m.d, &ref, &msg) != 0)
+        fail_msg("%s", msg.text);
+    const double t_end = 0.02;
+    hx_simulation_options so = {0};
+    hx_integrator_defaults(&so.integration);
+    so.integration.method = HX_METHOD_BDF;
+    so.integration.max_order = order;
+    so.integration.rtol = rtol;
+    so.integration.atol = rtol * 1e-3;
+    so.integration.t_end = t_end;
+    so.integration.output_interval = t_end;
+    so.skip_energy = 1;
+    double y[64], yref[64];
+    hx_simulation_result r;
+    assert_int_equal(hx_simulate(&m.d, &so, y, &r), 0);
+    *steps = r.stats.steps;
+    *last_order = r.stats.last_order;
+    memcpy(yref, ref.y0, sizeof(double) * (size_t)m.d.n);
+    hx_linear_reference_state(&ref, t_end, yref);
+    const double e = state_difference(&m.d, y, yref, ref.y0);
+    hx_linear_reference_free(&ref);
+    close_model(&m);
+    return e;
+}
+
+/* CVODE holds no order fixed (it starts at order 1 and takes, up to q, the
+ * order that allows the longest step) and fails its error test when its
+ * step may not shrink, so the order is measured as the adaptive method
+ * converges: error against steps over five tolerances, the slope of their
+ * least-squares line in log-log is the order (an error ratio of 2^q per
+ * halving of the mean step). */
+static void bdf_converges_at_its_order(void **state)
+{
+    (void)state;
+    for (int q = 1; q <= 5; ++q) {
+        double sx = 0, sy = 0, sxx = 0, sxy = 0;
+        const int points = 5;
+        printf("BDF up to order %d:", q);
+        for (int k = 0; k < points; ++k) {
+            const double rtol = pow(10.0, -(q < 3 ? 2 * q : q + 2) - k);
+            long steps;
+            int last;
+            const double e = bdf_error(q, rtol, &steps, &last);
+            assert_int_equal(last, q);
+            printf(" %ld steps: %.3g;", steps, e);
+            const double x = log((double)steps), yv = log(e);
+            sx += x, sy += yv, sxx += x * x, sxy += x * yv;
+        }
+        const double slope = -(points * sxy - sx * sy) / (points * sxx - sx * sx);
+        printf(" order %.2f (error ratio per halving %.3g; 2^q = %d)\n", slope, pow(2.0, slope),
+               1 << q);
+        assert_true(fabs(slope - q) < 0.35 + 0.1 * q);
+    }
+}
+
+/* ---- a wrong partial costs iterations, not accuracy ----------------------------------- */
+
+/* A 1 kg body on the test library's FIESUB: soft, damped translations, and
+ * rotations on a stiff overdamped spring (|lambda| near 2e4 1/s), reported
+ * partials scaled by `scale`. */
+static const char *scaled_field_model(const char *name, const char *element)
+{
+    static char xml[4096];
+    snprintf(xml, sizeof xml,
+             "<MotionSolve><Model>\n"
+             "<Param_Unit force_unit=\"NEWTON\" mass_unit=\"KILOGRAM\" length_unit=\"MILLIMETER\""
+             " time_unit=\"SECOND\"/>\n"
+             "<Body_Ground id=\"1\"/><Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+             "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"100\" inertia_yy=\"100\""
+             " inertia_zz=\"100\" v_ic_x=\"100\" v_ic_y=\"-40\" w_ic_z=\"2\" w_ic_x=\"1\"/>\n"
+             "<Reference_Marker id=\"20\" body_id=\"2\"/>\n%s</Model></MotionSolve>\n", element);
+    return test_write_file(name, xml);
+}
+
+static hx_simulation_result bdf_on(const char *path, double rtol, double t_end, double *y,
+                                   hx_partials_source *source, char *description)
+{
+    model m;
+    open_model(&m, path);
+    hx_simulation_result r = simulate(&m, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, rtol, t_end, y);
+    if (description != NULL)
+        snprintf(description, 1024, "%s", r.newton_matrix);
+    if (source != NULL) { /* where the partials came from, after the run */
+        hx_newton_matrix nm;
+        hx_message msg;
+        assert_int_equal(hx_newton_matrix_init(&nm, &m.d, &msg), 0);
+        double J[15 * 15];
+        assert_int_equal(hx_newton_matrix_build(&nm, t_end, y, J), 0);
+        *source = nm.source[0];
+        hx_newton_matrix_free(&nm);
+    }
+    close_model(&m);
+    return r;
+}
+
+static void a_wrong_partial_costs_newton_iterations_not_accuracy(void **state)
+{
+    (void)state;
+    static const double scales[] = {1.0, 3.0, 0.3};
+    double y_right[64], y[64];
+    hx_simulation_result right = {0};
+    for (int k = 0; k < 3; ++k) {
+        char element[512], name[64];
+        snprintf(element, sizeof element,
+                 "<Force_Field id=\"1\" i_marker_id=\"20\" j_marker_id=\"10\""
+                 " usrsub_param_string=\"USER(100, 0.2, 1e6, 2000, %g)\" usrsub_dll_name=\""
+                 SCALED_FIELD_LIBRARY "\"/>\n", scales[k]);
+        snprintf(name, sizeof name, "scaled_field_%d.xml", k);
+        const char *path = scaled_field_model(name, element);
+        hx_simulation_result r = bdf_on(path, 1e-8, 0.2, k == 0 ? y_right : y, NULL, NULL);
+        const hx_integrator_stats *st = &r.stats;
+        printf("partials scaled by %g: %s, %ld steps, %.2f Newton iterations per step, %ld"
+               " convergence failures, %ld Jacobians\n", scales[k], hx_status_text(r.status),
+               st->steps, (double)st->newton_iterations / (double)st->steps,
+               st->convergence_failures, st->jacobians);
+        if (k == 0) {
+            assert_int_equal(r.status, HX_INTEGRATION_OK);
+            right = r;
+            continue;
+        }
+        /* the wrong matrix costs: more iterations a step, or failed iterations
+         * and more steps */
+        const double per_step = (double)st->newton_iterations / (double)st->steps;
+        const double right_per_step = (double)right.stats.newton_iterations /
+                                      (double)right.stats.steps;
+        assert_true(r.status != HX_INTEGRATION_OK || per_step > 1.25 * right_per_step ||
+                    st->convergence_failures > right.stats.convergence_failures + 10);
+        /* and where it converges, it converges to the same trajectory */
+        if (r.status == HX_INTEGRATION_OK) {
+            model m;
+            open_model(&m, path);
+            double y0[64];
+            assert_int_equal(hx_dynamics_initial_state(&m.d, y0), 0);
+            const double diff = state_difference(&m.d, y, y_right, y0);
+            printf("  end state against the exact partials' run: %.2g\n", diff);
+            assert_true(diff < 1e-6);
+            close_model(&m);
+        }
+    }
+}
+
+/* A GFOSUB element whose FIESUB twin agrees is linearized by the twin; one
+ * whose twin does not is set aside for differences of the element alone, and
+ * BDF still runs right. */
+static void a_twin_that_disagrees_is_set_aside(void **state)
+{
+    (void)state;
+    double y_twin[64], y_alone[64];
+    static const double scales[2] = {1.0, 2.0};
+    hx_partials_source source[2];
+    char description[2][1024], first[512] = "";
+    for (int k = 0; k < 2; ++k) {
+        char element[512], name[64];
+        snprintf(element, sizeof element,
+                 "<Force_Vector_TwoBody id=\"1\" type=\"ForceAndTorque\" i_marker_id=\"20\""
+                 " j_floating_marker_id=\"10\" ref_marker_id=\"10\" usrsub_param_string=\"USER(20,"
+                 " 10, 100, 0.2, 1e6, 2000, %g)\" usrsub_fnc_name=\"SCALED_SPRING\""
+                 " usrsub_dll_name=\"" SCALED_FIELD_LIBRARY "\"/>\n", scales[k]);
+        snprintf(name, sizeof name, "scaled_spring_%d.xml", k);
+        const char *path = scaled_field_model(name, element);
+        if (k == 0)
+            snprintf(first, sizeof first, "%s", path);
+        hx_simulation_result r = bdf_on(path, 1e-8, 0.2, k == 0 ? y_twin : y_alone, &source[k],
+                                        description[k]);
+        assert_int_equal(r.status, HX_INTEGRATION_OK);
+        printf("twin scaled by %g: %s\n", scales[k], description[k]);
+    }
+    assert_int_equal(source[0], HX_PARTIALS_TWIN);
+    assert_int_equal(source[1], HX_PARTIALS_DIFFERENCES);
+    assert_contains(description[1], "SCALED_SPRING_FIELD differs from it");
+    model m;
+    open_model(&m, first);
+    double y0[64];
+    assert_int_equal(hx_dynamics_initial_state(&m.d, y0), 0);
+    assert_true(state_difference(&m.d, y_twin, y_alone, y0) < 1e-6);
+    close_model(&m);
+}
+
+/* ---- BDF against DOPRI5 on every bundled model --------------------------------------- */
+
+static int is_model(const struct dirent *e)
+{
+    const size_t n = strlen(e->d_name);
+    return n > 4 && strcmp(e->d_name + n - 4, ".xml") == 0;
+}
+
+static void bdf_agrees_with_dopri5_on_every_bundled_model(void **state)
+{
+    (void)state;
+    struct dirent **names;
+    const int count = scandir(EXAMPLES_DIR, &names, is_model, alphasort);
+    assert_true(count > 10);
+    const double t_end = 0.05, rtol = 1e-12;
+    int compared = 0;
+    for (int k = 0; k < count; ++k) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/%s", EXAMPLES_DIR, names[k]->d_name);
+        hx_session session;
+        hx_dynamics d;
+        hx_message msg;
+        if (hx_session_open(&session, path, NULL, &msg) != 0)
+            fail_msg("%s: %s", names[k]->d_name, msg.text);
+        if (hx_dynamics_init(&d, &session, &msg) != 0 || d.nq + d.nu == 0) {
+            printf("%-28s no dynamics to integrate (rig or check only)\n", names[k]->d_name);
+            if (d.dof != NULL)
+                hx_dynamics_free(&d);
+            hx_session_close(&session);
+            free(names[k]);
+            continue;
+        }
+        hx_dynamics_free(&d);
+        hx_session_close(&session);
+        model m;
+        open_model(&m, path);
+        double y0[256], a[256], b[256];
+        assert_true(m.d.n <= 256);
+        assert_int_equal(hx_dynamics_initial_state(&m.d, y0), 0);
+        /* atol = rtol: 1e-12 mm, mm/s, rad (tighter drowns the stiff models' error
+         * estimates in rounding) */
+        hx_simulation_result ra =
+            simulate_with(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, rtol * 0.1, 1.0, t_end, a);
+        hx_simulation_result rb =
+            simulate_with(&m, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, rtol, 1.0, t_end, b);
+        const double diff = state_difference(&m.d, a, b, y0);
+        printf("%-28s BDF (%ld steps, %.3f s) against DOPRI5 (%ld steps) at t = %g: %.2g\n",
+               names[k]->d_name, rb.stats.steps, rb.seconds, ra.stats.steps, t_end, diff);
+        assert_int_equal(ra.status, HX_INTEGRATION_OK);
+        assert_int_equal(rb.status, HX_INTEGRATION_OK);
+        assert_true(diff < 1e-8);
+        /* couplers: CVODE's projection keeps phi = 0 as DOPRI5's does */
+        assert_true(rb.max_phi < 1e-12 && rb.max_phidot < 1e-10);
+        close_model(&m);
+        free(names[k]);
+        compared++;
+    }
+    free(names);
+    assert_true(compared > 10);
+}
+
+/* ---- run: bdf on every model, and advice that names the figures ----------------------- */
+
+/* "usrsub-harness run MODEL ARGS..." in-process, its standard output into text. */
+static int run_captured(const char *model_path, const char *const *args, char *text, size_t size)
+{
+    char *argv[32];
+    int argc = 0;
+    argv[argc++] = "run";
+    argv[argc++] = (char *)model_path;
+    for (const char *const *a = args; *a != NULL && argc < 31; ++a)
+        argv[argc++] = (char *)*a;
+    argv[argc] = NULL;
+    char path[600];
+    snprintf(path, sizeof path, "%s/run_output.txt", test_temp_dir());
+    fflush(stdout);
+    const int saved = dup(1), fd = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    assert_true(saved >= 0 && fd >= 0);
+    dup2(fd, 1);
+    const int status = hx_command_run(argc, argv);
+    fflush(stdout);
+    dup2(saved, 1);
+    close(fd);
+    close(saved);
+    FILE *f = fopen(path, "r");
+    const size_t n = f != NULL ? fread(text, 1, size - 1, f) : 0;
+    text[n] = '\0';
+    if (f != NULL)
+        fclose(f);
+    return status;
+}
+
+static void run_takes_bdf_on_every_model_and_says_when_it_is_stiff(void **state)
+{
+    (void)state;
+    static char text[16384];
+    struct dirent **names;
+    const int count = scandir(EXAMPLES_DIR, &names, is_model, alphasort);
+    const char *const short_run[] = {"--end", "0.01", "--integrator", "bdf", "--quiet", NULL};
+    for (int k = 0; k < count; ++k) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/%s", EXAMPLES_DIR, names[k]->d_name);
+        const int status = run_captured(path, short_run, text, sizeof text);
+        if (status != 0)
+            fail_msg("run --integrator bdf %s: exit %d\n%s", names[k]->d_name, status, text);
+        assert_contains(text, "finished with bdf", "Newton iterations");
+        free(names[k]);
+    }
+    free(names);
+    /* stiff for its run: an explicit method is told why bdf suits it better */
+    const char *const explicit_run[] = {"--end", "1.5", "--quiet", "--output-interval", "0.1", NULL};
+    assert_int_equal(run_captured(EXAMPLES_DIR "/stiff_powertrain.xml", explicit_run, text,
+                                  sizeof text), 0);
+    printf("%s", text);
+    assert_contains(text, "stiff for this run", "--integrator bdf", "holds dopri5 to steps below");
+    /* not stiff: bdf is told that an explicit method is likely cheaper */
+    const char *const bdf_run[] = {"--end", "1", "--integrator", "bdf", "--jacobian", "fd",
+                                   "--quiet", "--output-interval", "0.1", NULL};
+    assert_int_equal(run_captured(EXAMPLES_DIR "/powertrain.xml", bdf_run, text, sizeof text), 0);
+    printf("%s", text);
+    assert_contains(text, "not stiff for this run", "--integrator dopri5",
+                    "differences of the whole right-hand side");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(newton_matrix_equals_differences_on_the_powertrain),
+        cmocka_unit_test(bdf_converges_at_its_order),
+        cmocka_unit_test(a_wrong_partial_costs_newton_iterations_not_accuracy),
+        cmocka_unit_test(a_twin_that_disagrees_is_set_aside),
+        cmocka_unit_test(bdf_agrees_with_dopri5_on_every_bundled_model),
+        cmocka_unit_test(run_takes_bdf_on_every_model_and_says_when_it_is_stiff),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

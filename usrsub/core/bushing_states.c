@@ -1,0 +1,286 @@
+/*
+ * The bushing with its internal states (include/usrsub/core/bushing_states.h).
+ *
+ * Two layers. The law: the force on I, the bristle rates and the rubber
+ * filters' rates as functions of what the bushing sees (q, qdot), the
+ * bristles z and the filters x, with its Jacobian. The mounts: q = d - s,
+ * qdot = v - sdot, where sdot (damped mounts) and s (undamped ones) are the
+ * unknowns w of the series balance G(w) = K s + C sdot + F = 0, solved by
+ * Newton's method on the law's Jacobian; the partials with respect to the
+ * inputs p = (d, v, x) follow from the implicit function theorem,
+ * dw/dp = -(dG/dw)^-1 dG/dp.
+ */
+#include "usrsub/core/bushing_states.h"
+
+#include <math.h>
+#include <string.h>
+
+/* the law's columns (what it depends on) and rows (what it gives) */
+enum { COL_Q = 0, COL_QD = 6, COL_Z = 12, COL_X = 15, MAX_COLS = 21 };
+enum { ROW_F = 0, ROW_Z = 6, ROW_X = 9, MAX_ROWS = 15 };
+/* the inputs p = (d, v, x) of the partials */
+enum { P_D = 0, P_V = 6, P_X = 12, MAX_P = 12 + USRSUB_MAX_STATES };
+
+typedef struct law_value {
+    double F[6], zdot[3], xdot[6];
+    double J[MAX_ROWS * MAX_COLS]; /* [row + MAX_ROWS col] */
+} law_value;
+
+void usrsub_bushing_state_layout(const usrsub_bushing *b, usrsub_state_layout *l)
+{
+    memset(l, 0, sizeof *l);
+    l->friction = b->friction.active ? 3 : 0;
+    for (int k = 0; k < 6; ++k) {
+        if (b->dir[k].mount && b->dir[k].mount_c > 0.0)
+            l->mount[l->nmount++] = k;
+        else if (b->dir[k].mount)
+            l->follow[l->nfollow++] = k;
+        if (b->dir[k].rubber)
+            l->rubber[l->nrubber++] = k;
+    }
+    l->n = l->friction + l->nmount + l->nrubber;
+}
+
+static void law(const usrsub_bushing *b, const usrsub_mount_limits *limits,
+                const usrsub_state_layout *l, const double q[6], const double qd[6],
+                const double *z, const double *xr, law_value *out)
+{
+    double Aq[36], Av[36];
+    memset(out->J, 0, sizeof out->J);
+    usrsub_bushing_force(b, q, qd, out->F, Aq, Av);
+    if (limits != NULL)
+        usrsub_mount_limits_add(limits, q, qd, out->F, Aq, Av);
+    for (int j = 0; j < 6; ++j)
+        for (int i = 0; i < 6; ++i) {
+            out->J[ROW_F + i + MAX_ROWS * (COL_Q + j)] = Aq[i + 6 * j];
+            out->J[ROW_F + i + MAX_ROWS * (COL_QD + j)] = Av[i + 6 * j];
+        }
+    /* the rubber filters: the dynamic part of each direction's deformation */
+    for (int r = 0; r < l->nrubber; ++r) {
+        const int k = l->rubber[r];
+        const usrsub_bushing_direction *d = &b->dir[k];
+        const double H = d->disp_scale, V = d->force_scale;
+        out->xdot[r] = H * qd[k] - d->rubber_r * xr[r];
+        out->F[k] -= V * (d->rubber_k * xr[r] + d->rubber_c * out->xdot[r]);
+        out->J[ROW_F + k + MAX_ROWS * (COL_QD + k)] -= V * d->rubber_c * H;
+        out->J[ROW_F + k + MAX_ROWS * (COL_X + r)] = -V * (d->rubber_k - d->rubber_c * d->rubber_r);
+        out->J[ROW_X + r + MAX_ROWS * (COL_QD + k)] = H;
+        out->J[ROW_X + r + MAX_ROWS * (COL_X + r)] = -d->rubber_r;
+    }
+    if (l->friction == 0)
+        return;
+    /* friction: the translational force (bushing, rubber, limits) loads the
+     * ball; the rotational rates slip */
+    double tau[3];
+    usrsub_friction_partials p;
+    usrsub_friction_eval(&b->friction, out->F, z, qd + 3, tau, out->zdot, &p);
+    for (int c = 0; c < MAX_COLS; ++c)
+        for (int i = 0; i < 3; ++i) {
+            double t = 0.0;
+            for (int k = 0; k < 3; ++k)
+                t += p.dtau_dF[i + 3 * k] * out->J[ROW_F + k + MAX_ROWS * c];
+            out->J[ROW_F + 3 + i + MAX_ROWS * c] += t;
+        }
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) {
+            out->J[ROW_F + 3 + i + MAX_ROWS * (COL_Z + j)] += p.dtau_dz[i + 3 * j];
+            out->J[ROW_F + 3 + i + MAX_ROWS * (COL_QD + 3 + j)] += p.dtau_dw[i + 3 * j];
+            out->J[ROW_Z + i + MAX_ROWS * (COL_Z + j)] = p.dzdot_dz[i + 3 * j];
+            out->J[ROW_Z + i + MAX_ROWS * (COL_QD + 3 + j)] = p.dzdot_dw[i + 3 * j];
+        }
+    for (int i = 0; i < 3; ++i)
+        out->F[3 + i] += tau[i];
+}
+
+/* Solves A X = B in place (A n x n, B n x m, column-major, leading
+ * dimensions n); -1 when A is singular. */
+static int solve(int n, double *A, double *B, int m)
+{
+    for (int c = 0; c < n; ++c) {
+        int pivot = c;
+        for (int r = c + 1; r < n; ++r)
+            if (fabs(A[r + n * c]) > fabs(A[pivot + n * c]))
+                pivot = r;
+        if (!(fabs(A[pivot + n * c]) > 0.0))
+            return -1;
+        for (int j = 0; j < n; ++j) {
+            const double t = A[c + n * j];
+            A[c + n * j] = A[pivot + n * j], A[pivot + n * j] = t;
+        }
+        for (int j = 0; j < m; ++j) {
+            const double t = B[c + n * j];
+            B[c + n * j] = B[pivot + n * j], B[pivot + n * j] = t;
+        }
+        for (int r = c + 1; r < n; ++r) {
+            const double f = A[r + n * c] / A[c + n * c];
+            for (int j = c; j < n; ++j)
+                A[r + n * j] -= f * A[c + n * j];
+            for (int j = 0; j < m; ++j)
+                B[r + n * j] -= f * B[c + n * j];
+        }
+    }
+    for (int j = 0; j < m; ++j)
+        for (int r = n - 1; r >= 0; --r) {
+            double t = B[r + n * j];
+            for (int c = r + 1; c < n; ++c)
+                t -= A[r + n * c] * B[c + n * j];
+            B[r + n * j] = t / A[r + n * r];
+        }
+    return 0;
+}
+
+/* The mounts' unknowns: w[a] is sdot of damped mount a, w[nmount + b] is s of
+ * undamped mount b; dir[] their directions. */
+typedef struct mount_unknowns {
+    int n, dir[6];
+    int damped[6];
+} mount_unknowns;
+
+/* dG/dw of the series balance (nw x nw, column-major) at the law's Jacobian. */
+static void balance_jacobian(const usrsub_bushing *b, const mount_unknowns *m,
+                             const law_value *v, double *A)
+{
+    for (int j = 0; j < m->n; ++j)
+        for (int i = 0; i < m->n; ++i) {
+            const int ki = m->dir[i], kj = m->dir[j];
+            const usrsub_bushing_direction *d = &b->dir[ki];
+            /* sdot_j enters through qdot = v - sdot, s_j through q = d - s */
+            const double own = i != j ? 0.0 : m->damped[j] ? d->mount_c : d->mount_k;
+            const int col = (m->damped[j] ? COL_QD : COL_Q) + kj;
+            A[i + m->n * j] = own - v->J[ROW_F + ki + MAX_ROWS * col];
+        }
+}
+
+int usrsub_bushing_states_eval(const usrsub_bushing *b, const usrsub_mount_limits *limits,
+                               const usrsub_state_layout *l, const double u[12],
+                               const double *x, double *xdot, double y[6],
+                               usrsub_state_partials *partials, usrsub_message *msg)
+{
+    const double *z = x + 0, *sm = x + l->friction, *xr = x + l->friction + l->nmount;
+    mount_unknowns m = {0, {0}, {0}};
+    for (int a = 0; a < l->nmount; ++a)
+        m.dir[m.n] = l->mount[a], m.damped[m.n++] = 1;
+    for (int c = 0; c < l->nfollow; ++c)
+        m.dir[m.n] = l->follow[c], m.damped[m.n++] = 0;
+    double w[6] = {0, 0, 0, 0, 0, 0}, q[6], qd[6], s[6], sd[6];
+    law_value v;
+    double previous = INFINITY;
+    for (int iteration = 0;; ++iteration) {
+        memset(s, 0, sizeof s);
+        memset(sd, 0, sizeof sd);
+        for (int a = 0; a < l->nmount; ++a)
+            s[l->mount[a]] = sm[a];
+        for (int i = 0; i < m.n; ++i)
+            (m.damped[i] ? sd : s)[m.dir[i]] = w[i];
+        for (int k = 0; k < 6; ++k)
+            q[k] = u[k] - s[k], qd[k] = u[6 + k] - sd[k];
+        law(b, limits, l, q, qd, z, xr, &v);
+        if (m.n == 0)
+            break;
+        /* the balance K s + C sdot + F = 0 of each mount, to rounding */
+        double G[6], A[36], size = 0.0, residual = 0.0;
+        for (int i = 0; i < m.n; ++i) {
+            const usrsub_bushing_direction *d = &b->dir[m.dir[i]];
+            const double spring = d->mount_k * s[m.dir[i]], damper = d->mount_c * sd[m.dir[i]];
+            G[i] = spring + damper + v.F[m.dir[i]];
+            size = fmax(size, fabs(spring) + fabs(damper) + fabs(v.F[m.dir[i]]));
+            residual = fmax(residual, fabs(G[i]));
+        }
+        /* converged to rounding: tiny, or no longer falling once small */
+        if (residual <= 1e-15 * size || residual == 0.0 ||
+            (residual <= 1e-10 * size && residual >= 0.5 * previous))
+            break;
+        previous = residual;
+        balance_jacobian(b, &m, &v, A);
+        if (iteration == 40 || solve(m.n, A, G, 1) != 0 || !isfinite(G[0]))
+            return usrsub_fail(msg, "the mounts' series balance has no solution near deformation"
+                               " (%g %g %g %g %g %g) (residual %g after %d Newton steps)",
+                               u[0], u[1], u[2], u[3], u[4], u[5], residual, iteration);
+        for (int i = 0; i < m.n; ++i)
+            w[i] -= G[i];
+    }
+    memcpy(y, v.F, sizeof v.F);
+    for (int i = 0; i < l->friction; ++i)
+        xdot[i] = v.zdot[i];
+    for (int a = 0; a < l->nmount; ++a)
+        xdot[l->friction + a] = w[a];
+    for (int r = 0; r < l->nrubber; ++r)
+        xdot[l->friction + l->nmount + r] = v.xdot[r];
+    if (partials == NULL)
+        return 0;
+
+    /* the law's outputs against p at fixed w (Dp), and against w (Dw) */
+    const int np = 12 + l->n;
+    double Dp[MAX_ROWS * MAX_P], Dw[MAX_ROWS * 6];
+    for (int p = 0; p < np; ++p) {
+        int col = -1;
+        double sign = 1.0;
+        if (p < 6)
+            col = COL_Q + p;
+        else if (p < 12)
+            col = COL_QD + p - 6;
+        else if (p - 12 < l->friction)
+            col = COL_Z + p - 12;
+        else if (p - 12 < l->friction + l->nmount)
+            col = COL_Q + l->mount[p - 12 - l->friction], sign = -1.0;
+        else
+            col = COL_X + p - 12 - l->friction - l->nmount;
+        for (int r = 0; r < MAX_ROWS; ++r)
+            Dp[r + MAX_ROWS * p] = sign * v.J[r + MAX_ROWS * col];
+    }
+    for (int i = 0; i < m.n; ++i) {
+        const int col = (m.damped[i] ? COL_QD : COL_Q) + m.dir[i];
+        for (int r = 0; r < MAX_ROWS; ++r)
+            Dw[r + MAX_ROWS * i] = -v.J[r + MAX_ROWS * col];
+    }
+    /* dw/dp = -(dG/dw)^-1 dG/dp, with dG/dp = Dp's force rows plus K for a
+     * damped mount's own state */
+    double dwdp[6 * MAX_P];
+    if (m.n > 0) {
+        double A[36];
+        balance_jacobian(b, &m, &v, A);
+        for (int p = 0; p < np; ++p)
+            for (int i = 0; i < m.n; ++i) {
+                double g = Dp[ROW_F + m.dir[i] + MAX_ROWS * p];
+                if (m.damped[i] && p == 12 + l->friction + i)
+                    g += b->dir[m.dir[i]].mount_k;
+                dwdp[i + m.n * p] = -g;
+            }
+        if (solve(m.n, A, dwdp, np) != 0)
+            return usrsub_fail(msg, "the mounts' series balance is singular at deformation"
+                               " (%g %g %g %g %g %g)", u[0], u[1], u[2], u[3], u[4], u[5]);
+    }
+    /* total derivative of a law row: Dp + Dw dw/dp */
+    double total[MAX_ROWS * MAX_P];
+    for (int p = 0; p < np; ++p)
+        for (int r = 0; r < MAX_ROWS; ++r) {
+            double t = Dp[r + MAX_ROWS * p];
+            for (int i = 0; i < m.n; ++i)
+                t += Dw[r + MAX_ROWS * i] * dwdp[i + m.n * p];
+            total[r + MAX_ROWS * p] = t;
+        }
+    const int n = l->n;
+    for (int p = 0; p < np; ++p) {
+        /* the rows of xdot: bristles, damped mounts (w itself), filters */
+        double col[USRSUB_MAX_STATES];
+        for (int i = 0; i < l->friction; ++i)
+            col[i] = total[ROW_Z + i + MAX_ROWS * p];
+        for (int a = 0; a < l->nmount; ++a)
+            col[l->friction + a] = dwdp[a + m.n * p];
+        for (int r = 0; r < l->nrubber; ++r)
+            col[l->friction + l->nmount + r] = total[ROW_X + r + MAX_ROWS * p];
+        for (int i = 0; i < n; ++i) {
+            if (p < 12)
+                partials->dxdot_du[i + n * p] = col[i];
+            else
+                partials->dxdot_dx[i + n * (p - 12)] = col[i];
+        }
+        for (int i = 0; i < 6; ++i) {
+            if (p < 12)
+                partials->dy_du[i + 6 * p] = total[ROW_F + i + MAX_ROWS * p];
+            else
+                partials->dy_dx[i + 6 * (p - 12)] = total[ROW_F + i + MAX_ROWS * p];
+        }
+    }
+    return 0;
+}
