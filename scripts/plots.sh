@@ -74,6 +74,29 @@ plot '$out/powertrain.csv' using 1:(column('force1.dz')) with lines lw 2 title '
      '$out/powertrain.csv' using 1:(column('force3.dz')) with lines lw 2 title 'rear torque rod'
 GP
 
+echo "== rotation measures: a tumbling body's energy on a linear bushing"
+for m in vector angles; do
+  "$h" run "$ex/tumble_$m.xml" --end 4 --integrator rk4 --step 1e-3 --output-interval 0.01 \
+      --out "$out/tumble_$m.csv" --quiet
+done
+gnuplot <<GP
+set datafile separator ','
+set datafile columnheaders
+set terminal pngcairo size 900,500 font ',11'
+set output '$out/tumble_energy.png'
+set title 'a body tumbling on a linear bushing (tumble_*.xml), RK4 at 1 ms: energy error' noenhanced
+set grid
+set xlabel 't (s)'; set ylabel '(E - E(0)) / E(0)'
+set key top left
+stats '$out/tumble_vector.csv' using (column('energy')) every ::0::0 nooutput
+e0 = STATS_min
+plot '$out/tumble_angles.csv' using 1:((column('energy') - e0) / e0) with lines lw 2 \
+         title 'projection angles (the solver measure)', \
+     '$out/tumble_vector.csv' using 1:((column('energy') - e0) / e0) with lines lw 2 \
+         title 'rotation vector (ROTATION\\_MEASURE)'
+GP
+rm -f "$out/tumble_vector.csv" "$out/tumble_angles.csv"
+
 echo "== work-precision of the reference models"
 {
   for m in damped_oscillator normal_modes geared_oscillator; do
@@ -148,4 +171,55 @@ echo "== long runs"
   echo "### geared_pendulums.xml"; "$h" bench "$ex/geared_pendulums.xml" --repeats 3 \
       --long-run 1000000 --step 1e-4
 } > "$out/long_runs.txt"
+echo "== the suspension bushing with internal states (Force_StateEqn): its loops on the rig"
+"$h" rig "$ex/suspension_bushing_rig.xml" --element 1 --line y,-1,-1 --sine az,0.05,1 \
+    --end 2 --step 0.002 --out "$out/suspension_friction.csv" > "$out/suspension_bushing_rig.txt"
+"$h" rig "$ex/suspension_bushing_rig.xml" --element 1 --sine y,0.5,10 --end 0.5 \
+    --step 0.0005 --out "$out/suspension_rubber.csv" >> "$out/suspension_bushing_rig.txt"
+gnuplot <<GP
+set datafile separator ','
+set datafile columnheaders
+set terminal pngcairo size 1100,450 font ',11'
+set output '$out/suspension_bushing_loops.png'
+set multiplot layout 1,2 title 'suspension_bushing.gbs on a rig: hysteresis from its internal states' noenhanced
+set grid
+unset key
+set title 'friction: az = 0.05 sin(2 pi t) under a 1 mm radial deflection' noenhanced
+set xlabel 'az (rad)'; set ylabel 'Tz (N mm)'
+plot '$out/suspension_friction.csv' using (column('az')):(column('tz')) with lines lw 2
+set title 'rubber filter (R = 60 1/s): y = 0.5 sin(2 pi 10 t)' noenhanced
+set xlabel 'y (mm)'; set ylabel 'Fy (N)'
+plot '$out/suspension_rubber.csv' every ::200 using (column('y')):(column('fy')) with lines lw 2
+unset multiplot
+GP
+rm -f "$out/suspension_friction.csv" "$out/suspension_rubber.csv"
+
+echo "== the suspension bushing in a run: every integrator, and what BDF saves"
+{
+  for run in "bdf" "dopri5" "dopri5-arkode" "rk4 --step 2e-6" "euler --step 1e-6" \
+             "symplectic-euler --step 1e-6"; do
+    echo "### run --integrator $run"
+    # shellcheck disable=SC2086
+    "$h" run "$ex/suspension_bushing.xml" --end 1 --integrator $run --quiet
+  done
+} > "$out/suspension_bushing_runs.txt"
+"$h" run "$ex/suspension_bushing.xml" --end 1 --integrator bdf --rtol 1e-8 --atol 1e-11 \
+    --output-interval 0.001 --out "$out/suspension_bushing.csv" --quiet > /dev/null
+gnuplot <<GP
+set datafile separator ','
+set datafile columnheaders
+set terminal pngcairo size 900,700 font ',11'
+set output '$out/suspension_bushing_run.png'
+set multiplot layout 2,1 title 'suspension_bushing.xml: the arm end breaks loose, slides and sticks again' noenhanced
+set grid
+set key top left
+set ylabel 'Tz on the arm (N mm)'
+plot '$out/suspension_bushing.csv' using 1:(column('stateeqn1.tz')) with lines lw 2 title 'bushing', \
+     '' using 1:(-12000*((column('t') < 0.1) ? 0 : (column('t') > 0.3) ? 1 : \
+        ((column('t')-0.1)/0.2)**2*(3-2*(column('t')-0.1)/0.2))) with lines lw 1 dt 2 title 'minus the applied torque'
+set xlabel 't (s)'; set ylabel 'az (rad)'
+plot '$out/suspension_bushing.csv' using 1:(column('stateeqn1.u6')) with lines lw 2 title 'twist about the pivot'
+unset multiplot
+GP
+rm -f "$out/suspension_bushing.csv"
 echo "== wrote $out"

@@ -22,6 +22,7 @@
 
 #include "test_support.h"
 #include "usrsub/core/bushing_states.h"
+#include "usrsub/core/lugre_friction.h"
 #include "usrsub/readers/bushing_reader.h"
 #include "usrsub/readers/mount_limits_reader.h"
 
@@ -91,6 +92,12 @@ static const char friction_block[] =
     "SLIP_DAMPING = 0.001\nBALL_RADIUS = 10\nPRELOAD_TORQUE = 500\n";
 
 static const char mount_block[] =
+    "[MOUNT_STIFFNESS]\n{ direction K C }\nFX 20000 5\nFY 15000 0\nTX 2e6 100\nTZ 3e6 0\n";
+
+static const char friction_block_with_mounts[] =
+    "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.5\nMU_DYNAMIC = 0.3\n"
+    "TRANSITION_VELOCITY = 20\nBRISTLE_STIFFNESS = 100\nBRISTLE_DAMPING = 0.02\n"
+    "SLIP_DAMPING = 0.001\nBALL_RADIUS = 10\nPRELOAD_TORQUE = 500\n"
     "[MOUNT_STIFFNESS]\n{ direction K C }\nFX 20000 5\nFY 15000 0\nTX 2e6 100\nTZ 3e6 0\n";
 
 static usrsub_bushing *base_bushing(const char *name, int rubber, const char *extra)
@@ -193,10 +200,7 @@ static void every_partial_against_differences(void **state)
         base_bushing("fd_friction.gbs", 0, friction_block),
         base_bushing("fd_mount.gbs", 0, mount_block),
         base_bushing("fd_rubber.gbs", 1, ""),
-        base_bushing("fd_all.gbs", 1, "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.5\nMU_DYNAMIC = 0.3\n"
-                     "TRANSITION_VELOCITY = 20\nBRISTLE_STIFFNESS = 100\nBRISTLE_DAMPING = 0.02\n"
-                     "SLIP_DAMPING = 0.001\nBALL_RADIUS = 10\nPRELOAD_TORQUE = 500\n"
-                     "[MOUNT_STIFFNESS]\n{ direction K C }\nFX 20000 5\nFY 15000 0\nTX 2e6 100\nTZ 3e6 0\n"),
+        base_bushing("fd_all.gbs", 1, friction_block_with_mounts),
         NULL};
     bs[4] = bs[3];
     for (int c = 0; c < 5; ++c) {
@@ -218,6 +222,132 @@ static void every_partial_against_differences(void **state)
     for (int c = 0; c < 4; ++c)
         usrsub_bushing_free(bs[c]);
     usrsub_mount_limits_free(m);
+}
+
+/* The friction law's own partials against differences (lugre_friction.h): in
+ * each branch of the torque, in the blend between them, and at rest (z = w =
+ * 0, no preload torque: the joint torque's slope, not zero). */
+static double friction_error(const usrsub_friction *f, const double F[3], const double z[3],
+                             const double w[3])
+{
+    double tau[3], zdot[3];
+    usrsub_friction_partials p;
+    usrsub_friction_eval(f, F, z, w, tau, zdot, &p);
+    double worst = 0.0;
+    for (int j = 0; j < 9; ++j) {
+        double in[9], plus[6], minus[6];
+        memcpy(in, F, 3 * sizeof(double)), memcpy(in + 3, z, 3 * sizeof(double));
+        memcpy(in + 6, w, 3 * sizeof(double));
+        const double h = 1e-6 * fmax(1e-3, fabs(in[j])), mid = in[j];
+        in[j] = mid + h;
+        usrsub_friction_eval(f, in, in + 3, in + 6, plus, plus + 3, NULL);
+        in[j] = mid - h;
+        usrsub_friction_eval(f, in, in + 3, in + 6, minus, minus + 3, NULL);
+        const double *exact_tau = j < 3 ? p.dtau_dF : j < 6 ? p.dtau_dz : p.dtau_dw;
+        double size = 1e-12;
+        for (int i = 0; i < 6; ++i)
+            size = fmax(size, fabs(plus[i] - minus[i]) / (2 * h));
+        for (int i = 0; i < 6; ++i) {
+            const double fd = (plus[i] - minus[i]) / (2 * h);
+            double exact = i < 3 ? exact_tau[i + 3 * (j % 3)] : 0.0;
+            if (i >= 3)
+                exact = j < 3 ? 0.0 : j < 6 ? p.dzdot_dz[i - 3 + 3 * (j - 3)] : p.dzdot_dw[i - 3 + 3 * (j - 6)];
+            worst = fmax(worst, fabs(exact - fd) / size);
+        }
+    }
+    return worst;
+}
+
+static void friction_partials_in_every_branch(void **state)
+{
+    (void)state;
+    usrsub_friction f = {1, 0.5, 0.3, 5.0, 100.0, 0.02, 0.001, 10.0, 0.0, 1};
+    const double F[3] = {10, -20, 100}, zero[3] = {0, 0, 0};
+    /* at rest without a preload torque */
+    double tau[3], zdot[3];
+    usrsub_friction_partials p;
+    usrsub_friction_eval(&f, F, zero, zero, tau, zdot, &p);
+    assert_true(p.dtau_dz[0] < -1e4); /* -sigma0 r_B |F| (1 - n_x^2): the bristles' stiffness */
+    const double e_rest = friction_error(&f, F, zero, (const double[3]){1e-9, 0, 0});
+    /* joint branch, preload branch, and in the blend (|tj| = |tp| with mu not
+     * perpendicular to F_N) */
+    const double z1[3] = {0.002, -0.001, 0.0015}, w1[3] = {0.3, -0.2, 0.1};
+    f.preload_torque = 50.0;
+    const double e_joint = friction_error(&f, F, z1, w1);
+    f.preload_torque = 5e4;
+    const double e_preload = friction_error(&f, F, z1, w1);
+    double worst_blend = 0.0, joint_only[3], preload_only[3];
+    int in_band = 0;
+    f.preload_torque = 0.0;
+    usrsub_friction_eval(&f, F, z1, w1, joint_only, zdot, NULL);
+    for (double T = 300.0; T <= 800.0; T += 10.0) {
+        f.preload_torque = T;
+        usrsub_friction_eval(&f, F, z1, w1, tau, zdot, NULL);
+        usrsub_friction_eval(&f, zero, z1, w1, preload_only, zdot, NULL); /* no load: tau_pre */
+        in_band += tau[0] != joint_only[0] && tau[0] != preload_only[0];
+        worst_blend = fmax(worst_blend, friction_error(&f, F, z1, w1));
+    }
+    assert_true(in_band >= 2); /* the sweep crosses the blend */
+    printf("  friction partials: at rest %.2g, joint %.2g, preload %.2g, across the blend %.2g"
+           " (%d of 51 preload torques inside it)\n", e_rest, e_joint, e_preload, worst_blend,
+           in_band);
+    assert_true(e_rest < 1e-6 && e_joint < 1e-6 && e_preload < 1e-6 && worst_blend < 1e-5);
+}
+
+/* The mounts' balance is solved at every state of a wide random sample (the
+ * bristles within LuGre's bound mu_s / sigma0, deformations and rates of
+ * every direction, twice the range too), across the friction's blend, and
+ * with a mount far stiffer than its damping (K 1e15, C 1e-3). */
+static void the_mounts_balance_is_solved_everywhere(void **state)
+{
+    (void)state;
+    usrsub_bushing *all = base_bushing("wide_all.gbs", 1, friction_block_with_mounts);
+    usrsub_bushing *blend = bushing("wide_switch.gbs",
+        "[GLOBAL]\nCOUPLING = 'UNCOUPLED'\n[DIRECTIONS]\n(ACTIVITY)\n"
+        "{ formulation FX FY FZ TX TY TZ }\n'CONSTANT_STIFFNESS' 1 1 1 1 1 1\n"
+        "[CONSTANT_STIFFNESS_FX]\nK = 1000\n[CONSTANT_STIFFNESS_FY]\nK = 1000\n"
+        "[CONSTANT_STIFFNESS_FZ]\nK = 1000\n[CONSTANT_STIFFNESS_TX]\nK = 1e4\n"
+        "[CONSTANT_STIFFNESS_TY]\nK = 1e4\n[CONSTANT_STIFFNESS_TZ]\nK = 1e4\n"
+        "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.3\nMU_DYNAMIC = 0.2\nTRANSITION_VELOCITY = 10\n"
+        "BRISTLE_STIFFNESS = 100\nSLIP_DAMPING = 0.05\nBALL_RADIUS = 10\nPRELOAD_TORQUE = 300\n"
+        "[MOUNT_STIFFNESS]\n{ direction K C }\nTX 1e5 10\n");
+    usrsub_bushing *stiff = base_bushing("wide_stiff.gbs", 0,
+        "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.5\nMU_DYNAMIC = 0.3\nTRANSITION_VELOCITY = 20\n"
+        "BRISTLE_STIFFNESS = 100\nBRISTLE_DAMPING = 0.02\nBALL_RADIUS = 10\n"
+        "[MOUNT_STIFFNESS]\n{ direction K C }\nFX 1e15 1e-3\nTX 1e15 1e-3\n");
+    usrsub_bushing *const bushings[3] = {all, blend, stiff};
+    unsigned seed = 12345;
+    int failures = 0, samples = 0;
+    for (int c = 0; c < 3; ++c) {
+        usrsub_state_layout l;
+        usrsub_bushing_state_layout(bushings[c], &l);
+        for (int t = 0; t < 4000; ++t) {
+            const double range = t < 2000 ? 1.0 : 2.0;
+            double u[12], x[USRSUB_MAX_STATES], xdot[USRSUB_MAX_STATES], y[6];
+            for (int i = 0; i < 12; ++i) {
+                seed = seed * 1664525u + 1013904223u;
+                const double r = range * ((seed >> 8) / 8388608.0 - 1.0);
+                u[i] = r * (i < 3 ? 1.5 : i < 6 ? 0.02 : i < 9 ? 20.0 : 0.5);
+            }
+            if (c == 1)
+                u[2] = -0.3; /* pressed: a normal force of 300 N */
+            for (int i = 0; i < l.n; ++i) {
+                seed = seed * 1664525u + 1013904223u;
+                x[i] = range * ((seed >> 8) / 8388608.0 - 1.0) * (i < l.friction ? 0.0015 : 0.02);
+            }
+            usrsub_message msg;
+            ++samples;
+            if (usrsub_bushing_states_eval(bushings[c], NULL, &l, u, x, xdot, y, NULL, &msg) != 0) {
+                if (failures++ < 3)
+                    printf("    %s\n", msg.text);
+            }
+        }
+    }
+    printf("  the mounts' balance: %d of %d sampled states without a solution\n", failures,
+           samples);
+    assert_int_equal(failures, 0);
+    for (int c = 0; c < 3; ++c)
+        usrsub_bushing_free(bushings[c]);
 }
 
 /* ---- friction on a turning body ----------------------------------------------------- */
@@ -440,6 +570,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(without_states_it_is_the_fiesub_force),
         cmocka_unit_test(every_partial_against_differences),
+        cmocka_unit_test(friction_partials_in_every_branch),
+        cmocka_unit_test(the_mounts_balance_is_solved_everywhere),
         cmocka_unit_test(friction_sticks_slips_and_floors),
         cmocka_unit_test(a_mount_splits_the_deflection),
         cmocka_unit_test(the_rubber_filter_is_a_high_pass),

@@ -268,6 +268,16 @@ static void reader_errors_name_the_line(void **state)
     assert_int_equal(read_gfj("kind.gfj", "[HEADER]\nFILE_TYPE = 'gbi'\n", &j, &notice,
                               &has_notice, &msg), -1);
     assert_contains(msg.text, "kind.gfj", "line 2", "FILE_TYPE is 'gbi', expected 'gfj'");
+    /* finite in the file, infinite in the model's units: 1e307 N/mm is 1e310 N/m (the
+     * entries hand -K out as partials without a second look) */
+    char huge[512];
+    snprintf(huge, sizeof huge, "%s1e307 0 0 0 0 0\n%s%s%s%s%s", head, row, row, row, row, row);
+    usrsub_read_report metres = {0};
+    const double model_m[5] = {1.0, 1.0, 1.0, 1.0, 1.0};
+    assert_int_equal(usrsub_flex_joint_read(test_write_file("huge.gfj", gfj_text("mm", "newton",
+                                                                                 "radian", huge)),
+                                            model_m, &j, &metres, &msg), -1);
+    assert_contains(msg.text, "huge.gfj", "line 14", "row 1, column 1 (1e+307) is out of range");
     usrsub_read_report report = {0};
     assert_int_equal(usrsub_flex_joint_read("/nonexistent/joint.gfj", model_mm_n_kg_s, &j,
                                             &report, &msg), -1);

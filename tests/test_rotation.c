@@ -67,16 +67,18 @@ static void euler_and_angles_by_hand(void **state)
 static void phi_at_rest_from_any_psi(void **state)
 {
     (void)state;
-    /* the twist AZ = 0.3 with a tilt from 1e-15 to 1e-3, psi anything */
-    for (double tilt = 1e-15; tilt <= 1e-3; tilt *= 10.0)
-        for (double psi = -3.0; psi <= 3.0; psi += 0.77) {
-            const double az = 0.3;
-            const double phi = usrsub_rest_phi(psi, cos(tilt), az);
-            double R[9], a[3];
-            usrsub_euler313_rotation((const double[3]){psi, tilt, phi}, R);
-            usrsub_projection_angles(R, a);
-            assert_close(a[2], az, 0, 2e-15);
-        }
+    /* the twist AZ = 0.3 with a tilt from 1e-15 to 1e-3, psi anything; and I
+     * flipped (theta near pi, z axes opposite), where cos(theta) is -1 */
+    for (int flipped = 0; flipped < 2; ++flipped)
+        for (double tilt = 1e-15; tilt <= 1e-3; tilt *= 10.0)
+            for (double psi = -3.0; psi <= 3.0; psi += 0.77) {
+                const double az = 0.3, theta = flipped ? M_PI - tilt : tilt;
+                const double phi = usrsub_rest_phi(psi, cos(theta), az);
+                double R[9], a[3];
+                usrsub_euler313_rotation((const double[3]){psi, theta, phi}, R);
+                usrsub_projection_angles(R, a);
+                assert_close(a[2], az, 0, 2e-15);
+            }
 }
 
 static void rotation_of_projection_angles_round_trip(void **state)

@@ -21,6 +21,7 @@
 #include "cmd/commands.h"
 #include "cmd/options.h"
 #include "host/session.h"
+#include "host/state_inputs.h"
 #include "state/measures.h"
 #include "tools/check/checks.h"
 
@@ -65,6 +66,21 @@ static int evaluate(hx_session *s, hx_binding *b, char *outputs, size_t size)
     } else if (b->kind == HX_BIND_GFOSUB) {
         hx_call_gfosub(b, &s->state, 0, 0, out, NULL);
         nout = 6;
+    } else if (b->kind == HX_BIND_YFOSUB) {
+        /* its rates and outputs at its initial states and the inputs there */
+        const hx_state_eqn *f = &s->model->state_eqns[b->index];
+        double *work = calloc((size_t)(2 * f->nstate + f->ninput + 6), sizeof(double));
+        if (work == NULL)
+            return 0;
+        memcpy(work, f->initial, sizeof(double) * (size_t)f->nstate);
+        hx_state_eqn_inputs(&s->state, b->index, work + f->nstate);
+        double *rates = work + f->nstate + f->ninput;
+        hx_call_yfosub(b, &s->state, work, work + f->nstate, 0, 0, rates, rates + f->nstate, NULL);
+        nout = f->nstate + 6;
+        format_values(outputs, size, rates, nout);
+        const int finite = hx_all_finite(rates, nout);
+        free(work);
+        return finite;
     } else {
         double disp[6], velo[6], dfd[36], dfv[36];
         hx_force_deformation(&s->state, b->index, disp, velo);
@@ -78,17 +94,25 @@ static int evaluate(hx_session *s, hx_binding *b, char *outputs, size_t size)
 /* Everything check does to one element; the number of failures. */
 static int check_element(hx_session *s, hx_binding *b)
 {
-    char deps[512], outputs[1024], lib[512], functions[128];
+    char deps[512], outputs[1024], lib[512], functions[160];
     snprintf(lib, sizeof lib, "%s", b->library);
-    snprintf(functions, sizeof functions, b->kind == HX_BIND_COUPLER ? "%s %s %s" : "%s",
-             b->names[0], b->names[1], b->names[2]);
+    if (b->kind == HX_BIND_YFOSUB) {
+        int n = snprintf(functions, sizeof functions, "%s", b->names[0]);
+        for (int k = 0; k < 4 && n > 0 && (size_t)n < sizeof functions; ++k)
+            n += snprintf(functions + n, sizeof functions - (size_t)n, " %s%s", b->names[1 + k],
+                          b->state_partial[k] != NULL ? "" : " (not exported)");
+    } else {
+        snprintf(functions, sizeof functions, b->kind == HX_BIND_COUPLER ? "%s %s %s" : "%s",
+                 b->names[0], b->names[1], b->names[2]);
+    }
     printf("%s %d (%s in %s)\n  declared dependencies: %s\n", b->element, b->id, functions,
            basename(lib), hx_dependencies_text(&b->deps, deps, sizeof deps));
     if (b->setup_bytes >= 0) /* property data shared with earlier elements is theirs */
         printf("  set-up footprint: %ld bytes kept allocated by its first calls\n",
                b->setup_bytes);
     const int finite = evaluate(s, b, outputs, sizeof outputs);
-    printf("  outputs at t = 0: %s\n", outputs);
+    printf("  %s at t = 0: %s\n", b->kind == HX_BIND_YFOSUB ? "state rates, then outputs"
+                                                        : "outputs", outputs);
     if (hx_messages_stopped(&s->messages))
         return 1;
     if (!finite) {
@@ -100,6 +124,8 @@ static int check_element(hx_session *s, hx_binding *b)
         failures += hx_check_coupler(s, b, stdout);
     else if (b->kind == HX_BIND_FIESUB)
         failures += hx_check_field_partials(s, b, stdout);
+    else if (b->kind == HX_BIND_YFOSUB)
+        failures += hx_check_state_partials(s, b, stdout);
     else
         failures += hx_audit_dependencies(s, b, stdout);
     if (!hx_messages_stopped(&s->messages))
@@ -118,7 +144,8 @@ static void report_call(const hx_binding *b, const hx_call_log *log, const char 
         char values[480];
         format_values(values, sizeof values, log->args, log->nargs);
         snprintf(args, sizeof args, ", %s (%s)",
-                 b->kind == HX_BIND_COUPLER ? "disp" : "disp and velo", values);
+                 b->kind == HX_BIND_COUPLER ? "disp" : b->kind == HX_BIND_YFOSUB ? "input"
+                                                     : "disp and velo", values);
     }
     printf("  %s %d: FAIL: %s in %s (%s) called with iflag = %d, dflag = %d, time = %g%s\n",
            b->element, b->id, what, log->routine != NULL ? log->routine : b->names[0],

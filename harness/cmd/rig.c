@@ -5,12 +5,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "cmd/commands.h"
 #include "cmd/crash_report.h"
 #include "cmd/options.h"
 #include "tools/plot.h"
 #include "tools/rig/rig.h"
+#include "tools/rig/state_rig.h"
 
 static void usage(FILE *f)
 {
@@ -18,7 +20,9 @@ static void usage(FILE *f)
             "usage: usrsub-harness rig MODEL.xml --element ID --end T --step H PATH [options]\n"
             "\n"
             "Drives one force element (Force_Vector_TwoBody or Force_Field ID; write\n"
-            "vector:ID or field:ID when both kinds use ID) without dynamics.\n"
+            "vector:ID or field:ID when both kinds use ID) without dynamics. A Force_StateEqn\n"
+            "(ID, or stateeqn:ID) is driven along a deformation path with its states\n"
+            "integrated along it (BDF): force against deformation shows its hysteresis.\n"
             "Deformation-controlled PATH (of I relative to J, in J axes; terms add up):\n"
             "  --circle R,W[,PLANE]      R (cos Wt, sin Wt) in PLANE xy (default), yz, zx,\n"
             "                            axay, ayaz or azax\n"
@@ -32,7 +36,74 @@ static void usage(FILE *f)
             "  --out FILE.csv            t, deformation (6), rate (6), element force on I\n"
             "                            (6, J axes), applied load (6), residual, iterations\n"
             "  --plot PREFIX             PNG plots with gnuplot: PREFIX_force_path.png,\n"
-            "                            PREFIX_deformation_path.png, PREFIX_force_deformation.png\n");
+            "                            PREFIX_deformation_path.png, PREFIX_force_deformation.png\n"
+            "                            (and PREFIX_states.png for a Force_StateEqn)\n"
+            "A Force_StateEqn's CSV: t, deformation (6), rate (6), its outputs on I (6, J\n"
+            "axes), its states.\n");
+}
+
+/* The element ID names: a force element (0), a Force_StateEqn (1), or
+ * neither or both (-1, msg). */
+static int find_element(const hx_model *m, const char *text, int *index, hx_message *msg)
+{
+    if (strncasecmp(text, "stateeqn:", 9) == 0)
+        return hx_model_find_state_eqn(m, text, index, msg) == 0 ? 1 : -1;
+    hx_message none;
+    int state = -1;
+    const int plain = strchr(text, ':') == NULL;
+    if (plain && hx_model_find_state_eqn(m, text, &state, &none) != 0)
+        state = -1;
+    const int force = hx_model_find_force(m, text, index, msg) == 0;
+    if (force && state >= 0)
+        return hx_fail(msg, "element %s is both a Force_StateEqn and a force element: write"
+                       " stateeqn:%s, or vector:%s or field:%s", text, text, text, text);
+    if (state >= 0) {
+        *index = state;
+        return 1;
+    }
+    return force ? 0 : -1;
+}
+
+/* The Force_StateEqn rig's run and summary lines; 0 or -1. */
+static int run_state_rig(hx_rig *r, const char *plot, const char *csv_path, const char *prefix)
+{
+    const hx_state_eqn *f = &r->s->model->state_eqns[r->force];
+    hx_state_rig_result result;
+    hx_crash_report_begin();
+    const int status = hx_state_rig_run(r, &result);
+    hx_crash_report_end();
+    if (r->csv != NULL)
+        fclose(r->csv);
+    r->csv = NULL;
+    printf("rig: Force_StateEqn %d, deformation-controlled, %ld steps of %g to t = %g, %ld"
+           " element calls\n", f->id, lround(r->end / r->step), r->step, r->end, r->element_calls);
+    if (f->nstate > 0)
+        printf("  %d states integrated by bdf (CVODE, rtol 1e-8): %ld steps, %ld Newton"
+               " iterations, %ld Jacobians (%s)\n", f->nstate, result.stats.steps,
+               result.stats.newton_iterations, result.stats.jacobians,
+               hx_binding_of_state_eqn(&r->s->bindings, r->force)->state_partial[0] != NULL
+                   ? "YFOXX" : "differences of YFOSUB");
+    printf("  work done on the element over the path (stored or dissipated): %.8g\n", result.work);
+    if (status != 0) {
+        fprintf(stderr, "usrsub-harness rig: %s\n", result.message);
+        return -1;
+    }
+    if (plot == NULL)
+        return 0;
+    char title[128];
+    /* no underscore: gnuplot's titles are enhanced text */
+    snprintf(title, sizeof title, "state equation %d", f->id);
+    int plot_status = hx_plot_rig(csv_path, prefix, title, r->a, r->b, r->moving);
+    if (plot_status == 0 && f->nstate > 0)
+        plot_status = hx_plot_states(csv_path, prefix, title, 20, f->nstate);
+    if (plot_status == 1)
+        fprintf(stderr, "rig: gnuplot is not installed; no plots\n");
+    else if (plot_status == 0)
+        printf("  plots: %s_force_path.png, %s_deformation_path.png,"
+               " %s_force_deformation.png%s%s%s\n", prefix, prefix, prefix,
+               f->nstate > 0 ? ", " : "", f->nstate > 0 ? prefix : "",
+               f->nstate > 0 ? "_states.png" : "");
+    return plot_status < 0 ? -1 : 0;
 }
 
 int hx_command_rig(int argc, char **argv)
@@ -49,7 +120,7 @@ int hx_command_rig(int argc, char **argv)
     hx_rig r;
     memset(&r, 0, sizeof r);
     const char *element = NULL, *out = NULL, *plot = NULL;
-    int deformation_terms = 0, force_terms = 0, opt;
+    int deformation_terms = 0, force_terms = 0, kind_error = 0, opt;
     hx_message msg = {{0}};
     optind = 1;
     while ((opt = getopt_long(argc, argv, "h", options, NULL)) != -1) {
@@ -101,8 +172,13 @@ int hx_command_rig(int argc, char **argv)
         hx_rig_path_free(&r.path);
         return 1;
     }
-    if (hx_model_find_force(s.model, element, &r.force, &msg) != 0 ||
-        hx_state_clone(&r.scratch, &s.state) != 0) {
+    const int kind = find_element(s.model, element, &r.force, &msg);
+    if (kind == 1 && r.force_controlled) {
+        kind_error = 1;
+        hx_fail(&msg, "Force_StateEqn %s: the rig drives a Force_StateEqn along deformation"
+                " paths only (its states follow the path)", element);
+    }
+    if (kind < 0 || kind_error || hx_state_clone(&r.scratch, &s.state) != 0) {
         fprintf(stderr, "usrsub-harness rig: %s\n", msg.text);
         hx_session_close(&s);
         hx_rig_path_free(&r.path);
@@ -122,6 +198,13 @@ int hx_command_rig(int argc, char **argv)
         hx_session_close(&s);
         hx_rig_path_free(&r.path);
         return 1;
+    }
+    if (kind == 1) {
+        const int state_status = run_state_rig(&r, plot, csv_path, prefix);
+        hx_state_free(&r.scratch);
+        hx_session_close(&s);
+        hx_rig_path_free(&r.path);
+        return state_status == 0 ? 0 : 1;
     }
     hx_crash_report_begin();
     const int status = hx_rig_run(&r);

@@ -7,7 +7,26 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host/state_inputs.h"
 #include "state/measures.h"
+
+/* A state equation's partial routines: one the model names (usrsub_derN_name)
+ * must exist; a default name the library does not export is left NULL, and
+ * the harness differences YFOSUB instead (docs/interface.md §5). */
+static int bind_state_partials(void *handle, const char *path, hx_binding *b,
+                               const hx_user_call *u, hx_message *msg)
+{
+    const char *named[4] = {u->der1_name, u->der2_name, u->der3_name, u->der4_name};
+    for (int k = 0; k < 4; ++k) {
+        hx_message absent;
+        hx_message *report = named[k] != NULL ? msg : &absent;
+        void *fn = hx_loader_symbol(handle, path, b->names[1 + k], report);
+        if (fn == NULL && named[k] != NULL)
+            return -1;
+        b->state_partial[k] = (usrsub_state_partial_fn *)fn;
+    }
+    return 0;
+}
 
 static int bind_one(const hx_model *m, hx_bindings *bs, hx_binding *b, const hx_user_call *u,
                     int line, hx_message *msg)
@@ -31,8 +50,11 @@ static int bind_one(const hx_model *m, hx_bindings *bs, hx_binding *b, const hx_
             b->coupler[k] = (usrsub_coupler_fn *)fn[k];
     else if (b->kind == HX_BIND_GFOSUB)
         b->gfosub = (usrsub_gfosub_fn *)fn[0];
-    else
+    else if (b->kind == HX_BIND_FIESUB)
         b->fiesub = (usrsub_fiesub_fn *)fn[0];
+    else if ((b->yfosub = (usrsub_yfosub_fn *)fn[0]) != NULL &&
+             bind_state_partials(handle, path, b, u, msg) != 0)
+        goto failed;
     b->npar = u->npar;
     b->par = malloc(sizeof(double) * (size_t)(u->npar > 0 ? u->npar : 1));
     if (b->par == NULL)
@@ -82,7 +104,7 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
     int user_couplers = 0;
     for (int k = 0; k < m->ncouplers; ++k)
         user_couplers += m->couplers[k].is_user;
-    const int total = user_couplers + m->nforces;
+    const int total = user_couplers + m->nforces + m->nstate_eqns;
     bs->items = calloc((size_t)(total > 0 ? total : 1), sizeof *bs->items);
     if (bs->items == NULL)
         return hx_fail(msg, "out of memory");
@@ -117,6 +139,22 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
         if (gfo && bind_twin(bs, b) != 0)
             return hx_fail(msg, "out of memory");
     }
+    for (int k = 0; k < m->nstate_eqns; ++k) {
+        const hx_state_eqn *f = &m->state_eqns[k];
+        hx_binding *b = &bs->items[bs->count++];
+        static const char *const defaults[5] = {"YFOSUB", "YFOXX", "YFOXU", "YFOYX", "YFOYU"};
+        const char *named[5] = {f->user.fnc_name, f->user.der1_name, f->user.der2_name,
+                                f->user.der3_name, f->user.der4_name};
+        b->messages = messages;
+        b->kind = HX_BIND_YFOSUB;
+        b->index = k;
+        b->id = f->id;
+        b->element = "Force_StateEqn";
+        for (int i = 0; i < 5; ++i)
+            b->names[i] = named[i] != NULL ? named[i] : defaults[i];
+        if (bind_one(m, bs, b, &f->user, f->line, msg) != 0)
+            return -1;
+    }
     return 0;
 }
 
@@ -144,7 +182,16 @@ hx_binding *hx_binding_of_coupler(hx_bindings *bs, int coupler_index)
 hx_binding *hx_binding_of_force(hx_bindings *bs, int force_index)
 {
     for (int k = 0; k < bs->count; ++k)
-        if (bs->items[k].kind != HX_BIND_COUPLER && bs->items[k].index == force_index)
+        if ((bs->items[k].kind == HX_BIND_GFOSUB || bs->items[k].kind == HX_BIND_FIESUB) &&
+            bs->items[k].index == force_index)
+            return &bs->items[k];
+    return NULL;
+}
+
+hx_binding *hx_binding_of_state_eqn(hx_bindings *bs, int element_index)
+{
+    for (int k = 0; k < bs->count; ++k)
+        if (bs->items[k].kind == HX_BIND_YFOSUB && bs->items[k].index == element_index)
             return &bs->items[k];
     return NULL;
 }
@@ -167,9 +214,28 @@ static long allocated_bytes(void)
     return (long)(info.uordblks + info.hblkhd);
 }
 
+/* A state equation's pass at state s: its initial states and its inputs
+ * there; work holds 2 nstate + ninput + 6 values. */
+static void state_eqn_pass(hx_binding *b, const hx_state *s, double *work)
+{
+    const hx_state_eqn *f = &s->model->state_eqns[b->index];
+    double *states = work, *input = states + f->nstate, *stated = input + f->ninput;
+    for (int i = 0; i < f->nstate; ++i)
+        states[i] = f->initial[i];
+    hx_state_eqn_inputs(s, b->index, input);
+    hx_call_yfosub(b, s, states, input, 0, 1, stated, stated + f->nstate, NULL);
+}
+
 int hx_dependency_passes(hx_bindings *bs, const hx_state *s)
 {
     const hx_model *m = s->model;
+    int work_size = 1; /* before the first pass: the footprints are the library's alone */
+    for (int k = 0; k < m->nstate_eqns; ++k)
+        if (2 * m->state_eqns[k].nstate + m->state_eqns[k].ninput + 6 > work_size)
+            work_size = 2 * m->state_eqns[k].nstate + m->state_eqns[k].ninput + 6;
+    double *work = malloc(sizeof(double) * (size_t)work_size);
+    if (work == NULL)
+        return -1;
     for (int k = 0; k < bs->count; ++k) {
         hx_binding *b = &bs->items[k];
         double out[64];
@@ -183,16 +249,21 @@ int hx_dependency_passes(hx_bindings *bs, const hx_state *s)
                 hx_call_coupler(b, fn, s, disp, c->njoints, 1, out, NULL);
         } else if (b->kind == HX_BIND_GFOSUB) {
             hx_call_gfosub(b, s, 0, 1, out, NULL);
-        } else {
+        } else if (b->kind == HX_BIND_FIESUB) {
             double disp[6], velo[6], dfd[36], dfv[36];
             hx_force_deformation(s, b->index, disp, velo);
             hx_call_fiesub(b, s, disp, velo, 0, 1, out, dfd, dfv, NULL);
+        } else {
+            state_eqn_pass(b, s, work);
         }
         const long after = allocated_bytes();
         b->setup_bytes = before > 0 || after > 0 ? after - before : -1;
-        if (b->messages != NULL && hx_messages_stopped(b->messages))
+        if (b->messages != NULL && hx_messages_stopped(b->messages)) {
+            free(work);
             return -1;
+        }
     }
+    free(work);
     return 0;
 }
 
@@ -269,6 +340,42 @@ void hx_call_fiesub(hx_binding *b, const hx_state *s, const double disp[6], cons
         log_call(b, 0, t, iflag, dflag, args, 12);
     }
     b->fiesub(&id, &t, b->par, &npar, d, v, &df, &flag, field, dfddis, dfdvel);
+    if (b->log != NULL)
+        b->log->returned++;
+    hx_host_unbind();
+}
+
+void hx_call_yfosub(hx_binding *b, const hx_state *s, double *states, double *input, int dflag,
+                    int iflag, double *stated, double output[6], hx_call *call)
+{
+    const hx_state_eqn *f = &b->model->state_eqns[b->index];
+    hx_call local;
+    begin(b, 0, s, iflag, call, &local);
+    int id = b->id, npar = b->npar, df = dflag, flag = iflag;
+    int nstate = f->nstate, ninput = f->ninput, noutpt = 6;
+    double t = s->time;
+    if (b->log != NULL)
+        log_call(b, 0, t, iflag, dflag, input, ninput);
+    b->yfosub(&id, &t, b->par, &npar, &df, &flag, &nstate, states, &ninput, input, &noutpt,
+              stated, output);
+    if (b->log != NULL)
+        b->log->returned++;
+    hx_host_unbind();
+}
+
+void hx_call_state_partial(hx_binding *b, int which, const hx_state *s, double *states,
+                           double *input, double *matrix, hx_call *call)
+{
+    const hx_state_eqn *f = &b->model->state_eqns[b->index];
+    hx_call local;
+    begin(b, 1 + which, s, 0, call, &local);
+    int id = b->id, npar = b->npar, flag = 0;
+    int nstate = f->nstate, ninput = f->ninput, noutpt = 6;
+    double t = s->time;
+    if (b->log != NULL)
+        log_call(b, 1 + which, t, 0, 0, input, ninput);
+    b->state_partial[which](&id, &t, b->par, &npar, &flag, &nstate, states, &ninput, input,
+                            &noutpt, matrix);
     if (b->log != NULL)
         b->log->returned++;
     hx_host_unbind();

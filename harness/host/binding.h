@@ -14,7 +14,8 @@
 typedef enum hx_binding_kind {
     HX_BIND_COUPLER, /* Constraint_Coupler: COUSUB, COUXX, COUXX2 */
     HX_BIND_GFOSUB,  /* Force_Vector_TwoBody */
-    HX_BIND_FIESUB   /* Force_Field */
+    HX_BIND_FIESUB,  /* Force_Field */
+    HX_BIND_YFOSUB   /* Force_StateEqn: YFOSUB, YFOXX, YFOXU, YFOYX, YFOYU */
 } hx_binding_kind;
 
 /* The last call of a binding, kept where another process can read it when
@@ -26,19 +27,25 @@ typedef struct hx_call_log {
     int iflag, dflag;
     double time;
     int nargs;
-    double args[12];                 /* disp (and velo) of couplers and FIESUB */
+    double args[12];                 /* disp (and velo) of couplers and FIESUB; the
+                                      * first inputs of YFOSUB */
 } hx_call_log;
 
 typedef struct hx_binding {
     hx_binding_kind kind;
-    int index;           /* in the model's couplers[] or forces[] */
+    int index;           /* in the model's couplers[], forces[] or state_eqns[] */
     int id;
-    const char *element; /* "Constraint_Coupler", "Force_Vector_TwoBody", "Force_Field" */
+    const char *element; /* "Constraint_Coupler", "Force_Vector_TwoBody", "Force_Field",
+                          * "Force_StateEqn" */
     char *library;       /* resolved path */
-    const char *names[3];
+    const char *names[5];
     usrsub_coupler_fn *coupler[3]; /* phi, dphi/dM, d2phi/dM2 */
     usrsub_gfosub_fn *gfosub;
     usrsub_fiesub_fn *fiesub;
+    usrsub_yfosub_fn *yfosub;
+    /* YFOXX, YFOXU, YFOYX, YFOYU (names[1..4]); NULL when the library does not
+     * export the default name: the harness then takes differences of YFOSUB */
+    usrsub_state_partial_fn *state_partial[4];
     double *par;         /* the USER list handed to the entries */
     int npar;
     /* GFOSUB elements: the library's FIESUB twin of the element, when it
@@ -74,6 +81,7 @@ void hx_bindings_free(hx_bindings *b);
 /* The binding of a coupler or force element, or NULL (built-in element). */
 hx_binding *hx_binding_of_coupler(hx_bindings *b, int coupler_index);
 hx_binding *hx_binding_of_force(hx_bindings *b, int force_index);
+hx_binding *hx_binding_of_state_eqn(hx_bindings *b, int element_index);
 
 /* A call record of function `which` of b at state s, recording into (iflag)
  * or checking against b->deps. */
@@ -92,6 +100,16 @@ void hx_call_gfosub(hx_binding *b, const hx_state *s, int dflag, int iflag, doub
 void hx_call_fiesub(hx_binding *b, const hx_state *s, const double disp[6], const double velo[6],
                     int dflag, int iflag, double field[6], double dfddis[36], double dfdvel[36],
                     hx_call *call);
+/* YFOSUB of a Force_StateEqn at state s (its time): states (nstate) and
+ * input (ninput), the caller's copies, which a library may write into;
+ * stated (nstate) and output (6) receive its results. */
+void hx_call_yfosub(hx_binding *b, const hx_state *s, double *states, double *input, int dflag,
+                    int iflag, double *stated, double output[6], hx_call *call);
+/* Partial routine `which` (0 YFOXX, 1 YFOXU, 2 YFOYX, 3 YFOYU; it must be
+ * exported) at states and input, into matrix (column-major, its rows first). */
+void hx_call_state_partial(hx_binding *b, int which, const hx_state *s, double *states,
+                           double *input, double *matrix, hx_call *call);
+
 /* The FIESUB twin of a GFOSUB element (b->twin must be set), at the
  * deformation of its I marker relative to its J marker; it may not query.
  * Its messages go to `messages` (the caller's, kept apart from the session's:

@@ -2,6 +2,7 @@
 #include "host/messages.h"
 
 #include <stdarg.h>
+#include <stdatomic.h>
 #include <string.h>
 
 void hx_messages_init(hx_messages *m, FILE *stream)
@@ -21,7 +22,7 @@ void hx_messages_reset(hx_messages *m)
     pthread_mutex_lock(&m->lock);
     m->errors = m->notices = m->host_reports = 0;
     m->last_error[0] = m->last_notice[0] = m->last_host_report[0] = '\0';
-    m->stop = 0;
+    atomic_store_explicit(&m->stop, 0, memory_order_relaxed);
     m->stop_message[0] = '\0';
     pthread_mutex_unlock(&m->lock);
 }
@@ -31,9 +32,9 @@ void hx_messages_error(hx_messages *m, int id, const char *text, int stop)
     pthread_mutex_lock(&m->lock);
     ++m->errors;
     snprintf(m->last_error, sizeof m->last_error, "%s", text != NULL ? text : "");
-    if (stop && !m->stop) {
-        m->stop = 1;
+    if (stop && !atomic_load_explicit(&m->stop, memory_order_relaxed)) {
         snprintf(m->stop_message, sizeof m->stop_message, "%s", m->last_error);
+        atomic_store_explicit(&m->stop, 1, memory_order_release);
     }
     if (m->stream != NULL)
         fprintf(m->stream, "ERRMES [%d]%s: %s\n", id, stop ? " STOP" : "", m->last_error);
@@ -64,10 +65,9 @@ void hx_messages_host(hx_messages *m, const char *fmt, ...)
     pthread_mutex_unlock(&m->lock);
 }
 
-int hx_messages_stopped(hx_messages *m)
+int hx_messages_stopped(const hx_messages *m)
 {
-    pthread_mutex_lock(&m->lock);
-    const int stop = m->stop;
-    pthread_mutex_unlock(&m->lock);
-    return stop;
+    /* the stop message is written before the flag (under the lock): whoever
+     * sees the flag sees the message */
+    return atomic_load_explicit(&m->stop, memory_order_acquire);
 }

@@ -8,6 +8,7 @@
 #define HX_HOST_MESSAGES_H
 
 #include <pthread.h>
+#include <stdatomic.h>
 #include <stdio.h>
 
 #define HX_TEXT_MAX 1024
@@ -17,7 +18,8 @@ typedef struct hx_messages {
     FILE *stream;          /* where the text is printed (NULL: kept, not printed) */
     int errors, notices, host_reports;
     char last_error[HX_TEXT_MAX], last_notice[HX_TEXT_MAX], last_host_report[HX_TEXT_MAX];
-    int stop;              /* c_errmes asked to end the run */
+    _Atomic int stop;      /* c_errmes asked to end the run: read without the lock
+                            * after every call, written under it */
     char stop_message[HX_TEXT_MAX];
 } hx_messages;
 
@@ -33,6 +35,6 @@ void hx_messages_notice(hx_messages *m, int id, const char *type, const char *te
 /* The host's own finding about a call: "host: text". */
 void hx_messages_host(hx_messages *m, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
-int hx_messages_stopped(hx_messages *m);
+int hx_messages_stopped(const hx_messages *m);
 
 #endif

@@ -12,19 +12,10 @@
 #include "base/vecmath.h"
 #include "model/orientation.h"
 #include "model/units.h"
+#include "model/state_equation_elements.h"
 #include "model/user_list.h"
+#include "model/xml_attrs.h"
 #include "model/xml_schema.h"
-
-#define REAL(name) {name, HX_ATTR_REAL, 0}
-#define INT(name) {name, HX_ATTR_INT, 0}
-#define TEXT(name) {name, HX_ATTR_TEXT, 0}
-#define IGNORED(name) {name, HX_ATTR_IGNORED, 0}
-#define REQUIRED(name, kind) {name, kind, 1}
-#define END {NULL, HX_ATTR_IGNORED, 0}
-#define ID REQUIRED("id", HX_ATTR_INT), IGNORED("label")
-#define USER_CALL                                                                              \
-    TEXT("usrsub_param_string"), TEXT("usrsub_dll_name"), TEXT("usrsub_fnc_name"),             \
-        TEXT("script_name"), TEXT("interpreter")
 
 /* usrsub_dll_name and usrsub_fnc_name: "NULL" means absent. */
 static char *optional_name(const hx_element_read *e, const char *name)
@@ -35,7 +26,7 @@ static char *optional_name(const hx_element_read *e, const char *name)
     return strdup(text);
 }
 
-static int read_user_call(hx_draft *d, const hx_element_read *e, hx_user_call *u)
+int hx_draft_user_call(hx_draft *d, const hx_element_read *e, hx_user_call *u)
 {
     if (hx_attr_present(e, "script_name") || hx_attr_present(e, "interpreter")) {
         hx_draft_fail(d, e->line, "%s %d: script_name/interpreter user subroutines are not"
@@ -57,6 +48,8 @@ static int read_user_call(hx_draft *d, const hx_element_read *e, hx_user_call *u
     u->fnc_name = optional_name(e, "usrsub_fnc_name");
     u->der1_name = optional_name(e, "usrsub_der1_name");
     u->der2_name = optional_name(e, "usrsub_der2_name");
+    u->der3_name = optional_name(e, "usrsub_der3_name");
+    u->der4_name = optional_name(e, "usrsub_der4_name");
     return 0;
 }
 
@@ -332,7 +325,7 @@ static void build_coupler(hx_draft *d, const hx_element_read *e)
     const char *coefficients = hx_attr_text(e, "coefficients");
     if (coefficients == NULL) {
         c->is_user = 1;
-        read_user_call(d, e, &c->user);
+        hx_draft_user_call(d, e, &c->user);
         return;
     }
     if (hx_attr_present(e, "usrsub_param_string")) {
@@ -390,7 +383,7 @@ static void build_force_vector(hx_draft *d, const hx_element_read *e)
     refs->ids[0] = hx_attr_int(e, "i_marker_id", 0);
     refs->ids[1] = hx_attr_int(e, "j_floating_marker_id", 0);
     refs->ids[2] = hx_attr_int(e, "ref_marker_id", 0);
-    read_user_call(d, e, &f->user);
+    hx_draft_user_call(d, e, &f->user);
 }
 
 static const hx_attr_spec force_field_attrs[] = {
@@ -405,7 +398,7 @@ static void build_force_field(hx_draft *d, const hx_element_read *e)
     raw_refs *refs = &d->rforces[d->m->nforces - 1];
     refs->ids[0] = hx_attr_int(e, "i_marker_id", 0);
     refs->ids[1] = hx_attr_int(e, "j_marker_id", 0);
-    read_user_call(d, e, &f->user);
+    hx_draft_user_call(d, e, &f->user);
 }
 
 static hx_load *push_load(hx_draft *d, const hx_element_read *e, enum hx_load_kind kind)
@@ -500,20 +493,23 @@ static void build_scalar_load(hx_draft *d, const hx_element_read *e)
 static const hx_attr_spec no_attrs[] = {END};
 
 const hx_element_spec hx_element_specs[] = {
-    {"MotionSolve", no_attrs, NULL},
-    {"Model", no_attrs, NULL},
-    {"Param_Unit", param_unit_attrs, build_param_unit},
-    {"Force_Gravity", gravity_attrs, build_gravity},
-    {"Reference_String", string_attrs, build_string},
-    {"Body_Ground", ground_attrs, build_ground},
-    {"Body_Rigid", body_attrs, build_body},
-    {"Reference_Marker", marker_attrs, build_marker},
-    {"Constraint_Joint", joint_attrs, build_joint},
-    {"Constraint_Coupler", coupler_attrs, build_coupler},
-    {"Force_Vector_TwoBody", force_vector_attrs, build_force_vector},
-    {"Force_Field", force_field_attrs, build_force_field},
-    {"Force_Vector_OneBody", vector_load_attrs, build_vector_load},
-    {"Force_Scalar_TwoBody", scalar_load_attrs, build_scalar_load},
+    {"MotionSolve", no_attrs, NULL, NULL},
+    {"Model", no_attrs, NULL, NULL},
+    {"Param_Unit", param_unit_attrs, build_param_unit, NULL},
+    {"Force_Gravity", gravity_attrs, build_gravity, NULL},
+    {"Reference_String", string_attrs, build_string, NULL},
+    {"Body_Ground", ground_attrs, build_ground, NULL},
+    {"Body_Rigid", body_attrs, build_body, NULL},
+    {"Reference_Marker", marker_attrs, build_marker, NULL},
+    {"Constraint_Joint", joint_attrs, build_joint, NULL},
+    {"Constraint_Coupler", coupler_attrs, build_coupler, NULL},
+    {"Force_Vector_TwoBody", force_vector_attrs, build_force_vector, NULL},
+    {"Force_Field", force_field_attrs, build_force_field, NULL},
+    {"Force_Vector_OneBody", vector_load_attrs, build_vector_load, NULL},
+    {"Force_Scalar_TwoBody", scalar_load_attrs, build_scalar_load, NULL},
+    {"Force_StateEqn", hx_state_eqn_attrs, hx_build_state_eqn, NULL},
+    {"Reference_Array", hx_array_attrs, hx_build_array, hx_array_text},
+    {"Reference_Variable", hx_variable_attrs, hx_build_variable, NULL},
 };
 const int hx_element_spec_count = (int)(sizeof hx_element_specs / sizeof hx_element_specs[0]);
 
@@ -522,8 +518,7 @@ int hx_element_is_output_only(const char *name)
     /* outputs, solver settings and analysis commands: they do not act on the
      * dynamics the harness computes */
     static const char *const prefixes[] = {"Post_", "Param_", "Simulate", "Analysis",
-                                           "Reference_Variable", "Reference_Spline",
-                                           "Reference_Array"};
+                                           "Reference_Spline"};
     for (size_t k = 0; k < sizeof prefixes / sizeof prefixes[0]; ++k)
         if (strncasecmp(name, prefixes[k], strlen(prefixes[k])) == 0)
             return 1;

@@ -42,6 +42,37 @@ const char *hx_model_string(const hx_model *m, int id)
     return NULL;
 }
 
+int hx_model_variable(const hx_model *m, int id)
+{
+    for (int k = 0; k < m->nvariables; ++k)
+        if (m->variables[k].id == id)
+            return k;
+    return -1;
+}
+
+int hx_model_array(const hx_model *m, int id)
+{
+    for (int k = 0; k < m->narrays; ++k)
+        if (m->arrays[k].id == id)
+            return k;
+    return -1;
+}
+
+int hx_model_find_state_eqn(const hx_model *m, const char *text, int *index, hx_message *msg)
+{
+    const char *number = strncasecmp(text, "stateeqn:", 9) == 0 ? text + 9 : text;
+    char *end;
+    const long id = strtol(number, &end, 10);
+    if (end == number || *end != '\0')
+        return hx_fail(msg, "'%s' is not a Force_StateEqn id (ID or stateeqn:ID)", text);
+    for (int k = 0; k < m->nstate_eqns; ++k)
+        if (m->state_eqns[k].id == id) {
+            *index = k;
+            return 0;
+        }
+    return hx_fail(msg, "the model has no Force_StateEqn %ld", id);
+}
+
 const char *hx_force_element_name(const hx_force *f)
 {
     return f->interface == HX_FORCE_GFOSUB ? "Force_Vector_TwoBody" : "Force_Field";
@@ -81,6 +112,8 @@ static void free_user_call(hx_user_call *u)
     free(u->fnc_name);
     free(u->der1_name);
     free(u->der2_name);
+    free(u->der3_name);
+    free(u->der4_name);
     free(u->par);
 }
 
@@ -94,6 +127,19 @@ void hx_model_free(hx_model *m)
         free_user_call(&m->forces[k].user);
     for (int k = 0; k < m->nstrings; ++k)
         free(m->strings[k].text);
+    for (int k = 0; k < m->narrays; ++k) {
+        free(m->arrays[k].numbers);
+        free(m->arrays[k].variable_ids);
+        free(m->arrays[k].variables);
+    }
+    for (int k = 0; k < m->nstate_eqns; ++k) {
+        free_user_call(&m->state_eqns[k].user);
+        free(m->state_eqns[k].inputs);
+        free(m->state_eqns[k].initial);
+    }
+    free(m->variables);
+    free(m->arrays);
+    free(m->state_eqns);
     free(m->bodies);
     free(m->markers);
     free(m->joints);

@@ -18,7 +18,10 @@ typedef struct hx_user_call {
     char *dll_name;     /* usrsub_dll_name; NULL when absent or "NULL" */
     char *fnc_name;     /* usrsub_fnc_name; NULL for the default name */
     char *der1_name;    /* couplers: usrsub_der1_name (default COUXX) */
-    char *der2_name;    /* couplers: usrsub_der2_name (default COUXX2) */
+    char *der2_name;    /* couplers: usrsub_der2_name (default COUXX2); state equations:
+                         * usrsub_der1..4_name (defaults YFOXX, YFOXU, YFOYX, YFOYU) */
+    char *der3_name;
+    char *der4_name;
     double *par;        /* the numbers of usrsub_param_string's USER(...) */
     int npar;
 } hx_user_call;
@@ -96,6 +99,47 @@ typedef struct hx_load {
     int line;
 } hx_load;
 
+/* A Reference_Variable: one measure the harness answers itself, or a number
+ * (docs/interface.md §7.10). */
+typedef struct hx_variable {
+    int id;
+    char function[3];   /* "DX" .. "WZ" or "DM"; "" for a number */
+    int marker_ids[4];  /* as written; the ones left out are 0 (the world) */
+    int nmarkers;
+    double sign;        /* -1 for a leading minus */
+    double number;      /* the value of a plain number */
+    int line;
+} hx_variable;
+
+typedef enum hx_array_type { HX_ARRAY_X, HX_ARRAY_U, HX_ARRAY_Y, HX_ARRAY_IC } hx_array_type;
+
+/* A Reference_Array: the numbers of an IC array, the variables of a U array. */
+typedef struct hx_array {
+    int id;
+    hx_array_type type;
+    int count;          /* num_element */
+    double *numbers;    /* IC: count values */
+    int *variable_ids;  /* U: count Reference_Variable ids, as written */
+    int *variables;     /* U: their indices */
+    int line;
+} hx_array;
+
+/* A Force_StateEqn of type USERSUB: a force between two markers with
+ * internal states (docs/interface.md §5, §7.10). */
+typedef struct hx_state_eqn {
+    int id;
+    int i_marker, j_marker; /* indices; J is the floating J marker */
+    int ref_marker;          /* index of the frame of the outputs */
+    int nstate;              /* num_state */
+    int ninput;              /* the U array's length (0 without one) */
+    int *inputs;             /* ninput variable indices, in the U array's order */
+    double *initial;         /* nstate initial states (zeros without an IC array) */
+    int x_array, u_array, ic_array; /* indices in arrays[], -1 when none */
+    int static_hold;         /* is_static_hold: read, no effect (the harness runs dynamics) */
+    hx_user_call user;
+    int line;
+} hx_state_eqn;
+
 typedef struct hx_string {
     int id;
     char *text;
@@ -122,6 +166,12 @@ typedef struct hx_model {
     int nloads;
     hx_string *strings;
     int nstrings;
+    hx_variable *variables;
+    int nvariables;
+    hx_array *arrays;
+    int narrays;
+    hx_state_eqn *state_eqns;
+    int nstate_eqns;
     int nwarnings;
     /* elements that act on the dynamics but that the harness does not model:
      * check can verify the user elements, run and bench refuse */
@@ -149,6 +199,11 @@ const char *hx_model_string(const hx_model *m, int id);
  * needed when a Force_Vector_TwoBody and a Force_Field share ID); -1 and msg
  * when there is none or two. */
 int hx_model_find_force(const hx_model *m, const char *text, int *index, hx_message *msg);
+int hx_model_variable(const hx_model *m, int id);
+int hx_model_array(const hx_model *m, int id);
+/* Index of the Force_StateEqn written ID or stateeqn:ID; -1 and msg when
+ * there is none. */
+int hx_model_find_state_eqn(const hx_model *m, const char *text, int *index, hx_message *msg);
 /* "Force_Vector_TwoBody" or "Force_Field". */
 const char *hx_force_element_name(const hx_force *f);
 

@@ -25,6 +25,11 @@
 typedef struct xml_reader {
     hx_draft d;
     XML_Parser parser;
+    int depth;                     /* of the element open now */
+    const hx_element_spec *texted; /* the element whose text is being collected, or NULL */
+    int text_depth, text_line;
+    char *text;                    /* its text so far */
+    size_t text_length, text_capacity;
 } xml_reader;
 
 void hx_draft_fail(hx_draft *d, int line, const char *fmt, ...)
@@ -218,6 +223,7 @@ static void XMLCALL on_start(void *data, const XML_Char *name, const XML_Char **
 {
     xml_reader *r = data;
     hx_draft *d = &r->d;
+    r->depth++;
     if (d->failed)
         return;
     const int line = (int)XML_GetCurrentLineNumber(r->parser);
@@ -233,6 +239,12 @@ static void XMLCALL on_start(void *data, const XML_Char *name, const XML_Char **
         e.line = line;
         if (read_element(d, spec, atts, &e) == 0)
             spec->build(d, &e);
+        if (spec->text != NULL && !d->failed) { /* its data, up to its end tag */
+            r->texted = spec;
+            r->text_depth = r->depth;
+            r->text_line = line;
+            r->text_length = 0;
+        }
         return;
     }
     if (hx_element_is_output_only(name))
@@ -249,6 +261,41 @@ static void XMLCALL on_start(void *data, const XML_Char *name, const XML_Char **
     if (d->m->nunsimulated++ == 0)
         snprintf(d->m->unsimulated, sizeof d->m->unsimulated, "%s%s%s (line %d)", name,
                  id ? " " : "", id ? id : "", line);
+}
+
+/* The text of an element whose data is read (Reference_Array). */
+static void XMLCALL on_text(void *data, const XML_Char *text, int length)
+{
+    xml_reader *r = data;
+    if (r->texted == NULL || r->d.failed || length <= 0)
+        return;
+    if (r->text_length + (size_t)length + 1 > r->text_capacity) {
+        const size_t capacity = 2 * (r->text_length + (size_t)length + 1);
+        char *grown = realloc(r->text, capacity);
+        if (grown == NULL) {
+            hx_draft_fail(&r->d, r->text_line, "out of memory");
+            return;
+        }
+        r->text = grown;
+        r->text_capacity = capacity;
+    }
+    memcpy(r->text + r->text_length, text, (size_t)length);
+    r->text_length += (size_t)length;
+}
+
+static void XMLCALL on_end(void *data, const XML_Char *name)
+{
+    (void)name;
+    xml_reader *r = data;
+    if (r->texted != NULL && r->depth == r->text_depth) {
+        const hx_element_spec *spec = r->texted;
+        r->texted = NULL;
+        if (r->text != NULL)
+            r->text[r->text_length] = '\0'; /* the buffer always has room for it */
+        if (!r->d.failed)
+            spec->text(&r->d, r->text_line, r->text != NULL ? r->text : "");
+    }
+    r->depth--;
 }
 
 /* Feeds the XML to expat: from the file at d->path, or from text when not NULL. */
@@ -272,6 +319,8 @@ static int parse_source(xml_reader *r, const char *text, size_t length)
     }
     XML_SetUserData(r->parser, r);
     XML_SetStartElementHandler(r->parser, on_start);
+    XML_SetEndElementHandler(r->parser, on_end);
+    XML_SetCharacterDataHandler(r->parser, on_text);
     char buffer[16384];
     size_t offset = 0;
     int done = 0;
@@ -331,6 +380,8 @@ static hx_model *read_model(const char *path, const char *text, size_t length, F
     free(r.d.rcouplers);
     free(r.d.rforces);
     free(r.d.rloads);
+    free(r.d.rstate_eqns);
+    free(r.text);
     if (status != 0) {
         hx_model_free(m);
         return NULL;

@@ -45,6 +45,9 @@ typedef struct hx_element_spec {
     const hx_attr_spec *attrs; /* ends with a NULL name */
     /* NULL: a container (MotionSolve, Model) */
     void (*build)(hx_draft *d, const hx_element_read *e);
+    /* elements with data between their tags (Reference_Array): called at the
+     * end tag with the text, once the element was built; NULL: none read */
+    void (*text)(hx_draft *d, int line, const char *text);
 } hx_element_spec;
 
 /* The table (elements.c), and the elements read and skipped: those that do
@@ -59,5 +62,9 @@ int hx_attr_present(const hx_element_read *e, const char *name);
 double hx_attr_number(const hx_element_read *e, const char *name, double fallback);
 int hx_attr_int(const hx_element_read *e, const char *name, int fallback);
 const char *hx_attr_text(const hx_element_read *e, const char *name);
+
+/* The user-subroutine attributes of an element (usrsub_param_string, the
+ * library, the function names) into u; 0, or -1 with the draft failed. */
+int hx_draft_user_call(hx_draft *d, const hx_element_read *e, hx_user_call *u);
 
 #endif

@@ -2,6 +2,7 @@
 #include <stdlib.h>
 
 #include "sim/simulation.h"
+#include "sim/state_elements.h"
 #include "state/measures.h"
 
 void hx_csv_header(FILE *f, const hx_dynamics *d)
@@ -35,6 +36,7 @@ void hx_csv_header(FILE *f, const hx_dynamics *d)
         for (int j = 0; j < 6; ++j)
             fprintf(f, ",force%d.%s", id, loads[j]);
     }
+    hx_state_elements_csv_header(f, d);
     fprintf(f, ",energy,dissipated,phi,phidot\n");
 }
 
@@ -80,6 +82,7 @@ int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, const hx_ener
         for (int j = 0; j < 6; ++j)
             fprintf(f, ",%.12g", d->element_load[6 * k + j]);
     }
+    hx_state_elements_csv_row(f, d, y);
     fprintf(f, ",%.15g,%.15g,%.3g,%.3g\n", energy->total, hx_dissipated(energy, energy0), phi,
             phidot);
     return 0;

@@ -1,5 +1,6 @@
 /* The right-hand side and its set-up (dynamics.h). */
 #include "sim/dynamics.h"
+#include "sim/state_elements.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -68,9 +69,9 @@ int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg)
         !d->world_aligned || !d->force || !d->torque || hx_state_clone(&d->state, &s->state) != 0 ||
         hx_state_clone(&d->probe, &s->state) != 0)
         return hx_fail(msg, "out of memory");
-    if (hx_bodies_init(d, msg) != 0)
+    if (hx_bodies_init(d, msg) != 0 || hx_state_elements_init(d, msg) != 0)
         return -1;
-    d->load_work = d->nq + d->nu;
+    d->load_work = d->states + d->nstates;
     d->element_work = d->load_work + 1;
     d->n = d->element_work + 1;
     /* scratch: G (nc x nu), A (nc x nc), several vectors of nu and nc */
@@ -97,6 +98,7 @@ void hx_dynamics_free(hx_dynamics *d)
     free(d->force);
     free(d->torque);
     free(d->scratch);
+    hx_state_elements_free(d);
     hx_state_free(&d->state);
     hx_state_free(&d->probe);
     memset(d, 0, sizeof *d);
@@ -120,7 +122,8 @@ int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot)
     memset(d->force, 0, sizeof(double) * 3 * (size_t)nb);
     memset(d->torque, 0, sizeof(double) * 3 * (size_t)nb);
     ydot[d->load_work] = hx_apply_loads(d, t);
-    if (hx_apply_element_forces(d, &ydot[d->element_work]) != 0)
+    if (hx_apply_element_forces(d, &ydot[d->element_work]) != 0 ||
+        hx_apply_state_elements(d, y, ydot) != 0)
         return -1;
     hx_bodies_accelerations(d, y, ydot);
     return hx_apply_constraints(d, t, y, ydot + d->nq);
@@ -130,6 +133,7 @@ int hx_dynamics_initial_state(hx_dynamics *d, double *y)
 {
     memset(y, 0, sizeof(double) * (size_t)d->n);
     hx_bodies_initial_state(d, y);
+    hx_state_elements_initial(d, y);
     d->max_phi = d->max_phidot = 0.0;
     return hx_dynamics_project(d, 0.0, y);
 }

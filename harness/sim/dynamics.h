@@ -7,12 +7,16 @@
  * Bodies are free (position, unit quaternion, velocity, body-axis angular
  * velocity) or hinged/slid to ground by one joint (the joint coordinate
  * AZ(I,J) or DZ(I,J,J), unwrapped, and its rate) (bodies.c). Forces: gravity
- * and loads (loads.c), the user force elements (element_forces.c). Couplers
- * relate joint coordinates through one Lagrange multiplier each, with
- * projection onto the constraints after a step (constraints.c).
+ * and loads (loads.c), the user force elements (element_forces.c) and the
+ * Force_StateEqn elements, whose internal states are integrated with the
+ * bodies' (state_elements.c). Couplers relate joint coordinates through one
+ * Lagrange multiplier each, with projection onto the constraints after a
+ * step (constraints.c).
  *
- * State layout y: [positions (nq) | velocities (nu) | work done by the loads
- * | work done by the force elements]. Units follow the model; mass *
+ * State layout y: [positions (nq) | velocities (nu) | the Force_StateEqn
+ * elements' states (nstates, element by element in the model's order) | work
+ * done by the loads | work done by the force elements, Force_StateEqn ones
+ * included]. Units follow the model; mass *
  * acceleration = ucf * force, as in a solver with an inconsistent unit set
  * (mm, kg, s, N has ucf = 1000).
  */
@@ -41,7 +45,9 @@ typedef struct hx_dynamics {
     double ucf;                 /* acceleration = ucf * force / mass */
     hx_body_dof *dof;
     int nq, nu, n;
+    int states, nstates;        /* y offset and count of the Force_StateEqn elements' states */
     int load_work, element_work; /* y indices of the work done by loads and by force elements */
+    struct hx_state_elements *stateful; /* the Force_StateEqn elements (state_elements.h) */
     hx_binding **coupler_binding; /* per coupler; NULL for the built-in form */
     hx_binding **force_binding;   /* per force element */
     double *lambda;             /* multipliers of the last evaluation */
@@ -50,9 +56,10 @@ typedef struct hx_dynamics {
                                    * for good (on ground, unturned) */
     double *force, *torque;     /* per body, world, torque about the cm */
     double *scratch;
-    /* Non-NULL: 6 outputs per force element, in the element's own axes, that
-     * the evaluation applies as they are instead of calling the elements (the
-     * Newton matrix's frozen differences, newton_matrix.h). */
+    /* Non-NULL: 6 outputs per force element, then 6 per Force_StateEqn, in
+     * the element's own axes, that the evaluation applies as they are instead
+     * of calling the elements (the Newton matrix's frozen differences,
+     * newton_matrix.h); the Force_StateEqn states' rates are then zero. */
     const double *frozen_outputs;
     long evaluations;           /* with the elements called */
     long frozen_evaluations;    /* with their outputs frozen */

@@ -45,21 +45,23 @@ int hx_newton_matrix_init(hx_newton_matrix *nm, hx_dynamics *d, hx_message *msg)
     nm->m = d->nq + d->nu;
     const hx_model *m = d->m;
     const int nf = nm->nf = m->nforces, n = nm->n;
-    const size_t f1 = (size_t)nf + 1;
+    nm->ne = m->nstate_eqns;
+    const size_t f1 = (size_t)nf + 1, o1 = f1 + (size_t)nm->ne; /* output groups */
     nm->source = calloc(f1, sizeof *nm->source);
     nm->why = calloc(f1 * HX_NEWTON_WHY, 1);
     nm->column_body = calloc((size_t)nm->m + 1, sizeof *nm->column_body);
     nm->touches = calloc(f1 * (size_t)m->nbodies, 1);
-    nm->outputs = calloc(6 * f1, sizeof(double));
+    nm->outputs = calloc(6 * o1, sizeof(double));
     nm->partials = calloc(72 * f1, sizeof(double));
     nm->dout = calloc(6 * f1 * ((size_t)nm->m + 1), sizeof(double));
-    nm->response = calloc(6 * f1 * (size_t)n, sizeof(double));
-    nm->unit = calloc(6 * f1, sizeof(double));
+    nm->response = calloc(6 * o1 * (size_t)n, sizeof(double));
+    nm->unit = calloc(6 * o1, sizeof(double));
     nm->y = calloc(3 * (size_t)n, sizeof(double));
     nm->plus = calloc(24 * f1, sizeof(double));
     hx_messages_init(&nm->twin_messages, NULL);
     if (!nm->source || !nm->why || !nm->column_body || !nm->touches || !nm->outputs ||
-        !nm->partials || !nm->dout || !nm->response || !nm->unit || !nm->y || !nm->plus) {
+        !nm->partials || !nm->dout || !nm->response || !nm->unit || !nm->y || !nm->plus ||
+        hx_state_jacobian_init(&nm->states, d, msg) != 0) {
         hx_newton_matrix_free(nm);
         return hx_fail(msg, "out of memory");
     }
@@ -112,6 +114,7 @@ void hx_newton_matrix_free(hx_newton_matrix *nm)
     free(nm->unit);
     free(nm->y);
     free(nm->plus);
+    hx_state_jacobian_free(&nm->states);
     hx_messages_destroy(&nm->twin_messages);
     memset(nm, 0, sizeof *nm);
 }
@@ -279,7 +282,8 @@ int hx_newton_matrix_build(hx_newton_matrix *nm, double t, const double *y, doub
     nm->builds++;
     memcpy(nm->y, y, sizeof(double) * (size_t)n);
     hx_dynamics_set_state(d, t, y);
-    if (outputs_and_partials(nm) != 0 || output_derivatives(nm, t) != 0)
+    if (outputs_and_partials(nm) != 0 || output_derivatives(nm, t) != 0 ||
+        hx_state_jacobian_outputs(&nm->states, t, y, nm->outputs + 6 * nf, &nm->partial_calls) != 0)
         return -1;
     /* J_frozen, column by column; the work accumulators' columns are zero */
     memset(J, 0, sizeof(double) * (size_t)n * (size_t)n);
@@ -295,13 +299,14 @@ int hx_newton_matrix_build(hx_newton_matrix *nm, double t, const double *y, doub
         for (int r = 0; r < n; ++r)
             J[r + (size_t)n * c] = (nm->fp[r] - nm->fm[r]) / (2.0 * h);
     }
-    if (nf == 0)
+    const int groups = nf + nm->ne; /* the force elements', then the state elements' */
+    if (groups == 0)
         return 0;
     /* B_k: the response to each unit output, less the response to none */
-    memset(nm->unit, 0, sizeof(double) * 6 * (size_t)nf);
+    memset(nm->unit, 0, sizeof(double) * 6 * (size_t)groups);
     if (frozen_rhs(nm, t, y, nm->unit, nm->fm) != 0)
         return -1;
-    for (int k = 0; k < nf; ++k)
+    for (int k = 0; k < groups; ++k)
         for (int j = 0; j < 6; ++j) {
             nm->unit[6 * k + j] = 1.0;
             const int status = frozen_rhs(nm, t, y, nm->unit, nm->fp);
@@ -325,6 +330,7 @@ int hx_newton_matrix_build(hx_newton_matrix *nm, double t, const double *y, doub
                     col[r] += B[r] * dout[j];
             }
         }
+    hx_state_jacobian_add(&nm->states, nm->response + (size_t)n * 6 * (size_t)nf, J);
     return 0;
 }
 
@@ -341,4 +347,5 @@ void hx_newton_matrix_describe(const hx_newton_matrix *nm, char *text, size_t si
             len += snprintf(text + len, size - (size_t)len, "\n    %s %d by differences: %s",
                             nm->d->force_binding[k]->element, nm->d->force_binding[k]->id,
                             nm->why + k * HX_NEWTON_WHY);
+    hx_state_jacobian_describe(&nm->states, text, size);
 }

@@ -21,6 +21,11 @@
  *   equals the GFOSUB result (to 1e-9, checked at every build), otherwise
  *   central differences of that element alone at perturbed states (§5).
  *
+ * Force_StateEqn elements (state_jacobian.h): their outputs enter like the
+ * force elements' (B_k from the frozen right-hand side, which holds their
+ * states' rates at zero), with d out/dy from their partials; the rows of
+ * their states are their partials alone.
+ *
  * The columns of the work accumulators are zero (nothing depends on them);
  * their rows are the powers, differentiated like the rest.
  */
@@ -28,6 +33,7 @@
 #define HX_SIM_NEWTON_MATRIX_H
 
 #include "sim/dynamics.h"
+#include "sim/state_jacobian.h"
 
 typedef enum hx_partials_source {
     HX_PARTIALS_FIESUB,     /* a Force_Field's own dfddis and dfdvel */
@@ -41,6 +47,9 @@ typedef struct hx_newton_matrix {
     hx_dynamics *d;
     int n, m;                  /* state size; positions and velocities */
     int nf;                    /* force elements */
+    int ne;                    /* Force_StateEqn elements: outputs, unit and response hold
+                                * theirs after the force elements' */
+    hx_state_jacobian states;  /* their partials */
     hx_partials_source *source; /* per force element */
     char *why;                 /* per element, HX_NEWTON_WHY: why differences */
     int *column_body;          /* per column < m: the body it moves */

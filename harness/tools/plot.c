@@ -61,3 +61,25 @@ int hx_plot_rig(const char *csv, const char *prefix, const char *title, int a, i
     snprintf(path, sizeof path, "%s.gp", prefix);
     return hx_gnuplot(path, script);
 }
+
+int hx_plot_states(const char *csv, const char *prefix, const char *title, int first,
+                   int nstates)
+{
+    char script[8192];
+    int n = snprintf(script, sizeof script,
+                     "set datafile separator ','\nset datafile columnheaders\n"
+                     "set terminal pngcairo size 900,500 font ',11'\nset grid\nset key outside\n"
+                     "set output '%s_states.png'\n"
+                     "set title '%s: internal states along the path' noenhanced\n"
+                     "set xlabel 't'\nset ylabel 'state (model units)'\nplot ",
+                     prefix, title);
+    for (int k = 0; k < nstates && n > 0 && (size_t)n < sizeof script; ++k)
+        n += snprintf(script + n, sizeof script - (size_t)n,
+                      "%s'%s' using 1:%d with lines lw 2 title columnheader(%d) noenhanced",
+                      k ? ", " : "", csv, first + k, first + k);
+    if (n > 0 && (size_t)n < sizeof script)
+        snprintf(script + n, sizeof script - (size_t)n, "\n");
+    char path[4096];
+    snprintf(path, sizeof path, "%s_states.gp", prefix);
+    return hx_gnuplot(path, script);
+}

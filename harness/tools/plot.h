@@ -13,4 +13,9 @@ int hx_gnuplot(const char *path, const char *script);
 int hx_plot_rig(const char *csv, const char *prefix, const char *title, int a, int b,
                 unsigned directions);
 
+/* PREFIX_states.png: a Force_StateEqn rig's states against time, from its
+ * CSV (the states from column first, one panel for all). */
+int hx_plot_states(const char *csv, const char *prefix, const char *title, int first,
+                   int nstates);
+
 #endif

@@ -13,6 +13,7 @@
 #include "usrsub/core/bushing_states.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 /* the law's columns (what it depends on) and rows (what it gives) */
@@ -151,54 +152,200 @@ static void balance_jacobian(const usrsub_bushing *b, const mount_unknowns *m,
         }
 }
 
+/* The law where the mounts' unknowns are w, and the balance's residual G
+ * (max |G_i| in *residual, the size of its terms in *size; NaN-safe: a
+ * non-finite G gives an infinite residual). */
+typedef struct balance_point {
+    double s[6], sd[6], q[6], qd[6];
+    double G[6], residual, size;
+    double term[6]; /* each row's size: |K s| + |C sdot| + |F| */
+    law_value v;
+} balance_point;
+
+/* Newton's merit: the rows' residuals over their own sizes, squared and
+ * summed: its decrease along the Newton step is guaranteed for a short
+ * enough step (the max norm's is not) */
+static double merit(const balance_point *pt, int n)
+{
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double r = pt->G[i] / (pt->term[i] > 0.0 ? pt->term[i] : 1.0);
+        sum += r * r;
+    }
+    return isfinite(sum) ? sum : INFINITY;
+}
+
+/* What the balance is evaluated at, besides the unknowns. */
+typedef struct balance_problem {
+    const usrsub_bushing *b;
+    const usrsub_mount_limits *limits;
+    const usrsub_state_layout *l;
+    mount_unknowns m;
+    const double *u, *z, *sm, *xr;
+} balance_problem;
+
+static void balance_at(const balance_problem *bp, const double *w, balance_point *pt)
+{
+    const usrsub_state_layout *l = bp->l;
+    memset(pt->s, 0, sizeof pt->s);
+    memset(pt->sd, 0, sizeof pt->sd);
+    for (int a = 0; a < l->nmount; ++a)
+        pt->s[l->mount[a]] = bp->sm[a];
+    for (int i = 0; i < bp->m.n; ++i)
+        (bp->m.damped[i] ? pt->sd : pt->s)[bp->m.dir[i]] = w[i];
+    for (int k = 0; k < 6; ++k)
+        pt->q[k] = bp->u[k] - pt->s[k], pt->qd[k] = bp->u[6 + k] - pt->sd[k];
+    law(bp->b, bp->limits, l, pt->q, pt->qd, bp->z, bp->xr, &pt->v);
+    pt->residual = pt->size = 0.0;
+    for (int i = 0; i < bp->m.n; ++i) {
+        const int k = bp->m.dir[i];
+        const usrsub_bushing_direction *d = &bp->b->dir[k];
+        const double spring = d->mount_k * pt->s[k], damper = d->mount_c * pt->sd[k];
+        pt->G[i] = spring + damper + pt->v.F[k];
+        pt->term[i] = fabs(spring) + fabs(damper) + fabs(pt->v.F[k]);
+        pt->size = fmax(pt->size, pt->term[i]);
+        pt->residual = isfinite(pt->G[i]) ? fmax(pt->residual, fabs(pt->G[i])) : INFINITY;
+    }
+}
+
+static int converged(const balance_point *pt)
+{
+    return pt->residual <= 1e-15 * pt->size || pt->residual == 0.0;
+}
+
+/* Newton's method with a backtracking line search on the merit, from w; stops
+ * at rounding or where no step lowers the merit. Returns the steps taken. */
+static int newton(const balance_problem *bp, double *w, balance_point *pt)
+{
+    const int n = bp->m.n;
+    int iteration = 0;
+    while (!converged(pt) && iteration < 40) {
+        double A[36], step[6];
+        memcpy(step, pt->G, sizeof step);
+        balance_jacobian(bp->b, &bp->m, &pt->v, A);
+        if (solve(n, A, step, 1) != 0)
+            break;
+        int accepted = 0;
+        const double before = merit(pt, n);
+        for (double lambda = 1.0; lambda > 1e-12 && !accepted; lambda *= 0.5) {
+            double wt[6];
+            int negligible = 1;
+            for (int i = 0; i < n; ++i) {
+                wt[i] = w[i] - lambda * step[i];
+                negligible &= fabs(lambda * step[i]) <= 4e-16 * fabs(w[i]);
+            }
+            if (negligible)
+                break;
+            balance_point trial;
+            balance_at(bp, wt, &trial);
+            if (merit(&trial, n) < before) {
+                memcpy(w, wt, sizeof wt);
+                *pt = trial;
+                accepted = 1;
+            }
+        }
+        if (!accepted)
+            break;
+        ++iteration;
+    }
+    return iteration;
+}
+
+/* Unknown i alone, the others held: its own row rises with it without bound
+ * (the mount's and the bushing's dampers for a rate, the springs for a
+ * deflection), so a root is bracketed by stepping out and found by the
+ * Illinois form of regula falsi. Friction can fold a row where Newton's
+ * method from the wrong side stalls; this cannot. */
+static void one_unknown(const balance_problem *bp, int i, double *w, balance_point *pt)
+{
+    double a = w[i], fa = pt->G[i];
+    if (!isfinite(fa) || fa == 0.0)
+        return;
+    double wt[6], step = 1e-3 * (fabs(a) + 1e-3);
+    memcpy(wt, w, sizeof wt);
+    double c = a, fc = fa;
+    balance_point trial;
+    for (int k = 0; k < 200; ++k, step *= 2.0) { /* out to where the sign turns */
+        c = a - (fa > 0.0 ? step : -step);
+        wt[i] = c;
+        balance_at(bp, wt, &trial);
+        fc = trial.G[i];
+        if (!isfinite(fc))
+            return;
+        if ((fc > 0.0) != (fa > 0.0))
+            break;
+        a = c, fa = fc;
+    }
+    if ((fc > 0.0) == (fa > 0.0))
+        return;
+    for (int k = 0, side = 0; k < 200 && fc != 0.0; ++k) {
+        const double x = (a * fc - c * fa) / (fc - fa);
+        if (!(fabs(c - a) > 1e-15 * fmax(fabs(a), fabs(c))) || !isfinite(x))
+            break;
+        wt[i] = x;
+        balance_at(bp, wt, &trial);
+        const double fx = trial.G[i];
+        if ((fx > 0.0) == (fc > 0.0)) {
+            c = x, fc = fx;
+            if (side == -1)
+                fa *= 0.5;
+            side = -1;
+        } else {
+            a = x, fa = fx;
+            if (side == 1)
+                fc *= 0.5;
+            side = 1;
+        }
+    }
+    w[i] = fabs(fa) < fabs(fc) ? a : c;
+    balance_at(bp, w, pt);
+}
+
+/* The mounts' balance: Newton's method; where it stalls, sweeps of the one-
+ * unknown solve (the rows are dominated by their own unknowns) and Newton's
+ * method again to finish. */
+static int solve_balance(const balance_problem *bp, double *w, balance_point *pt)
+{
+    int steps = newton(bp, w, pt);
+    for (int sweep = 0; sweep < 30 && !converged(pt); ++sweep) {
+        for (int i = 0; i < bp->m.n; ++i)
+            one_unknown(bp, i, w, pt);
+        steps += newton(bp, w, pt);
+    }
+    return steps;
+}
+
 int usrsub_bushing_states_eval(const usrsub_bushing *b, const usrsub_mount_limits *limits,
                                const usrsub_state_layout *l, const double u[12],
                                const double *x, double *xdot, double y[6],
                                usrsub_state_partials *partials, usrsub_message *msg)
 {
-    const double *z = x + 0, *sm = x + l->friction, *xr = x + l->friction + l->nmount;
-    mount_unknowns m = {0, {0}, {0}};
+    balance_problem bp = {b, limits, l, {0, {0}, {0}}, u, x, x + l->friction,
+                          x + l->friction + l->nmount};
+    mount_unknowns *mu = &bp.m;
     for (int a = 0; a < l->nmount; ++a)
-        m.dir[m.n] = l->mount[a], m.damped[m.n++] = 1;
+        mu->dir[mu->n] = l->mount[a], mu->damped[mu->n++] = 1;
     for (int c = 0; c < l->nfollow; ++c)
-        m.dir[m.n] = l->follow[c], m.damped[m.n++] = 0;
-    double w[6] = {0, 0, 0, 0, 0, 0}, q[6], qd[6], s[6], sd[6];
-    law_value v;
-    double previous = INFINITY;
-    for (int iteration = 0;; ++iteration) {
-        memset(s, 0, sizeof s);
-        memset(sd, 0, sizeof sd);
-        for (int a = 0; a < l->nmount; ++a)
-            s[l->mount[a]] = sm[a];
-        for (int i = 0; i < m.n; ++i)
-            (m.damped[i] ? sd : s)[m.dir[i]] = w[i];
-        for (int k = 0; k < 6; ++k)
-            q[k] = u[k] - s[k], qd[k] = u[6 + k] - sd[k];
-        law(b, limits, l, q, qd, z, xr, &v);
-        if (m.n == 0)
-            break;
-        /* the balance K s + C sdot + F = 0 of each mount, to rounding */
-        double G[6], A[36], size = 0.0, residual = 0.0;
-        for (int i = 0; i < m.n; ++i) {
-            const usrsub_bushing_direction *d = &b->dir[m.dir[i]];
-            const double spring = d->mount_k * s[m.dir[i]], damper = d->mount_c * sd[m.dir[i]];
-            G[i] = spring + damper + v.F[m.dir[i]];
-            size = fmax(size, fabs(spring) + fabs(damper) + fabs(v.F[m.dir[i]]));
-            residual = fmax(residual, fabs(G[i]));
-        }
-        /* converged to rounding: tiny, or no longer falling once small */
-        if (residual <= 1e-15 * size || residual == 0.0 ||
-            (residual <= 1e-10 * size && residual >= 0.5 * previous))
-            break;
-        previous = residual;
-        balance_jacobian(b, &m, &v, A);
-        if (iteration == 40 || solve(m.n, A, G, 1) != 0 || !isfinite(G[0]))
-            return usrsub_fail(msg, "the mounts' series balance has no solution near deformation"
-                               " (%g %g %g %g %g %g) (residual %g after %d Newton steps)",
-                               u[0], u[1], u[2], u[3], u[4], u[5], residual, iteration);
-        for (int i = 0; i < m.n; ++i)
-            w[i] -= G[i];
+        mu->dir[mu->n] = l->follow[c], mu->damped[mu->n++] = 0;
+    const mount_unknowns m = bp.m;
+    /* the balance K s + C sdot + F = 0 of each mount, to rounding, or to
+     * within 1e-8 of its terms where rounding in the law (a mount far stiffer
+     * than its damping, friction's large terms) keeps it from falling further */
+    double w[6] = {0, 0, 0, 0, 0, 0};
+    balance_point pt;
+    balance_at(&bp, w, &pt);
+    const int steps = m.n > 0 ? solve_balance(&bp, w, &pt) : 0;
+    if (m.n > 0 && !(pt.residual <= 1e-8 * pt.size || pt.residual == 0.0)) {
+        char states[160] = "";
+        for (int i = 0, n = 0; i < l->n && n < (int)sizeof states - 16; ++i)
+            n += snprintf(states + n, sizeof states - (size_t)n, i ? " %g" : "%g", x[i]);
+        return usrsub_fail(msg, "the mounts' series balance has no solution near deformation"
+                           " (%g %g %g %g %g %g), rate (%g %g %g %g %g %g) and states (%s):"
+                           " residual %g of %g after %d Newton steps", u[0], u[1], u[2], u[3],
+                           u[4], u[5], u[6], u[7], u[8], u[9], u[10], u[11], states, pt.residual,
+                           pt.size, steps);
     }
+    const law_value v = pt.v;
     memcpy(y, v.F, sizeof v.F);
     for (int i = 0; i < l->friction; ++i)
         xdot[i] = v.zdot[i];

@@ -27,10 +27,11 @@ void usrsub_projection_angles(const double R[9], double a[3])
 double usrsub_rest_phi(double psi, double ct, double az)
 {
     /* (R00, R10) = Rz(psi) (cos phi, cos theta sin phi): AZ - psi is the
-     * angle of (cos phi, ct sin phi) */
+     * angle of (cos phi, ct sin phi), so (cos phi, sin phi) lies along
+     * (|ct| cos(AZ - psi), sign(ct) sin(AZ - psi)): near theta = pi too */
     double s, c;
     usrsub_sincos(az - psi, &s, &c);
-    return usrsub_atan2(s, ct * c);
+    return usrsub_atan2(copysign(1.0, ct) * s, fabs(ct) * c);
 }
 
 static double det3(const double m[9])

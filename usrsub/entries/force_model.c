@@ -142,10 +142,11 @@ void *force_model_setup(const element_signature *sig, void *ctx, element_setup_r
     const char *ends = "the list";
     switch (code) {
     case FORCE_BUSHING:
-        string_id = u.next < u.npar ? (int)u.par[u.next] : 0;
         m->bushing = property_named(&u, "the Reference_String id of the .gbs bushing file", "gbs",
                                     read_bushing, free_bushing, report);
         status = m->bushing != NULL ? 0 : -1;
+        if (status == 0) /* checked a whole id by property_named */
+            string_id = (int)u.par[u.next - 1];
         if (status == 0 && m->bushing->has_states && interface != ELEMENT_YFOSUB)
             status = usrsub_fail(&report->error, "Reference_String %d: the bushing has internal"
                                  " states (friction, a mount or a rubber filter): it runs as a"
@@ -194,6 +195,8 @@ void *force_model_setup(const element_signature *sig, void *ctx, element_setup_r
      * az needs the rest rule; every component of the rotation vector does */
     if (m->rotation_measure == USRSUB_ROTATION_VECTOR)
         m->needs.twist |= m->needs.rotation;
+    m->constant_partials = code == FORCE_FLEX_JOINT &&
+                           m->rotation_measure != USRSUB_ROTATION_VECTOR;
     if (status == 0)
         status = usrsub_user_list_end(&u, ends, &report->error);
     if (status != 0) {

@@ -25,6 +25,7 @@ typedef struct force_model {
     deformation_needs needs;
     int rotation_measure;              /* enum usrsub_rotation_measure */
     usrsub_state_layout states;        /* the YFOSUB form's internal states */
+    int constant_partials;             /* -K and -D of a flexible joint on projection angles */
 } force_model;
 
 /* Element cache set-up of a force element; ctx points to the interface

@@ -72,9 +72,15 @@ static int read_matrix(const usrsub_teim_file *f, const char *block, const usrsu
         double row[6];
         if (read_row(f, block, &t->row[i], i, row, msg) != 0)
             return -1;
-        for (int j = 0; j < 6; ++j)
+        for (int j = 0; j < 6; ++j) {
             m[i + 6 * j] = row[j] * usrsub_direction_force_factor(u, i) * pow(u->time, time_power) /
                            usrsub_direction_displacement_factor(u, j);
+            /* the entries hand -K and -D out as the partials, unchecked: finite here */
+            if (!isfinite(m[i + 6 * j]))
+                return usrsub_fail(msg, "'%s' line %d: [%s] row %d, column %d (%g) is out of range"
+                                   " in the model's units", f->path, t->row[i].line, block, i + 1,
+                                   j + 1, row[j]);
+        }
     }
     return 0;
 }

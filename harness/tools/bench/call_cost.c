@@ -8,6 +8,7 @@
 #include <string.h>
 #include "base/clock.h"
 
+#include "host/state_inputs.h"
 #include "state/measures.h"
 #include "tools/bench/call_floor.h"
 #include "tools/check/coupler_ranges.h"
@@ -95,6 +96,63 @@ static void run_fiesub(void *ctx, long calls)
         sink += b->field[0] + b->dfd[0];
     }
     b->sink += sink;
+}
+
+/* YFOSUB (partial NULL) or one of its partial routines at sampled states
+ * and inputs; data holds SAMPLE_POINTS rows of states, then of inputs, then
+ * the rates and the output or matrix. */
+typedef struct state_bench {
+    usrsub_yfosub_fn *fn;
+    usrsub_state_partial_fn *partial;
+    int id, npar, nstate, ninput;
+    double *par;
+    double sink;
+    double data[];
+} state_bench;
+
+static void run_state(void *ctx, long calls)
+{
+    state_bench *b = ctx;
+    int id = b->id, npar = b->npar, ns = b->nstate, ni = b->ninput, no = 6, flag = 0;
+    double time = 0.0, sink = 0.0;
+    double *states = b->data, *input = states + SAMPLE_POINTS * ns;
+    double *stated = input + SAMPLE_POINTS * ni, *out = stated + ns;
+    for (long k = 0; k < calls; ++k) {
+        const int s = (int)(k & (SAMPLE_POINTS - 1));
+        if (b->fn != NULL)
+            b->fn(&id, &time, b->par, &npar, &flag, &flag, &ns, states + s * ns, &ni,
+                  input + s * ni, &no, stated, out);
+        else
+            b->partial(&id, &time, b->par, &npar, &flag, &ns, states + s * ns, &ni,
+                       input + s * ni, &no, out);
+        sink += out[0];
+    }
+    b->sink += sink;
+}
+
+/* A Force_StateEqn's routine `which` (0 YFOSUB, 1.. its partials) at its
+ * initial states and its inputs at the model's state, each wobbled a little. */
+static state_bench *state_points(hx_session *s, hx_binding *b, int which)
+{
+    const hx_state_eqn *f = &s->model->state_eqns[b->index];
+    const int ns = f->nstate, ni = f->ninput;
+    const size_t columns = (size_t)(ns + ni);
+    const size_t size = (size_t)SAMPLE_POINTS * columns + (size_t)(ns + 6) * columns + 7;
+    state_bench *sb = calloc(1, sizeof *sb + sizeof(double) * size);
+    if (sb == NULL)
+        return NULL;
+    *sb = (state_bench){which == 0 ? b->yfosub : NULL,
+                        which > 0 ? b->state_partial[which - 1] : NULL, b->id, b->npar, ns, ni,
+                        b->par, 0.0};
+    double *input = sb->data + SAMPLE_POINTS * ns;
+    hx_state_eqn_inputs(&s->state, b->index, input);
+    for (int k = 0; k < SAMPLE_POINTS; ++k) {
+        for (int i = 0; i < ns; ++i)
+            sb->data[k * ns + i] = f->initial[i] * (1.0 + 1e-3 * ((k * 5 + i) % 11));
+        for (int i = 0; i < ni; ++i)
+            input[k * ni + i] = input[i] * (1.0 + 1e-3 * ((k * 7 + i) % 13));
+    }
+    return sb;
 }
 
 /* Calls per batch so that a batch takes about BATCH_NS. */
@@ -233,6 +291,7 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
                 snprintf(r->function, sizeof r->function, "%s", b->names[fn]);
                 r->host_calls = r->dependency_calls = 0;
                 r->force_index = -1;
+                r->in_rhs = 1;
             }
         } else if (b->kind == HX_BIND_GFOSUB && rows < capacity) {
             hx_call dep, *eval = calloc(1, sizeof *eval);
@@ -258,6 +317,7 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
             r->dependency_calls = dep.host_calls;
             r->host_calls = eval->host_calls;
             r->force_index = b->index;
+            r->in_rhs = 1;
         } else if (b->kind == HX_BIND_FIESUB && rows < capacity) {
             fiesub_bench *fb = calloc(1, sizeof *fb);
             fb->fn = b->fiesub, fb->id = b->id, fb->npar = b->npar, fb->par = b->par;
@@ -270,6 +330,23 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
             snprintf(r->function, sizeof r->function, "%s", b->names[0]);
             r->host_calls = r->dependency_calls = 0;
             r->force_index = b->index;
+            r->in_rhs = 1;
+        } else if (b->kind == HX_BIND_YFOSUB) {
+            for (int which = 0; which < 5 && rows < capacity; ++which) {
+                state_bench *sb = which == 0 || b->state_partial[which - 1] != NULL
+                                      ? state_points(s, b, which) : NULL;
+                if (sb == NULL)
+                    continue; /* a partial routine the library does not export */
+                contexts[ncontexts++] = sb;
+                replay_of[rows] = -1;
+                entries[rows] = (timed_entry){run_state, sb, 0, NULL};
+                hx_call_cost *r = &costs[rows++];
+                snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
+                snprintf(r->function, sizeof r->function, "%s", b->names[which]);
+                r->host_calls = r->dependency_calls = 0;
+                r->force_index = -1;
+                r->in_rhs = which == 0;
+            }
         }
     }
     int timed = rows;

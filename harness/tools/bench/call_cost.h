@@ -17,7 +17,9 @@ typedef struct hx_call_cost {
     double median_ns, min_ns, max_ns;
     int host_calls;       /* per evaluation */
     int dependency_calls; /* in the dependency pass */
-    int force_index;      /* the model's force element, or -1 (a coupler) */
+    int force_index;      /* the model's force element, or -1 (a coupler, a Force_StateEqn) */
+    int in_rhs;           /* the right-hand side calls it (a state equation's partial
+                           * routines: only the Newton matrix does) */
     double *rounds;       /* ns per call in each round, in round order */
     /* the floor (tools/bench/call_floor.h): an empty call, the host alone
      * answering one evaluation's queries (0 for FIESUB and couplers), and the

@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host/state_inputs.h"
+#include "sim/state_elements.h"
 #include "state/measures.h"
 
 /* ---- stand-in entries: replay what the real entry returned -------------------- */
@@ -53,13 +55,42 @@ static void STDCALL standin_fiesub(int *id, double *time, double *par, int *npar
     memcpy(dfdvel, out + 42, 36 * sizeof(double));
 }
 
+/* A Force_StateEqn's: its state rates, then its outputs. */
+static void STDCALL standin_yfosub(int *id, double *time, double *par, int *npar, int *dflag,
+                                   int *iflag, int *nstate, double *states, int *ninput,
+                                   double *input, int *noutpt, double *stated, double *output)
+{
+    (void)id, (void)time, (void)npar, (void)dflag, (void)iflag, (void)states, (void)ninput;
+    (void)input, (void)noutpt;
+    const double *out = standin_of(par)->out[0];
+    memcpy(stated, out, sizeof(double) * (size_t)*nstate);
+    memcpy(output, out + *nstate, 6 * sizeof(double));
+}
+
 /* The real entries and USER list of a binding, kept while stand-ins run. */
 typedef struct saved_entries {
     usrsub_coupler_fn *coupler[3];
     usrsub_gfosub_fn *gfosub;
     usrsub_fiesub_fn *fiesub;
+    usrsub_yfosub_fn *yfosub;
     double *par;
 } saved_entries;
+
+/* A Force_StateEqn's rates and outputs at d's state, states from y, into out. */
+static int record_state_eqn(hx_dynamics *d, hx_binding *b, const double *y, double *out)
+{
+    const hx_state_eqn *f = &d->m->state_eqns[b->index];
+    if (f->nstate + 6 > 81)
+        return -1; /* more states than a stand-in replays */
+    double *work = malloc(sizeof(double) * (size_t)(f->nstate + f->ninput + 1));
+    if (work == NULL)
+        return -1;
+    memcpy(work, y + d->stateful->offset[b->index], sizeof(double) * (size_t)f->nstate);
+    hx_state_eqn_inputs(&d->state, b->index, work + f->nstate);
+    hx_call_yfosub(b, &d->state, work, work + f->nstate, 0, 0, out, out + f->nstate, NULL);
+    free(work);
+    return 0;
+}
 
 /* One stand-in per binding, recording each entry's outputs at the state of y. */
 static int record_standins(hx_session *s, hx_dynamics *d, const double *y, standin **records)
@@ -86,6 +117,9 @@ static int record_standins(hx_session *s, hx_dynamics *d, const double *y, stand
                 hx_call_coupler(b, which, &d->state, disp, c->njoints, 0, st->out[which], NULL);
         } else if (b->kind == HX_BIND_GFOSUB) {
             hx_call_gfosub(b, &d->state, 0, 0, st->out[0], NULL);
+        } else if (b->kind == HX_BIND_YFOSUB) {
+            if (record_state_eqn(d, b, y, st->out[0]) != 0)
+                return -1;
         } else {
             double disp[6], velo[6];
             hx_force_deformation(&d->state, b->index, disp, velo);
@@ -101,12 +135,14 @@ static void swap_in_standins(hx_session *s, standin **records, saved_entries *sa
     for (int k = 0; k < s->bindings.count; ++k) {
         hx_binding *b = &s->bindings.items[k];
         saved[k] = (saved_entries){{b->coupler[0], b->coupler[1], b->coupler[2]}, b->gfosub,
-                                   b->fiesub, b->par};
+                                   b->fiesub, b->yfosub, b->par};
         b->par = records[k]->par;
         if (b->kind == HX_BIND_COUPLER)
             memcpy(b->coupler, standin_coupler, sizeof b->coupler);
         else if (b->kind == HX_BIND_GFOSUB)
             b->gfosub = standin_gfosub;
+        else if (b->kind == HX_BIND_YFOSUB)
+            b->yfosub = standin_yfosub;
         else
             b->fiesub = standin_fiesub;
     }
@@ -119,6 +155,7 @@ static void restore_entries(hx_session *s, const saved_entries *saved)
         memcpy(b->coupler, saved[k].coupler, sizeof b->coupler);
         b->gfosub = saved[k].gfosub;
         b->fiesub = saved[k].fiesub;
+        b->yfosub = saved[k].yfosub;
         b->par = saved[k].par;
     }
 }
@@ -160,7 +197,7 @@ typedef struct standin_bench {
 static void run_standins(void *ctx, long calls)
 {
     standin_bench *b = ctx;
-    double out[81], disp[6] = {0}, velo[6] = {0}, t = 0.0, sink = 0.0;
+    double out[81], disp[6] = {0}, velo[6] = {0}, states[81] = {0}, t = 0.0, sink = 0.0;
     for (long k = 0; k < calls; ++k)
         for (int e = 0; e < b->s->bindings.count; ++e) {
             hx_binding *bd = &b->s->bindings.items[e];
@@ -171,7 +208,12 @@ static void run_standins(void *ctx, long calls)
                     standin_coupler[which](&id, &t, par, &npar, disp, &nd, &flag, out);
             else if (bd->kind == HX_BIND_GFOSUB)
                 standin_gfosub(&id, &t, par, &npar, &flag, &flag, out);
-            else
+            else if (bd->kind == HX_BIND_YFOSUB) {
+                const hx_state_eqn *f = &b->s->model->state_eqns[bd->index];
+                int ns = f->nstate, ni = 0, no = 6;
+                standin_yfosub(&id, &t, par, &npar, &flag, &flag, &ns, states, &ni, disp, &no,
+                               out, out + ns);
+            } else
                 standin_fiesub(&id, &t, par, &npar, disp, velo, &flag, &flag, out, out + 6,
                                out + 42);
             sink += out[0];
@@ -208,7 +250,8 @@ int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int cap
                                    {run_rhs, &replayed, replay},
                                    {run_standins, &alone, alone_ns}};
         *ncosts = hx_measure_call_costs_with(s, repeats, costs, capacity, bodies, 3);
-        out->user_calls = *ncosts;
+        for (int k = 0; k < *ncosts; ++k)
+            out->user_calls += costs[k].in_rhs;
         for (int r = 0; r < repeats; ++r) {
             harness[r] = replay[r] - alone_ns[r];
             user[r] = real[r] - harness[r];

@@ -73,7 +73,7 @@ typedef struct jv_context {
     double t;
     const double *y;
     double *plus, *minus, *fplus, *fminus;
-    int m; /* positions and velocities: the dynamics proper */
+    int m; /* positions, velocities and element states: the dynamics proper */
     double scale;
     int evaluations;
 } jv_context;
@@ -125,7 +125,9 @@ int hx_estimate_stability(hx_dynamics *d, double t, const double *y, hx_stabilit
                           hx_message *msg)
 {
     memset(out, 0, sizeof *out);
-    const int n = d->n, m = d->nq + d->nu;
+    /* the element states follow the velocities (dynamics.h): bristles that
+     * slide fast are a model's fastest mode */
+    const int n = d->n, m = d->nq + d->nu + d->nstates;
     double *work = calloc(4 * (size_t)n + 5 * (size_t)m + 8, sizeof(double));
     if (work == NULL)
         return hx_fail(msg, "out of memory");

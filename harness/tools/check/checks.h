@@ -5,6 +5,8 @@
  *  - couplers: COUXX against differences of COUSUB and COUXX2 against
  *    differences of COUXX, at points that vary each joint on its own;
  *  - FIESUB: dfddis and dfdvel against differences of the field;
+ *  - Force_StateEqn: YFOXX, YFOXU, YFOYX and YFOYU against differences of
+ *    YFOSUB in each state and input;
  *  - GFOSUB: the dependency audit (every body state the force depends on is
  *    reached by a declared query, every declared query is used, nothing is
  *    read outside them), at states and times spread over the first second;
@@ -24,6 +26,8 @@
 
 int hx_check_coupler(hx_session *s, hx_binding *b, FILE *out);
 int hx_check_field_partials(hx_session *s, hx_binding *b, FILE *out);
+/* Force_StateEqn: YFOXX, YFOXU, YFOYX, YFOYU against differences of YFOSUB. */
+int hx_check_state_partials(hx_session *s, hx_binding *b, FILE *out);
 int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out);
 int hx_audit_history(hx_session *s, hx_binding *b, FILE *out);
 /* What the host noted of the element over every call so far. */

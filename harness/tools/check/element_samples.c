@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+#include "host/state_inputs.h"
 #include "state/measures.h"
 
 double hx_jitter(unsigned *seed)
@@ -17,24 +18,38 @@ double hx_sample_time(const hx_model *m, int k)
     return k == 0 ? 0.0 : second * (double)k / (HX_FORCE_SAMPLES - 1);
 }
 
-void hx_sample_element_state(const hx_session *s, int force, int k, double disp[6],
-                             double velo[6], double scale[12])
+/* The typical steps of a model: 1 mm, 0.02 rad, and those over 10 ms. */
+static void typical_steps(const hx_model *m, double *length, double *angle, double *rate)
 {
-    const hx_model *m = s->model;
     const double L = m->has_units ? m->unit_scales[USRSUB_UNIT_LENGTH] : 1e-3;
     const double T = m->has_units ? m->unit_scales[USRSUB_UNIT_TIME] : 1.0;
     const double A = m->has_units ? m->unit_scales[USRSUB_UNIT_ANGLE] : 1.0;
-    const double length = 1e-3 / L, angle = 0.02 / A; /* 1 mm and 0.02 rad */
+    *length = 1e-3 / L;
+    *angle = 0.02 / A;
+    *rate = 1.0 / (0.01 / T);
+}
+
+/* The amplitude of sample k > 0, in typical steps: 0.5 growing to 10. */
+static double amplitude_of(int k)
+{
+    return 0.5 + 9.5 * (k - 1) / (HX_FORCE_SAMPLES - 2.0);
+}
+
+void hx_sample_element_state(const hx_session *s, int force, int k, double disp[6],
+                             double velo[6], double scale[12])
+{
+    double length, angle, rate;
+    typical_steps(s->model, &length, &angle, &rate);
     for (int i = 0; i < 6; ++i) {
         scale[i] = i < 3 ? length : angle;
-        scale[6 + i] = scale[i] / (0.01 / T); /* moved over 10 ms */
+        scale[6 + i] = scale[i] * rate;
     }
     hx_force_deformation(&s->state, force, disp, velo);
     if (k == 0)
         return;
     const double base_twist = disp[5];
     unsigned seed = 2654435761u * (unsigned)k;
-    const double amplitude = 0.5 + 9.5 * (k - 1) / (HX_FORCE_SAMPLES - 2.0);
+    const double amplitude = amplitude_of(k);
     for (int i = 0; i < 6; ++i) {
         disp[i] += amplitude * scale[i] * hx_jitter(&seed);
         velo[i] += amplitude * scale[6 + i] * hx_jitter(&seed);
@@ -44,5 +59,41 @@ void hx_sample_element_state(const hx_session *s, int force, int k, double disp[
         const double twist = 25.0 * scale[5] * (1.0 + fabs(disp[5] - base_twist) / scale[5]);
         disp[3] = disp[4] = 0.0;
         disp[5] = base_twist + (disp[5] >= base_twist ? twist : -twist);
+    }
+}
+
+/* A measure's typical step: lengths, angles and their rates; 1 for a number. */
+static double input_scale(const hx_variable *v, double length, double angle, double rate)
+{
+    switch (v->function[0]) {
+    case 'D': return length;
+    case 'A': return angle;
+    case 'V': return length * rate;
+    case 'W': return angle * rate;
+    default: return 1.0;
+    }
+}
+
+void hx_sample_state_element(const hx_session *s, int element, int k, double *states,
+                             double *inputs, double *scale)
+{
+    const hx_model *m = s->model;
+    const hx_state_eqn *f = &m->state_eqns[element];
+    double length, angle, rate;
+    typical_steps(m, &length, &angle, &rate);
+    for (int i = 0; i < f->nstate; ++i) {
+        states[i] = f->initial[i];
+        scale[i] = 1e-3 * length;
+    }
+    hx_state_eqn_inputs(&s->state, element, inputs);
+    for (int i = 0; i < f->ninput; ++i)
+        scale[f->nstate + i] = input_scale(&m->variables[f->inputs[i]], length, angle, rate);
+    if (k == 0)
+        return;
+    unsigned seed = 2654435761u * (unsigned)k + 97u;
+    const double amplitude = amplitude_of(k);
+    for (int i = 0; i < f->nstate + f->ninput; ++i) {
+        double *v = i < f->nstate ? &states[i] : &inputs[i - f->nstate];
+        *v += amplitude * scale[i] * hx_jitter(&seed);
     }
 }

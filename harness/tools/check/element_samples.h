@@ -21,6 +21,16 @@
 void hx_sample_element_state(const hx_session *s, int force, int k, double disp[6],
                              double velo[6], double scale[12]);
 
+/* Sample k of Force_StateEqn `element`: its states (IC at sample 0) and its
+ * inputs (at the model's initial state at sample 0), each moved on its own by
+ * 0.5 to 10 typical steps at the later samples; scale receives the typical
+ * step of each (states then inputs): the inputs' by their measure (a length,
+ * an angle, their rates over 10 ms, 1 for a number), the states' 0.01 mm
+ * (or 1e-5 of the model's length unit without units), as the harness does
+ * not know what a state is. */
+void hx_sample_state_element(const hx_session *s, int element, int k, double *states,
+                             double *inputs, double *scale);
+
 /* The time of sample k: 0, then spread over the model's first second. */
 double hx_sample_time(const hx_model *m, int k);
 

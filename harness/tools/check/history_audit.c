@@ -18,12 +18,15 @@
 #include "tools/check/element_samples.h"
 
 #define MAX_OUT 81
+#define MAX_IN 64
 
 typedef struct probe {
     hx_session *s;
     hx_binding *b;
     hx_state state;
-    double input[2][12]; /* A and B: joint displacements, or deformation and rate */
+    /* A and B: joint displacements, deformation and rate, or a state
+     * equation's states and inputs */
+    double input[2][MAX_IN];
     double time[2];
 } probe;
 
@@ -42,6 +45,13 @@ static int evaluate(probe *p, int which, double t, int dflag, double *out)
         p->state.time = t;
         hx_call_fiesub(b, &p->state, p->input[which], p->input[which] + 6, dflag, 0, out,
                        out + 6, out + 42, NULL);
+    } else if (b->kind == HX_BIND_YFOSUB) {
+        /* the rates and outputs; copies of the arguments, which it may write */
+        const int ns = p->s->model->state_eqns[b->index].nstate;
+        double copy[MAX_IN];
+        memcpy(copy, p->input[which], sizeof copy);
+        p->state.time = t;
+        hx_call_yfosub(b, &p->state, copy, copy + ns, dflag, 0, out, out + ns, NULL);
     } else {
         const hx_force *f = &p->s->model->forces[b->index];
         hx_place_relative(&p->s->state, &p->state, f->i_marker, f->j_marker, p->input[which],
@@ -58,6 +68,8 @@ static int outputs(const hx_binding *b, const hx_model *m)
         const int n = m->couplers[b->index].njoints;
         return 1 + n + n * n;
     }
+    if (b->kind == HX_BIND_YFOSUB)
+        return m->state_eqns[b->index].nstate + 6;
     return b->kind == HX_BIND_FIESUB ? 78 : 6;
 }
 
@@ -79,7 +91,13 @@ static void choose_inputs(probe *p)
         }
         return;
     }
-    double scale[12];
+    double scale[MAX_IN];
+    if (b->kind == HX_BIND_YFOSUB) {
+        const int ns = m->state_eqns[b->index].nstate;
+        hx_sample_state_element(p->s, b->index, 3, p->input[0], p->input[0] + ns, scale);
+        hx_sample_state_element(p->s, b->index, 8, p->input[1], p->input[1] + ns, scale);
+        return;
+    }
     hx_sample_element_state(p->s, b->index, 3, p->input[0], p->input[0] + 6, scale);
     hx_sample_element_state(p->s, b->index, 8, p->input[1], p->input[1] + 6, scale);
 }
@@ -87,6 +105,14 @@ static void choose_inputs(probe *p)
 int hx_audit_history(hx_session *s, hx_binding *b, FILE *out)
 {
     probe p = {.s = s, .b = b};
+    if (b->kind == HX_BIND_YFOSUB) {
+        const hx_state_eqn *f = &s->model->state_eqns[b->index];
+        if (f->nstate + f->ninput > MAX_IN || f->nstate + 6 > MAX_OUT) {
+            fprintf(out, "  %s %d: history audit: %d states and %d inputs are more than it"
+                    " compares (%d): FAIL\n", b->element, b->id, f->nstate, f->ninput, MAX_IN);
+            return 1;
+        }
+    }
     if (hx_state_clone(&p.state, &s->state) != 0)
         return 1;
     choose_inputs(&p);

@@ -71,7 +71,7 @@ static int solve(hx_rig *r, double t, const double applied[6], const double *d_p
     }
 }
 
-static void track(hx_rig *r, const double d[6], const double F[6], int first)
+void hx_rig_track(hx_rig *r, const double d[6], const double F[6], int first)
 {
     for (int k = 0; k < 6; ++k)
         if (d[k] != 0.0 || fabs(F[k]) > 1e-9)
@@ -113,7 +113,7 @@ int hx_rig_run(hx_rig *r)
             if (evaluate(r, t, d, v, F, NULL, NULL) != 0)
                 return -1;
         }
-        track(r, d, F, i == 0);
+        hx_rig_track(r, d, F, i == 0);
         if (r->csv != NULL) {
             fprintf(r->csv, "%.10g", t);
             for (int k = 0; k < 6; ++k)

@@ -16,7 +16,8 @@
 typedef struct hx_rig {
     hx_session *s;
     hx_state scratch;     /* where a GFOSUB element's body is placed */
-    int force;            /* element index */
+    int force;            /* element index (the model's forces[], or its state_eqns[] for a
+                           * Force_StateEqn: tools/rig/state_rig.h) */
     int force_controlled;
     hx_rig_path path;
     double end, step;
@@ -33,5 +34,9 @@ typedef struct hx_rig {
 /* Runs the path from 0 to end in steps of step, writing CSV rows when csv is
  * set; returns 0, or -1 when the element could not be evaluated. */
 int hx_rig_run(hx_rig *r);
+
+/* Notes a step's deformation d and force F: the directions that move or
+ * carry force, and the ranges of |F| and |d| in the path's plane. */
+void hx_rig_track(hx_rig *r, const double d[6], const double F[6], int first);
 
 #endif

@@ -5,12 +5,17 @@
  *   g(|w|)  = mu_d + (mu_s - mu_d) exp(-(r_B |w| / v_s)^2)    (mu_d when SLIDING)
  *   C0(|w|) = r_B |w| sigma0 / g(|w|)
  *   zdot    = r_B w - C0 z
- *   mu      = -(sigma0 z + sigma1 zdot + sigma2 r_B w)
+ *   mu      = -(sigma0 z + sigma1 exp(-(r_B |w| / v_s)^2) zdot + sigma2 r_B w)
  *   tau_jf  = r_B (|F_N| mu - F_N (F_N . mu) / |F_N|)        (r x (mu x F_N), r = r_B F_N/|F_N|)
  *   tau_pre = (T_pre / mu_s) mu
- *   tau     = tau_jf where |tau_jf| > |tau_pre|, else tau_pre.
- * Torques only; the partials are exact where the law is smooth (|w| = 0 and
- * F_N = 0 take the one-sided value 0 of the kink's direction terms).
+ *   tau     = tau_pre + W (tau_jf - tau_pre),  W = STEP(rho, -0.05, 0, 0.05, 1),
+ *             rho = (|tau_jf| - |tau_pre|) / (|tau_jf| + |tau_pre|)
+ * The vendor switches to the larger torque; the two point different ways when
+ * mu has a part along F_N, so the switch is a jump: the blend keeps the torque
+ * (and a series mount's balance through it) continuous. The bristle damping
+ * fades with the slip, as is usual for LuGre, so that the friction never
+ * pushes along the slip. Torques only; partials exact where the law is smooth
+ * (|w| = 0, F_N = 0 and mu = 0 take the one-sided value of their kinks).
  */
 #ifndef USRSUB_LUGRE_FRICTION_H
 #define USRSUB_LUGRE_FRICTION_H

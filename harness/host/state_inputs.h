@@ -1,0 +1,21 @@
+/*
+ * The inputs of a Force_StateEqn: its U array's Reference_Variable elements
+ * evaluated by the harness itself at a state, with the measures it answers
+ * c_sysfnc with (docs/interface.md §5, §7.10); never by the library.
+ */
+#ifndef HX_HOST_STATE_INPUTS_H
+#define HX_HOST_STATE_INPUTS_H
+
+#include "state/state.h"
+
+/* The value of variable v at state s; 0, or -1 when a marker it names is
+ * unknown (the model's resolve pass has ruled that out). */
+int hx_variable_value(const hx_state *s, const hx_variable *v, double *value);
+
+/* The ninput inputs of Force_StateEqn `element` at state s; 0 or -1. */
+int hx_state_eqn_inputs(const hx_state *s, int element, double *u);
+
+/* 1 when variable v is an angle (AX, AY, AZ): differences of it wrap. */
+int hx_variable_is_angle(const hx_variable *v);
+
+#endif

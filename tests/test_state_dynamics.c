@@ -1,0 +1,380 @@
+/*
+ * Force_StateEqn elements in the harness's dynamics (docs/interface.md §5):
+ * their states integrated against the library's own equations (LuGre
+ * friction: a hinged body under a torque below the breakaway torque
+ * mu_s N r_B stops, above it slides at mu_d; the rubber filter's response to
+ * a sine on the rig, gain w / sqrt(R^2 + w^2)); the Newton matrix with
+ * states against differences of the whole right-hand side, with the
+ * library's partial routines and with differences where a library exports
+ * none; the energy balance on the bundled model closing at the integrator's
+ * accuracy; every integrator finishing on it, and agreeing.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim/newton_matrix.h"
+#include "sim/state_elements.h"
+#include "sim_support.h"
+#include "test_support.h"
+
+/* ---- models ----------------------------------------------------------------------------- */
+
+/* The twelve inputs of marker 20 relative to marker 10 (the library's U
+ * array), an X array of nstate and the element (id 1) with a USER list;
+ * initial states ic (NULL: none), as the IC array's text. */
+static void state_element_ic(char *out, size_t size, int nstate, const char *user,
+                             const char *library, const char *ic)
+{
+    static const char *const measure[12] = {"DX(20,10,10)", "DY(20,10,10)", "DZ(20,10,10)",
+                                            "AX(20,10)", "AY(20,10)", "AZ(20,10)",
+                                            "VX(20,10,10,10)", "VY(20,10,10,10)",
+                                            "VZ(20,10,10,10)", "WX(20,10,10)", "WY(20,10,10)",
+                                            "WZ(20,10,10)"};
+    int n = 0;
+    for (int k = 0; k < 12; ++k)
+        n += snprintf(out + n, size - (size_t)n, "<Reference_Variable id=\"%d\" type=\"EXPRESSION\""
+                      " expr=\"%s\"/>\n", k + 1, measure[k]);
+    if (ic != NULL)
+        n += snprintf(out + n, size - (size_t)n, "<Reference_Array id=\"32\" type=\"IC\""
+                      " num_element=\"%d\">%s</Reference_Array>\n", nstate, ic);
+    snprintf(out + n, size - (size_t)n,
+             "<Reference_Array id=\"30\" type=\"U\" num_element=\"12\" variable_id=\"1 2 3 4 5 6 7 8"
+             " 9 10 11 12\"/>\n<Reference_Array id=\"31\" type=\"X\" num_element=\"%d\"/>\n"
+             "<Force_StateEqn id=\"1\" type=\"USERSUB\" x_array_id=\"31\" u_array_id=\"30\""
+             " ic_array_id=\"%d\" num_state=\"%d\" i_marker_id=\"20\" j_floating_marker_id=\"10\""
+             " ref_marker_id=\"10\" usrsub_param_string=\"USER(%s)\" usrsub_dll_name=\"%s\"/>\n",
+             nstate, ic != NULL ? 32 : 0, nstate, user, library);
+}
+
+static void state_element(char *out, size_t size, int nstate, const char *user,
+                          const char *library)
+{
+    state_element_ic(out, size, nstate, user, library, NULL);
+}
+
+#define UNITS                                                                                  \
+    "<Param_Unit force_unit=\"NEWTON\" mass_unit=\"KILOGRAM\" length_unit=\"MILLIMETER\""     \
+    " time_unit=\"SECOND\"/>\n"
+
+#define GBS_HEAD                                                                               \
+    "[HEADER]\nFILE_TYPE = 'gbs'\n[UNITS]\nLENGTH = 'mm'\nANGLE = 'radian'\nFORCE = 'newton'\n" \
+    "MASS = 'kg'\nTIME = 'second'\n[GLOBAL]\nCOUPLING = 'UNCOUPLED'\n[DIRECTIONS]\n(ACTIVITY)\n" \
+    "{ formulation FX FY FZ TX TY TZ }\n"
+
+/* A body (Izz = 1000 kg mm^2) hinged about z at the bushing, whose preload
+ * along y (1000 N, held by the hinge) is the friction's normal force: mu_s N
+ * r_B = 0.5 * 1000 * 10 = 5000 N mm breaks it loose, mu_d N r_B = 3000 N mm
+ * holds it back while it slides. A torque about z. The bristles (sigma0 =
+ * 1000 /mm, a presliding mode of 1e4 rad/s) are critically damped, and the
+ * transition velocity (10 mm/s) is above the presliding rates: a torque
+ * applied at once would otherwise break the bushing loose below mu_s N r_B,
+ * as LuGre's g(|w|) falls while the body first moves. */
+static const char *friction_model(const char *name, double torque)
+{
+    static const char gbs[] =
+        GBS_HEAD "'CONSTANT_STIFFNESS' 0 1 0 0 0 0\n[CONSTANT_STIFFNESS_FY]\nK = 1000\n"
+        "[PRELOAD_OFFSET_SCALE]\n{ direction P Q H V }\nFY 1000 0 1 1\n"
+        "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.5\nMU_DYNAMIC = 0.3\nTRANSITION_VELOCITY = 10\n"
+        "BRISTLE_STIFFNESS = 1000\nBRISTLE_DAMPING = 0.2\nBALL_RADIUS = 10\n";
+    char element[4096], xml[8192];
+    state_element(element, sizeof element, 3, "1, 301", USRSUB_LIBRARY);
+    snprintf(xml, sizeof xml,
+             "<MotionSolve><Model>\n" UNITS
+             "<Reference_String id=\"301\" string=\"%s\"/>\n<Body_Ground id=\"1\"/>\n"
+             "<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+             "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1000\" inertia_yy=\"1000\""
+             " inertia_zz=\"1000\"/>\n<Reference_Marker id=\"20\" body_id=\"2\"/>\n"
+             "<Constraint_Joint id=\"5\" type=\"REVOLUTE\" i_marker_id=\"20\" j_marker_id=\"10\"/>\n"
+             "%s<Force_Vector_OneBody id=\"1\" marker_id=\"20\" tz_expression=\"%g\"/>\n"
+             "</Model></MotionSolve>\n", test_write_file("friction.gbs", gbs), element, torque);
+    return test_write_file(name, xml);
+}
+
+static void friction_holds_below_breakaway(void **state)
+{
+    (void)state;
+    sim s;
+    sim_run(&s, friction_model("stick.xml", 4000.0), HX_METHOD_BDF, 1e-6, 0.05, 0.001);
+    const int q = sim_joint_q(&s, 5), u = sim_joint_u(&s, 5), last = s.path.rows - 1;
+    /* presliding: the bristles take the torque, sigma0 z r_B N = T, and the
+     * body stops after turning by a few z / r_B = 4e-5 rad */
+    const int z3 = s.dynamics.states + 2;
+    printf("  4000 N mm: angle %.6g rad, rate %.3g rad/s, bristle %.8g mm at t = 0.05 s\n",
+           sim_state(&s, last, q), sim_state(&s, last, u), sim_state(&s, last, z3));
+    assert_true(sim_state(&s, last, q) > 4e-5 && sim_state(&s, last, q) < 4e-4);
+    assert_true(fabs(sim_state(&s, last, u)) < 1e-6);
+    assert_close(sim_state(&s, last, z3), 4000.0 / (1000.0 * 10.0 * 1000.0), 1e-6, 0.0);
+    sim_close(&s);
+}
+
+static void friction_slides_at_mu_d_above_breakaway(void **state)
+{
+    (void)state;
+    sim s;
+    sim_run(&s, friction_model("slide.xml", 6000.0), HX_METHOD_BDF, 1e-6, 0.04, 0.001);
+    const int u = sim_joint_u(&s, 5);
+    /* sliding: (T - mu_d N r_B) ucf / Izz = (6000 - 3000) 1000 / 1000 */
+    const double acceleration = (sim_state(&s, 40, u) - sim_state(&s, 20, u)) / 0.02;
+    printf("  6000 N mm: angular acceleration %.8g rad/s^2 between 0.02 and 0.04 s (3000 at"
+           " mu_d)\n", acceleration);
+    assert_close(acceleration, 3000.0, 1e-5, 0.0);
+    sim_close(&s);
+}
+
+/* A rubber filter along y (R = 30 1/s) on the rig, y = A sin(2 pi f t): the
+ * filtered deformation x = A w (w sin wt + R cos wt) / (w^2 + R^2) once the
+ * start has died away (e^(-R t)). */
+static void rubber_filter_passes_the_sine_with_its_gain(void **state)
+{
+    (void)state;
+    static const char gbs[] =
+        GBS_HEAD "'CONSTANT_STIFFNESS' 0 1 0 0 0 0\n'RUBBER_DAMPING' 0 1 0 0 0 0\n"
+        "[CONSTANT_STIFFNESS_FY]\nK = 1000\n[RUBBER_DAMPING_FY]\nNPRELOADS = 1\n(PRELOAD_1)\n"
+        "R = 30\nK0 = 200\nC0 = 0.5\n";
+    char element[4096], xml[8192];
+    state_element(element, sizeof element, 1, "1, 302", USRSUB_LIBRARY);
+    snprintf(xml, sizeof xml,
+             "<MotionSolve><Model>\n" UNITS "<Reference_String id=\"302\" string=\"%s\"/>\n"
+             "<Body_Ground id=\"1\"/>\n<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+             "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\""
+             " inertia_zz=\"1\"/>\n<Reference_Marker id=\"20\" body_id=\"2\"/>\n%s"
+             "</Model></MotionSolve>\n", test_write_file("rubber.gbs", gbs), element);
+    /* (a Reference_String id of its own: the library keeps an element's set-up
+     * by its id and USER list while it stays loaded) */
+    const char *csv = test_write_file("rubber.csv", "");
+    const char *const args[] = {"--element", "1", "--sine", "y,0.5,10", "--end", "1", "--step",
+                                "0.0005", NULL};
+    assert_int_equal(sim_rig(test_write_file("rubber.xml", xml), csv, args), 0);
+    csv_table t;
+    csv_read(csv, &t);
+    const int x1 = csv_column(csv, "stateeqn1.x1");
+    assert_true(x1 == 19);
+    const double A = 0.5, w = 2.0 * M_PI * 10.0, R = 30.0, d = w * w + R * R;
+    double worst = 0.0, peak = 0.0;
+    for (int r = 0; r < t.rows; ++r) {
+        const double time = csv_at(&t, r, 0);
+        if (time < 0.6)
+            continue;
+        const double x = A * w * (w * sin(w * time) + R * cos(w * time)) / d;
+        worst = fmax(worst, fabs(csv_at(&t, r, x1) - x));
+        peak = fmax(peak, fabs(csv_at(&t, r, x1)));
+    }
+    printf("  rubber filter: amplitude %.8g against A w / sqrt(R^2 + w^2) = %.8g; largest"
+           " difference from the closed form %.3g\n", peak, A * w / sqrt(d), worst);
+    assert_true(worst < 1e-6 * A);
+    csv_free(&t);
+}
+
+/* ---- the Newton matrix ---------------------------------------------------------------------- */
+
+/* The analytic Newton matrix against central differences of the whole
+ * right-hand side, every column (element states included): the largest
+ * difference, relative to each row's largest entry. */
+static double newton_matrix_error(hx_dynamics *d, double t, const double *y, const char *what)
+{
+    const int n = d->n;
+    hx_newton_matrix nm;
+    hx_message msg;
+    assert_int_equal(hx_newton_matrix_init(&nm, d, &msg), 0);
+    double *A = calloc((size_t)(n * n), sizeof(double)), *D = calloc((size_t)(n * n), sizeof(double));
+    double *shifted = malloc(sizeof(double) * (size_t)n), *up = malloc(sizeof(double) * (size_t)n);
+    double *down = malloc(sizeof(double) * (size_t)n);
+    assert_int_equal(hx_newton_matrix_build(&nm, t, y, A), 0);
+    char described[1024] = "";
+    hx_newton_matrix_describe(&nm, described, sizeof described);
+    for (int c = 0; c < n; ++c) {
+        const double h = 1e-7 * fmax(1.0, fabs(y[c]));
+        for (int side = 0; side < 2; ++side) {
+            memcpy(shifted, y, sizeof(double) * (size_t)n);
+            shifted[c] += side ? -h : h;
+            assert_int_equal(hx_dynamics_rhs(d, t, shifted, side ? down : up), 0);
+        }
+        for (int r = 0; r < n; ++r)
+            D[r + n * c] = (up[r] - down[r]) / (2.0 * h);
+    }
+    double worst = 0.0;
+    for (int r = 0; r < n; ++r) {
+        double largest = 0.0;
+        for (int c = 0; c < n; ++c)
+            largest = fmax(largest, fabs(D[r + n * c]));
+        for (int c = 0; c < n && largest > 0.0; ++c)
+            worst = fmax(worst, fabs(A[r + n * c] - D[r + n * c]) / largest);
+    }
+    printf("  %s: Newton matrix (%d x %d, %d element states) against differences of the whole"
+           " right-hand side: largest difference %.2g of its row\n  (%s)\n", what, n, n,
+           d->nstates, worst, described);
+    free(A), free(D), free(shifted), free(up), free(down);
+    hx_newton_matrix_free(&nm);
+    return worst;
+}
+
+static void newton_matrix_with_states_equals_differences(void **state)
+{
+    (void)state;
+    /* presliding under the rising torque, sliding, and the mount taking the
+     * load along x; not at rest, where the bristles' |w| has a kink that a
+     * central difference straddles */
+    static const double times[3] = {0.15, 0.225, 0.55};
+    for (int k = 0; k < 3; ++k) {
+        sim s;
+        sim_run(&s, "suspension_bushing.xml", HX_METHOD_DOPRI5, 1e-9, times[k], times[k]);
+        char what[64];
+        snprintf(what, sizeof what, "suspension_bushing.xml at t = %g s", times[k]);
+        const double *y = s.path.y + (s.path.rows - 1) * s.path.n;
+        assert_true(newton_matrix_error(&s.dynamics, times[k], y, what) < 1e-6);
+        sim_close(&s);
+    }
+}
+
+/* The scaled state equation on a free body with a spring-like output; the
+ * library given (with or without partial routines), initial states ic. */
+static const char *scaled_model_ic(const char *name, const char *library, const char *user,
+                                   const char *ic)
+{
+    char element[4096], xml[8192];
+    state_element_ic(element, sizeof element, 2, user, library, ic);
+    snprintf(xml, sizeof xml,
+             "<MotionSolve><Model>\n<Body_Ground id=\"1\"/>\n<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+             "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"2\" inertia_xx=\"1\" inertia_yy=\"1\""
+             " inertia_zz=\"1\" v_ic_x=\"3\" v_ic_y=\"-1\"/>\n"
+             "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"0.5\"/>\n%s"
+             "</Model></MotionSolve>\n", element);
+    return test_write_file(name, xml);
+}
+
+static const char *scaled_model(const char *name, const char *library, const char *user)
+{
+    return scaled_model_ic(name, library, user, NULL);
+}
+
+/* States so large that their rates overflow: the run ends at once, naming
+ * the element, what it returned and when. */
+static void a_non_finite_rate_ends_the_run(void **state)
+{
+    (void)state;
+    const char *path = scaled_model_ic("overflow.xml", SCALED_STATE_LIBRARY, "50, 2, 20, 1",
+                                       "1e200 -1e200");
+    hx_session session;
+    hx_dynamics d;
+    hx_message msg;
+    if (hx_session_open(&session, path, NULL, &msg) != 0 || hx_dynamics_init(&d, &session, &msg) != 0)
+        fail_msg("%s", msg.text);
+    hx_simulation_options so = {0};
+    hx_integrator_defaults(&so.integration);
+    so.integration.method = HX_METHOD_RK4;
+    so.integration.step = 1e-3;
+    so.integration.t_end = 0.01;
+    hx_simulation_result r;
+    assert_int_equal(hx_simulate(&d, &so, NULL, &r), -1);
+    assert_contains(r.message, "Force_StateEqn 1 returned a non-finite state rate at t = 0");
+    hx_dynamics_free(&d);
+    hx_session_close(&session);
+}
+
+static void a_library_without_partials_is_differenced(void **state)
+{
+    (void)state;
+    const char *with = scaled_model("with.xml", SCALED_STATE_LIBRARY, "50, 2, 20, 1");
+    const char *plain = scaled_model("plain.xml", PLAIN_STATE_LIBRARY, "50, 2, 20, 1");
+    sim a, b, c;
+    sim_run(&a, plain, HX_METHOD_DOPRI5, 1e-7, 0.3, 0.3);
+    const double *y = a.path.y + (a.path.rows - 1) * a.path.n;
+    assert_true(newton_matrix_error(&a.dynamics, 0.3, y, "scaled_state without partial routines") < 1e-6);
+    hx_binding *bp = hx_binding_of_state_eqn(&a.session.bindings, 0);
+    for (int r = 0; r < 4; ++r)
+        assert_null(bp->state_partial[r]);
+    /* BDF on either agrees with DOPRI5 on the end state */
+    sim_run(&b, plain, HX_METHOD_BDF, 1e-6, 1.0, 1.0);
+    sim_run(&c, with, HX_METHOD_BDF, 1e-6, 1.0, 1.0);
+    sim_close(&a);
+    sim_run(&a, with, HX_METHOD_DOPRI5, 1e-10, 1.0, 1.0);
+    const int n = a.path.n, last = a.path.rows - 1;
+    double worst_plain = 0.0, worst_with = 0.0;
+    for (int i = 0; i < a.dynamics.load_work; ++i) {
+        const double ref = sim_state(&a, last, i);
+        worst_plain = fmax(worst_plain, fabs(sim_state(&b, b.path.rows - 1, i) - ref));
+        worst_with = fmax(worst_with, fabs(sim_state(&c, c.path.rows - 1, i) - ref));
+    }
+    printf("  bdf against dopri5 (rtol 1e-10) at t = 1: largest difference %.3g (differences),"
+           " %.3g (the library's partials); %ld and %ld steps\n", worst_plain, worst_with,
+           b.result.stats.steps, c.result.stats.steps);
+    assert_true(worst_plain < 1e-3 && worst_with < 1e-3);
+    assert_int_equal(n, c.path.n);
+    sim_close(&a), sim_close(&b), sim_close(&c);
+}
+
+/* ---- the bundled model ------------------------------------------------------------------------- */
+
+static void energy_balance_closes_at_the_integrators_accuracy(void **state)
+{
+    (void)state;
+    double errors[2];
+    static const double tolerance[2] = {1e-6, 1e-10};
+    for (int k = 0; k < 2; ++k) {
+        sim s;
+        sim_run(&s, "suspension_bushing.xml", HX_METHOD_DOPRI5, tolerance[k], 1.0, 0.01);
+        const hx_simulation_result *r = &s.result;
+        errors[k] = r->balance_error_max / r->energy_scale;
+        printf("  dopri5 at rtol %g: energy balance error %.3g (relative), the bushing took %.6g"
+               " (its work: stored and dissipated)\n", tolerance[k], errors[k], r->dissipated);
+        /* the element's work is counted: it is most of what the loads put in */
+        assert_true(r->dissipated > 1000.0);
+        sim_close(&s);
+    }
+    assert_true(errors[0] < 1e-6);
+    assert_true(errors[1] < 1e-9 && errors[1] < errors[0] / 100.0);
+}
+
+/* run --integrator NAME on the bundled model through the slide (0.2 to 0.25
+ * s): every one finishes, and their end states agree. */
+static void every_integrator_finishes_on_the_bundled_model(void **state)
+{
+    (void)state;
+    static const char *const integrators[][3] = {
+        {"bdf", "--rtol", "1e-9"},         {"dopri5", "--rtol", "1e-8"},
+        {"dopri5-arkode", "--rtol", "1e-8"}, {"rk4", "--step", "2e-6"},
+        {"euler", "--step", "1e-6"},        {"symplectic-euler", "--step", "1e-6"}};
+    double reference[8] = {0};
+    for (size_t k = 0; k < sizeof integrators / sizeof integrators[0]; ++k) {
+        char csv[512];
+        snprintf(csv, sizeof csv, "%s/bundled_%s.csv", test_temp_dir(), integrators[k][0]);
+        const char *const args[] = {"--end", "0.4", "--integrator", integrators[k][0],
+                                    integrators[k][1], integrators[k][2], "--quiet", NULL};
+        assert_int_equal(sim_run_csv("suspension_bushing.xml", csv, args), 0);
+        static const char *const columns[8] = {"body2.x", "body2.y", "body2.q3", "stateeqn1.x3",
+                                               "stateeqn1.x5", "stateeqn1.tz", "stateeqn1.fy",
+                                               "body2.wz"};
+        csv_table t;
+        csv_read(csv, &t);
+        double worst = 0.0;
+        for (int c = 0; c < 8; ++c) {
+            const int column = csv_column(csv, columns[c]);
+            assert_true(column > 0);
+            const double v = csv_at(&t, t.rows - 1, column);
+            if (k == 0)
+                reference[c] = v;
+            worst = fmax(worst, fabs(v - reference[c]) / fmax(fabs(reference[c]), 1e-3));
+        }
+        printf("  %-16s end state against bdf at rtol 1e-9: largest relative difference %.3g\n",
+               integrators[k][0], worst);
+        assert_true(worst < 2e-3);
+        csv_free(&t);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(friction_holds_below_breakaway),
+        cmocka_unit_test(friction_slides_at_mu_d_above_breakaway),
+        cmocka_unit_test(rubber_filter_passes_the_sine_with_its_gain),
+        cmocka_unit_test(newton_matrix_with_states_equals_differences),
+        cmocka_unit_test(a_library_without_partials_is_differenced),
+        cmocka_unit_test(a_non_finite_rate_ends_the_run),
+        cmocka_unit_test(energy_balance_closes_at_the_integrators_accuracy),
+        cmocka_unit_test(every_integrator_finishes_on_the_bundled_model),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
