@@ -158,6 +158,26 @@ int hx_answer(const hx_state *s, const hx_query *q, const int *ipar, double *val
     return 1;
 }
 
+int hx_answer_family(const hx_state *s, char family, const int ipar[4], double v[3])
+{
+    hx_frame scratch[4];
+    const hx_frame *f[4];
+    for (int k = 0; k < 4; ++k)
+        if ((f[k] = marker_world(s, ipar[k], &scratch[k])) == NULL)
+            return -1;
+    double R[9];
+    switch (family) {
+    case 'D': hx_displacement(f[0], f[1], f[2], v); return 0;
+    case 'V': hx_relative_velocity(f[0], f[1], f[2], f[3], v); return 0;
+    case 'W': hx_relative_angular_velocity(f[0], f[1], f[2], v); return 0;
+    case 'A':
+        hx_relative_rotation(f[0], f[1], R);
+        hx_projection_angles(R, v);
+        return 0;
+    default: return -1;
+    }
+}
+
 int hx_answer_query(const hx_state *s, const char *fnc, const int *ipar, int nsize,
                     int is_array, double *values)
 {

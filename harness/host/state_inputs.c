@@ -16,13 +16,52 @@ int hx_variable_value(const hx_state *s, const hx_variable *v, double *value)
     return 0;
 }
 
+/* A measure family's three values at one set of markers, computed once for
+ * the inputs that share them (the usual U array asks DX, DY, DZ of the same
+ * markers, and so on): a twelfth of the frames and angles. */
+typedef struct family_values {
+    char family;
+    int ids[4];
+    double v[3];
+} family_values;
+
+static int component(const hx_variable *v)
+{
+    return v->function[1] == 'X' ? 0 : v->function[1] == 'Y' ? 1 : v->function[1] == 'Z' ? 2 : -1;
+}
+
 int hx_state_eqn_inputs(const hx_state *s, int element, double *u)
 {
     const hx_model *m = s->model;
     const hx_state_eqn *f = &m->state_eqns[element];
-    for (int i = 0; i < f->ninput; ++i)
-        if (hx_variable_value(s, &m->variables[f->inputs[i]], &u[i]) != 0)
-            return -1;
+    family_values known[8];
+    int nknown = 0;
+    for (int i = 0; i < f->ninput; ++i) {
+        const hx_variable *v = &m->variables[f->inputs[i]];
+        const int axis = v->function[0] != '\0' ? component(v) : -1;
+        if (axis < 0) { /* a number, or DM */
+            if (hx_variable_value(s, v, &u[i]) != 0)
+                return -1;
+            continue;
+        }
+        int k = 0;
+        while (k < nknown && !(known[k].family == v->function[0] && known[k].ids[0] == v->marker_ids[0] &&
+                               known[k].ids[1] == v->marker_ids[1] && known[k].ids[2] == v->marker_ids[2] &&
+                               known[k].ids[3] == v->marker_ids[3]))
+            ++k;
+        if (k == nknown) {
+            if (nknown == 8)
+                k = 7; /* more families than expected: recompute in the last slot */
+            else
+                ++nknown;
+            known[k].family = v->function[0];
+            for (int j = 0; j < 4; ++j)
+                known[k].ids[j] = v->marker_ids[j];
+            if (hx_answer_family(s, v->function[0], v->marker_ids, known[k].v) != 0)
+                return -1;
+        }
+        u[i] = v->sign * known[k].v[axis];
+    }
     return 0;
 }
 
