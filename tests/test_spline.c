@@ -166,6 +166,29 @@ static void bad_input_is_named(void **state)
     const double xn[] = {0, NAN, 2};
     assert_int_equal(usrsub_spline_init(&s, 3, xn, yd, &msg), -1);
     assert_contains(msg.text, "point 2", "not finite");
+    /* Tables whose arithmetic overflows (found by fuzz_user_lists). */
+    const double xw[] = {-1e308, 0, 1e308}, yw[] = {0, 1, 0};
+    assert_int_equal(usrsub_spline_init(&s, 3, xw, yw, &msg), -1);
+    assert_contains(msg.text, "too wide");
+    const double xc[] = {0, 1e-320, 1}, yc[] = {0, 1, 2};
+    assert_int_equal(usrsub_spline_init(&s, 3, xc, yc, &msg), -1);
+    assert_contains(msg.text, "points 1 and 2", "too close");
+    const double xs[] = {0, 1e-300, 2e-300}, ys[] = {0, 1e300, 0};
+    assert_int_equal(usrsub_spline_init(&s, 3, xs, ys, &msg), -1);
+    assert_contains(msg.text, "overflows");
+}
+
+static void extreme_arguments_find_an_interval(void **state)
+{
+    (void)state;
+    /* Interval look-up must clamp its index before converting to int: a
+     * huge quotient or a NaN argument is not undefined behaviour. */
+    const double x[] = {0, 1e-100, 2e-100, 3e-100}, y[] = {0, 1, 4, 9};
+    usrsub_spline s = make(4, x, y);
+    assert_close(usrsub_spline_eval(&s, 2e-100).value, 4.0, 1e-12, 0);
+    assert_true(isfinite(usrsub_spline_eval(&s, 2.999999999e-100).value));
+    assert_true(isnan(usrsub_spline_eval(&s, NAN).value));
+    usrsub_spline_free(&s);
 }
 
 int main(void)
@@ -178,6 +201,7 @@ int main(void)
         cmocka_unit_test(two_points_is_a_line),
         cmocka_unit_test(equally_spaced_knots_find_the_same_interval),
         cmocka_unit_test(bad_input_is_named),
+        cmocka_unit_test(extreme_arguments_find_an_interval),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

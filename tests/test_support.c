@@ -7,6 +7,23 @@
 #include <string.h>
 #include <unistd.h>
 
+#ifdef USRSUB_LIBRARY
+/* The example models name libusrsub.so, found through MS_USERDLL_DIR: ctest
+ * sets it; a test run by hand finds the library it was built with. */
+__attribute__((constructor)) static void default_library_folder(void)
+{
+    if (getenv("MS_USERDLL_DIR") != NULL)
+        return;
+    char folder[4096];
+    snprintf(folder, sizeof folder, "%s", USRSUB_LIBRARY);
+    char *slash = strrchr(folder, '/');
+    if (slash != NULL) {
+        *slash = '\0';
+        setenv("MS_USERDLL_DIR", folder, 1);
+    }
+}
+#endif
+
 void assert_close_impl(double actual, double expected, double rel_tol, double abs_tol,
                        const char *what, const char *file, int line)
 {

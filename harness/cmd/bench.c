@@ -1,6 +1,7 @@
 /* usrsub-harness bench: cost per call, the harness's share, stability limits,
  * work-precision and long runs. */
 #include <getopt.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -230,7 +231,8 @@ static int parse_outputs(const char *text, bench_options *o)
     while (*p != '\0') {
         char *end;
         const long id = strtol(p, &end, 10);
-        if (end == p || (*end != ',' && *end != '\0') || o->noutputs == HX_WP_MAX_OUTPUTS) {
+        if (end == p || (*end != ',' && *end != '\0') || o->noutputs == HX_WP_MAX_OUTPUTS ||
+            id <= 0 || id > INT_MAX) {
             fprintf(stderr, "usrsub-harness bench: --outputs '%s': expected body ids separated by"
                     " commas (at most %d)\n", text, HX_WP_MAX_OUTPUTS);
             return -1;

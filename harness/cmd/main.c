@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "cmd/commands.h"
+#include "cmd/exact_heap.h"
 
 static void usage(FILE *f)
 {
@@ -35,6 +36,8 @@ int main(int argc, char **argv)
                     {"rig", hx_command_rig},
                     {"run", hx_command_run},
                     {"bench", hx_command_bench}};
+    if (strcmp(argv[1], "check") == 0) /* its set-up footprints, byte-exact */
+        hx_exact_heap_counts(argv);
     for (size_t k = 0; k < sizeof commands / sizeof commands[0]; ++k)
         if (strcmp(argv[1], commands[k].name) == 0)
             return commands[k].run(argc - 1, argv + 1);

@@ -207,7 +207,9 @@ void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_stat
 }
 
 /* Bytes in use in the C library's allocator (mallinfo2: small blocks and
- * mmap'd ones); sanitizers bring their own allocator and answer 0. */
+ * mmap'd ones); sanitizers bring their own allocator and answer 0. Exact when
+ * glibc's per-thread cache is off (the check command sees to it,
+ * cmd/exact_heap.h); otherwise freed small blocks it holds count too. */
 static long allocated_bytes(void)
 {
     const struct mallinfo2 info = mallinfo2();

@@ -24,6 +24,15 @@ int usrsub_spline_init(usrsub_spline *s, int n, const double *x, const double *y
                                " x must be strictly increasing", i + 1, x[i], i, x[i - 1]);
     }
     const int m = n - 1; /* intervals */
+    /* Spacings whose span or reciprocal overflows would give infinite
+     * coefficients or interval indices; such a table is not a curve. */
+    if (!isfinite(x[m] - x[0]))
+        return usrsub_fail(msg, "x spans %g to %g, a range too wide for double arithmetic",
+                           x[0], x[m]);
+    for (int i = 0; i < m; ++i)
+        if (!isfinite(1.0 / (x[i + 1] - x[i])))
+            return usrsub_fail(msg, "x of points %d and %d (%g, %g) are too close to tell apart",
+                               i + 1, i + 2, x[i], x[i + 1]);
     const int nbuckets = 2 * m;
     double *xs = malloc(sizeof(double) * (size_t)n);
     double *coef = malloc(sizeof(double) * 4u * (size_t)m);
@@ -77,6 +86,14 @@ int usrsub_spline_init(usrsub_spline *s, int n, const double *x, const double *y
     s->inverse_spacing = 1.0 / h0;
     free(curv);
     free(work);
+    int finite = isfinite(s->slope_end) && isfinite(s->bucket_scale);
+    for (int k = 0; k < 4 * m && finite; ++k)
+        finite = isfinite(coef[k]);
+    if (!finite) {
+        usrsub_spline_free(s);
+        return usrsub_fail(msg, "the spline through these %d points overflows"
+                           " (slopes beyond double range)", n);
+    }
     return 0;
 }
 
@@ -95,17 +112,16 @@ static inline int interval_of(const usrsub_spline *s, double x)
     const double *xs = s->x;
     const int last = s->n - 1;
     if (s->uniform) { /* the quotient, then one step where rounding put x across a knot */
-        int i = (int)((x - xs[0]) * s->inverse_spacing);
-        i = i < 0 ? 0 : i > last - 1 ? last - 1 : i;
+        const double q = (x - xs[0]) * s->inverse_spacing; /* clamped before the cast */
+        int i = q > 0.0 ? (q < last - 1 ? (int)q : last - 1) : 0;
         if (i > 0 && xs[i] > x)
             --i;
         else if (i + 1 < last && xs[i + 1] <= x)
             ++i;
         return i;
     }
-    int b = (int)((x - xs[0]) * s->bucket_scale);
-    if (b >= s->nbuckets)
-        b = s->nbuckets - 1;
+    const double q = (x - xs[0]) * s->bucket_scale; /* clamped before the cast */
+    int b = q > 0.0 ? (q < s->nbuckets - 1 ? (int)q : s->nbuckets - 1) : 0;
     int lo = s->bucket[b], hi = s->bucket[b + 1] + 1; /* xs[lo] <= x < xs[hi] */
     while (lo > 0 && xs[lo] > x) /* x rounded into the next bucket */
         --lo;
