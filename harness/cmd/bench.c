@@ -145,8 +145,7 @@ static int stability_section(hx_session *s, hx_stability *st)
         fprintf(stderr, "usrsub-harness bench: stability: %s\n", msg.text[0] ? msg.text : d.message);
     }
     free(y);
-    if (d.dof != NULL)
-        hx_dynamics_free(&d);
+    hx_dynamics_free(&d);
     return status == 0 ? 0 : 1;
 }
 
@@ -319,17 +318,7 @@ int hx_command_bench(int argc, char **argv)
         case 'O': bad = parse_outputs(optarg, &o); break;
         case 'A': bad = hx_option_positive("bench", "atol-ratio", optarg, &o.atol_ratio); break;
         case 'T': bad = hx_option_positive("bench", "target", optarg, &o.target); break;
-        case 'M': {
-            long order = 0;
-            bad = hx_option_count("bench", "max-order", optarg, 1, &order);
-            if (!bad && order > 5) {
-                fprintf(stderr, "usrsub-harness bench: --max-order %ld: BDF's orders are 1 to 5\n",
-                        order);
-                bad = 1;
-            }
-            o.max_order = (int)order;
-            break;
-        }
+        case 'M': bad = hx_option_max_order("bench", optarg, &o.max_order); break;
         case 'h': usage(stdout); return 0;
         default: usage(stderr); return 2;
         }

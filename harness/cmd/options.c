@@ -46,6 +46,20 @@ int hx_option_count(const char *command, const char *option, const char *text, l
     return 0;
 }
 
+int hx_option_max_order(const char *command, const char *text, int *out)
+{
+    long order = 0;
+    if (hx_option_count(command, "max-order", text, 1, &order) != 0)
+        return -1;
+    if (order > 5) {
+        fprintf(stderr, "usrsub-harness %s: --max-order %ld: BDF's orders are 1 to 5\n", command,
+                order);
+        return -1;
+    }
+    *out = (int)order;
+    return 0;
+}
+
 int hx_make_parent_folders(const char *path, hx_message *msg)
 {
     char folder[4096];

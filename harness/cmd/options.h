@@ -19,6 +19,8 @@ int hx_option_positive(const char *command, const char *option, const char *text
 /* A whole number, at least min. */
 int hx_option_count(const char *command, const char *option, const char *text, long min,
                     long *out);
+/* BDF's largest order, 1 to 5. */
+int hx_option_max_order(const char *command, const char *text, int *out);
 
 /* Creates the folders of path's parent (as mkdir -p does); 0, or -1 with the
  * reason in msg. */

@@ -102,8 +102,7 @@ static void stiffness_advice(FILE *f, const hx_stability *st, const hx_integrato
 }
 
 /* Reads the options into so; returns -1 (exit 2) on a bad one, 1 on --help. */
-static int parse(int argc, char **argv, hx_simulation_options *so, const char **out,
-                 int *fixed_step_given)
+static int parse(int argc, char **argv, hx_simulation_options *so, const char **out)
 {
     static const struct option options[] = {
         {"integrator", required_argument, NULL, 'i'}, {"step", required_argument, NULL, 's'},
@@ -133,18 +132,8 @@ static int parse(int argc, char **argv, hx_simulation_options *so, const char **
                 bad = 1;
             }
             break;
-        case 'O': {
-            long order = 0;
-            bad = hx_option_count("run", "max-order", optarg, 1, &order);
-            if (!bad && order > 5) {
-                fprintf(stderr, "usrsub-harness run: --max-order %ld: BDF's orders are 1 to 5\n",
-                        order);
-                bad = 1;
-            }
-            io->max_order = (int)order;
-            break;
-        }
-        case 's': bad = hx_option_positive("run", "step", optarg, &io->step); *fixed_step_given = 1; break;
+        case 'O': bad = hx_option_max_order("run", optarg, &io->max_order); break;
+        case 's': bad = hx_option_positive("run", "step", optarg, &io->step); break;
         case 'e': bad = hx_option_positive("run", "end", optarg, &io->t_end); break;
         case 'o': *out = optarg; break;
         case 'I': bad = hx_option_positive("run", "output-interval", optarg, &io->output_interval); break;
@@ -167,7 +156,7 @@ static int parse(int argc, char **argv, hx_simulation_options *so, const char **
         fprintf(stderr, "usrsub-harness run: --end T is needed\n");
         return -1;
     }
-    if (!hx_method_adaptive(io->method) && !*fixed_step_given) {
+    if (!hx_method_adaptive(io->method) && !(io->step > 0.0)) { /* --step takes only > 0 */
         fprintf(stderr, "usrsub-harness run: %s takes fixed steps: give --step (or use the"
                 " default dopri5, which chooses its own)\n", hx_method_name(io->method));
         return -1;
@@ -182,8 +171,7 @@ int hx_command_run(int argc, char **argv)
     so.integration.method = HX_METHOD_DOPRI5;
     so.progress = 1;
     const char *out = NULL;
-    int fixed_step_given = 0;
-    const int parsed = parse(argc, argv, &so, &out, &fixed_step_given);
+    const int parsed = parse(argc, argv, &so, &out);
     if (parsed != 0)
         return parsed > 0 ? 0 : 2;
     if (so.integration.output_interval <= 0.0)

@@ -20,8 +20,8 @@ void hx_messages_destroy(hx_messages *m)
 void hx_messages_reset(hx_messages *m)
 {
     pthread_mutex_lock(&m->lock);
-    m->errors = m->notices = m->host_reports = 0;
-    m->last_error[0] = m->last_notice[0] = m->last_host_report[0] = '\0';
+    m->errors = m->notices = 0;
+    m->last_error[0] = m->last_notice[0] = '\0';
     atomic_store_explicit(&m->stop, 0, memory_order_relaxed);
     m->stop_message[0] = '\0';
     pthread_mutex_unlock(&m->lock);
@@ -54,14 +54,14 @@ void hx_messages_notice(hx_messages *m, int id, const char *type, const char *te
 
 void hx_messages_host(hx_messages *m, const char *fmt, ...)
 {
-    pthread_mutex_lock(&m->lock);
-    ++m->host_reports;
+    char text[HX_TEXT_MAX];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(m->last_host_report, sizeof m->last_host_report, fmt, ap);
+    vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
+    pthread_mutex_lock(&m->lock);
     if (m->stream != NULL)
-        fprintf(m->stream, "host: %s\n", m->last_host_report);
+        fprintf(m->stream, "host: %s\n", text);
     pthread_mutex_unlock(&m->lock);
 }
 

@@ -16,8 +16,8 @@
 typedef struct hx_messages {
     pthread_mutex_t lock;
     FILE *stream;          /* where the text is printed (NULL: kept, not printed) */
-    int errors, notices, host_reports;
-    char last_error[HX_TEXT_MAX], last_notice[HX_TEXT_MAX], last_host_report[HX_TEXT_MAX];
+    int errors, notices;
+    char last_error[HX_TEXT_MAX], last_notice[HX_TEXT_MAX];
     _Atomic int stop;      /* c_errmes asked to end the run: read without the lock
                             * after every call, written under it */
     char stop_message[HX_TEXT_MAX];

@@ -114,10 +114,6 @@ void hx_dynamics_set_state(hx_dynamics *d, double t, const double *y)
 int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot)
 {
     const int nb = d->m->nbodies;
-    if (d->frozen_outputs != NULL)
-        ++d->frozen_evaluations;
-    else
-        ++d->evaluations;
     hx_dynamics_set_state(d, t, y);
     memset(d->force, 0, sizeof(double) * 3 * (size_t)nb);
     memset(d->torque, 0, sizeof(double) * 3 * (size_t)nb);

@@ -61,8 +61,6 @@ typedef struct hx_dynamics {
      * of calling the elements (the Newton matrix's frozen differences,
      * newton_matrix.h); the Force_StateEqn states' rates are then zero. */
     const double *frozen_outputs;
-    long evaluations;           /* with the elements called */
-    long frozen_evaluations;    /* with their outputs frozen */
     int failed;
     char message[1024];
     double max_phi, max_phidot; /* largest constraint residuals after projections */

@@ -6,6 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* |(q,u)| > GROWTH_LIMIT (1 + |(q0,u0)|): the run is unstable */
+#define GROWTH_LIMIT 1e12
+
 void hx_integrator_defaults(hx_integrator_options *opt)
 {
     memset(opt, 0, sizeof *opt);
@@ -37,28 +40,10 @@ int hx_method_parse(const char *name, hx_method *method)
     return -1;
 }
 
-int hx_method_order(hx_method method)
-{
-    switch (method) {
-    case HX_METHOD_EULER:
-    case HX_METHOD_SYMPLECTIC_EULER: return 1;
-    case HX_METHOD_RK4: return 4;
-    case HX_METHOD_DOPRI5:
-    case HX_METHOD_DOPRI5_ARKODE:
-    case HX_METHOD_BDF: return 5;
-    }
-    return 0;
-}
-
 int hx_method_adaptive(hx_method method)
 {
     return method == HX_METHOD_DOPRI5 || method == HX_METHOD_BDF ||
            method == HX_METHOD_DOPRI5_ARKODE;
-}
-
-const char *hx_jacobian_name(hx_jacobian jacobian)
-{
-    return jacobian == HX_JACOBIAN_FD ? "fd" : "analytic";
 }
 
 int hx_jacobian_parse(const char *name, hx_jacobian *jacobian)
@@ -182,7 +167,7 @@ hx_status hx_integrate(const hx_ode *ode, double t0, double *y, const hx_integra
     stats->t_reached = t0;
     hx_run r = {ode, opt, stats, 0.0, t0, 0};
     const int m = ode->nq + ode->nu > 0 ? ode->nq + ode->nu : ode->n;
-    r.limit = (opt->growth_limit > 0.0 ? opt->growth_limit : 1e12) * (1.0 + hx_run_norm(y, m));
+    r.limit = GROWTH_LIMIT * (1.0 + hx_run_norm(y, m));
     if (opt->method == HX_METHOD_SYMPLECTIC_EULER && ode->advance == NULL)
         return HX_INTEGRATION_FAILED;
     switch (opt->method) {

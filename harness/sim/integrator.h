@@ -60,7 +60,6 @@ typedef struct hx_integrator_options {
     long max_steps;         /* 0: no limit */
     double output_interval; /* 0: output after every step */
     hx_output_fn *output;   /* may be NULL */
-    double growth_limit;    /* |(q,u)| > growth_limit * (1 + |(q0,u0)|) is unstable (0: 1e12) */
 } hx_integrator_options;
 
 typedef enum hx_status {
@@ -81,7 +80,7 @@ typedef struct hx_integrator_stats {
     double t_stiff;
     /* BDF (evaluations above count every full right-hand side, those of
      * CVODE's difference-quotient Jacobians included) */
-    long newton_iterations, jacobians, linear_setups;
+    long newton_iterations, jacobians;
     long error_test_failures, convergence_failures;
     long fd_jacobian_evaluations; /* of evaluations, inside CVODE's difference quotients */
     long frozen_evaluations;  /* harness-only evaluations of the analytic Newton matrix */
@@ -97,11 +96,8 @@ hx_status hx_integrate(const hx_ode *ode, double t0, double *y, const hx_integra
 const char *hx_method_name(hx_method method);
 int hx_method_parse(const char *name, hx_method *method);
 const char *hx_status_text(hx_status status);
-/* Order of accuracy (5 for DOPRI5; BDF: its highest, 5). */
-int hx_method_order(hx_method method);
 /* Chooses its own steps (tolerances) rather than taking fixed ones. */
 int hx_method_adaptive(hx_method method);
-const char *hx_jacobian_name(hx_jacobian jacobian);
 int hx_jacobian_parse(const char *name, hx_jacobian *jacobian);
 
 #endif

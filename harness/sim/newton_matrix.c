@@ -279,7 +279,6 @@ int hx_newton_matrix_build(hx_newton_matrix *nm, double t, const double *y, doub
 {
     hx_dynamics *d = nm->d;
     const int n = nm->n, m = nm->m, nf = nm->nf;
-    nm->builds++;
     memcpy(nm->y, y, sizeof(double) * (size_t)n);
     hx_dynamics_set_state(d, t, y);
     if (outputs_and_partials(nm) != 0 || output_derivatives(nm, t) != 0 ||

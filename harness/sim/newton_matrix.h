@@ -61,7 +61,6 @@ typedef struct hx_newton_matrix {
     double *unit;              /* 6 per element: outputs of the response evaluations */
     double *y, *fp, *fm, *plus, *minus; /* scratch: n each; plus/minus 12 per element */
     hx_messages twin_messages; /* the twins' own messages, apart from the session's */
-    long builds;
     long frozen_evaluations;   /* right-hand sides with outputs frozen (harness only) */
     long partial_calls;        /* element calls made for partials and outputs */
 } hx_newton_matrix;

@@ -176,7 +176,6 @@ static void bdf_summary(FILE *f, const hx_simulation_options *opt, const hx_simu
 void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_options *opt,
                            const hx_simulation_result *r)
 {
-    (void)d;
     fprintf(f, "run: %s with %s to t = %.6g\n", hx_status_text(r->status),
             hx_method_name(opt->integration.method), r->stats.t_reached);
     fprintf(f, "  steps %ld, rejected %ld, right-hand sides %ld, last step %.3g\n", r->stats.steps,

@@ -172,9 +172,9 @@ int hx_state_jacobian_outputs(hx_state_jacobian *sj, double t, const double *y, 
 {
     hx_dynamics *d = sj->d;
     memcpy(sj->y, y, sizeof(double) * (size_t)sj->n);
+    hx_dynamics_set_state(d, t, y); /* the element calls below take it read-only */
     for (int k = 0; k < sj->count; ++k) {
         const hx_state_eqn *f = &d->m->state_eqns[k];
-        hx_dynamics_set_state(d, t, y);
         memcpy(sj->x, y + d->stateful->offset[k], sizeof(double) * (size_t)f->nstate);
         hx_state_eqn_inputs(&d->state, k, sj->u);
         ++*calls;

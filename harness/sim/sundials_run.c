@@ -6,6 +6,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/finite.h"
+
 int hx_sundials_open(hx_sundials *s, hx_run *r, double *y)
 {
     memset(s, 0, sizeof *s);
@@ -39,12 +41,10 @@ int hx_sundials_rhs(double t, N_Vector y, N_Vector ydot, void *user_data)
 {
     hx_sundials *s = user_data;
     const double *state = NV_DATA_S(y);
-    const int n = s->r->ode->n;
     /* a Newton iterate or a rejected trial may be non-finite: the model
      * (whose elements stop the run on such a state) is not asked */
-    for (int i = 0; i < n; ++i)
-        if (!isfinite(state[i]))
-            return 1;
+    if (!hx_all_finite(state, s->r->ode->n))
+        return 1;
     return hx_run_evaluate(s->r, t, state, NV_DATA_S(ydot)) == 0 ? 0 : -1;
 }
 

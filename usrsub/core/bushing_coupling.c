@@ -57,10 +57,10 @@ INLINE void coupled(const usrsub_bushing_direction *const dirs[], const int m, c
         vt[i] = qd[i] - vr * e[i];
         vn2 += vt[i] * vt[i];
     }
-    double u[MAXM] = {0, 0, 0}, g0[MAXM] = {0, 0, 0}, b = 0.0, h = 0.0, vn = 0.0;
+    double u[MAXM] = {0, 0, 0}, g0[MAXM] = {0, 0, 0}, b = 0.0, h = 0.0, vn = 0.0, inv_vn = 0.0;
     if (vn2 > 0.0) {
         vn = sqrt(vn2);
-        const double inv_vn = 1.0 / vn;
+        inv_vn = 1.0 / vn;
         for (int i = 0; i < m; ++i) {
             u[i] = vt[i] * inv_vn;
             g0[i] = dirs[i]->g_at_zero;
@@ -90,7 +90,6 @@ INLINE void coupled(const usrsub_bushing_direction *const dirs[], const int m, c
     }
     /* T = d(-b v_t - h u)/d v_t */
     if (vn > 0.0) {
-        const double inv_vn = 1.0 / vn;
         for (int i = 0; i < m; ++i)
             for (int j = 0; j < m; ++j) {
                 double t = -b * (i == j) - 2.0 * u[i] * (C[j] * u[j] - b * u[j]);

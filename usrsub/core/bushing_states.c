@@ -327,15 +327,15 @@ int usrsub_bushing_states_eval(const usrsub_bushing *b, const usrsub_mount_limit
         mu->dir[mu->n] = l->mount[a], mu->damped[mu->n++] = 1;
     for (int c = 0; c < l->nfollow; ++c)
         mu->dir[mu->n] = l->follow[c], mu->damped[mu->n++] = 0;
-    const mount_unknowns m = bp.m;
+    const mount_unknowns *m = &bp.m;
     /* the balance K s + C sdot + F = 0 of each mount, to rounding, or to
      * within 1e-8 of its terms where rounding in the law (a mount far stiffer
      * than its damping, friction's large terms) keeps it from falling further */
     double w[6] = {0, 0, 0, 0, 0, 0};
     balance_point pt;
     balance_at(&bp, w, &pt);
-    const int steps = m.n > 0 ? solve_balance(&bp, w, &pt) : 0;
-    if (m.n > 0 && !(pt.residual <= 1e-8 * pt.size || pt.residual == 0.0)) {
+    const int steps = m->n > 0 ? solve_balance(&bp, w, &pt) : 0;
+    if (m->n > 0 && !(pt.residual <= 1e-8 * pt.size || pt.residual == 0.0)) {
         char states[160] = "";
         for (int i = 0, n = 0; i < l->n && n < (int)sizeof states - 16; ++i)
             n += snprintf(states + n, sizeof states - (size_t)n, i ? " %g" : "%g", x[i]);
@@ -345,14 +345,14 @@ int usrsub_bushing_states_eval(const usrsub_bushing *b, const usrsub_mount_limit
                            u[4], u[5], u[6], u[7], u[8], u[9], u[10], u[11], states, pt.residual,
                            pt.size, steps);
     }
-    const law_value v = pt.v;
-    memcpy(y, v.F, sizeof v.F);
+    const law_value *v = &pt.v;
+    memcpy(y, v->F, sizeof v->F);
     for (int i = 0; i < l->friction; ++i)
-        xdot[i] = v.zdot[i];
+        xdot[i] = v->zdot[i];
     for (int a = 0; a < l->nmount; ++a)
         xdot[l->friction + a] = w[a];
     for (int r = 0; r < l->nrubber; ++r)
-        xdot[l->friction + l->nmount + r] = v.xdot[r];
+        xdot[l->friction + l->nmount + r] = v->xdot[r];
     if (partials == NULL)
         return 0;
 
@@ -373,27 +373,27 @@ int usrsub_bushing_states_eval(const usrsub_bushing *b, const usrsub_mount_limit
         else
             col = COL_X + p - 12 - l->friction - l->nmount;
         for (int r = 0; r < MAX_ROWS; ++r)
-            Dp[r + MAX_ROWS * p] = sign * v.J[r + MAX_ROWS * col];
+            Dp[r + MAX_ROWS * p] = sign * v->J[r + MAX_ROWS * col];
     }
-    for (int i = 0; i < m.n; ++i) {
-        const int col = (m.damped[i] ? COL_QD : COL_Q) + m.dir[i];
+    for (int i = 0; i < m->n; ++i) {
+        const int col = (m->damped[i] ? COL_QD : COL_Q) + m->dir[i];
         for (int r = 0; r < MAX_ROWS; ++r)
-            Dw[r + MAX_ROWS * i] = -v.J[r + MAX_ROWS * col];
+            Dw[r + MAX_ROWS * i] = -v->J[r + MAX_ROWS * col];
     }
     /* dw/dp = -(dG/dw)^-1 dG/dp, with dG/dp = Dp's force rows plus K for a
      * damped mount's own state */
     double dwdp[6 * MAX_P];
-    if (m.n > 0) {
+    if (m->n > 0) {
         double A[36];
-        balance_jacobian(b, &m, &v, A);
+        balance_jacobian(b, m, v, A);
         for (int p = 0; p < np; ++p)
-            for (int i = 0; i < m.n; ++i) {
-                double g = Dp[ROW_F + m.dir[i] + MAX_ROWS * p];
-                if (m.damped[i] && p == 12 + l->friction + i)
-                    g += b->dir[m.dir[i]].mount_k;
-                dwdp[i + m.n * p] = -g;
+            for (int i = 0; i < m->n; ++i) {
+                double g = Dp[ROW_F + m->dir[i] + MAX_ROWS * p];
+                if (m->damped[i] && p == 12 + l->friction + i)
+                    g += b->dir[m->dir[i]].mount_k;
+                dwdp[i + m->n * p] = -g;
             }
-        if (solve(m.n, A, dwdp, np) != 0)
+        if (solve(m->n, A, dwdp, np) != 0)
             return usrsub_fail(msg, "the mounts' series balance is singular at deformation"
                                " (%g %g %g %g %g %g)", u[0], u[1], u[2], u[3], u[4], u[5]);
     }
@@ -402,8 +402,8 @@ int usrsub_bushing_states_eval(const usrsub_bushing *b, const usrsub_mount_limit
     for (int p = 0; p < np; ++p)
         for (int r = 0; r < MAX_ROWS; ++r) {
             double t = Dp[r + MAX_ROWS * p];
-            for (int i = 0; i < m.n; ++i)
-                t += Dw[r + MAX_ROWS * i] * dwdp[i + m.n * p];
+            for (int i = 0; i < m->n; ++i)
+                t += Dw[r + MAX_ROWS * i] * dwdp[i + m->n * p];
             total[r + MAX_ROWS * p] = t;
         }
     const int n = l->n;
@@ -413,7 +413,7 @@ int usrsub_bushing_states_eval(const usrsub_bushing *b, const usrsub_mount_limit
         for (int i = 0; i < l->friction; ++i)
             col[i] = total[ROW_Z + i + MAX_ROWS * p];
         for (int a = 0; a < l->nmount; ++a)
-            col[l->friction + a] = dwdp[a + m.n * p];
+            col[l->friction + a] = dwdp[a + m->n * p];
         for (int r = 0; r < l->nrubber; ++r)
             col[l->friction + l->nmount + r] = total[ROW_X + r + MAX_ROWS * p];
         for (int i = 0; i < n; ++i) {

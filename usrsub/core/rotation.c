@@ -194,9 +194,7 @@ void usrsub_rotation_map_make(usrsub_rotation_map *m, const double R[9], const d
 {
     usrsub_rotation_vector(R, m->r);
     usrsub_tangent_inverse(m->r, m->Jinv, A != NULL ? m->dJinv : NULL);
-    memcpy(m->omega, omega, sizeof m->omega);
     mat3_vec(m->Jinv, omega, m->rdot);
-    m->has_angles = A != NULL;
     if (A == NULL)
         return;
     for (int i = 0; i < 3; ++i)

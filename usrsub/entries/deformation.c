@@ -21,15 +21,17 @@ static int ask(const char *fnc, const int *ipar, int nsize, double *states, int 
 /* The rotation from the host's Euler angles; near rest phi from AZ. */
 static int rotation_of(const int ipar[4], int twist, double euler[3], double R[9], char *failed)
 {
-    double st, ct;
-    usrsub_sincos(euler[1], &st, &ct);
-    if (twist && fabs(st) < USRSUB_REST_TILT) {
-        double az;
-        if (host_query_value("AZ", ipar, 2, &az) != 0) {
-            snprintf(failed, 64, "AZ(%d,%d)", ipar[0], ipar[1]);
-            return -1;
+    if (twist) { /* only an element whose force follows the twist needs phi at rest */
+        double st, ct;
+        usrsub_sincos(euler[1], &st, &ct);
+        if (fabs(st) < USRSUB_REST_TILT) {
+            double az;
+            if (host_query_value("AZ", ipar, 2, &az) != 0) {
+                snprintf(failed, 64, "AZ(%d,%d)", ipar[0], ipar[1]);
+                return -1;
+            }
+            euler[2] = usrsub_rest_phi(euler[0], ct, az);
         }
-        euler[2] = usrsub_rest_phi(euler[0], ct, az);
     }
     usrsub_euler313_rotation(euler, R);
     return 0;

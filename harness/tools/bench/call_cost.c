@@ -225,11 +225,6 @@ typedef struct timed_entry {
     double *ns; /* one per round */
 } timed_entry;
 
-int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int capacity)
-{
-    return hx_measure_call_costs_with(s, repeats, costs, capacity, NULL, 0);
-}
-
 /* The median over rounds of an entry's cost divided by its floor's in the
  * same round: a slow spell falls on both. */
 static double median_ratio(const double *ns, const double *empty, const double *host, int repeats)
@@ -376,6 +371,7 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
         free(entries[first_extra + k].ns);
     }
     const double *empty_ns = has_floor ? entries[empty_index].ns : NULL;
+    const double empty_median = has_floor ? median_of(empty_ns, repeats) : NAN;
     for (int k = 0; k < rows; ++k) {
         hx_call_cost *c = &costs[k];
         c->rounds = entries[k].ns; /* the caller frees them */
@@ -386,7 +382,7 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
         c->max_ns = sorted[repeats - 1];
         free(sorted);
         const double *host = replay_of[k] >= 0 ? entries[first_replay + replay_of[k]].ns : NULL;
-        c->empty_ns = has_floor ? median_of(empty_ns, repeats) : NAN;
+        c->empty_ns = empty_median;
         c->host_ns = host != NULL ? median_of(host, repeats) : 0.0;
         c->floor_ratio = has_floor ? median_ratio(entries[k].ns, empty_ns, host, repeats) : NAN;
     }

@@ -27,10 +27,6 @@ typedef struct hx_call_cost {
     double empty_ns, host_ns, floor_ratio;
 } hx_call_cost;
 
-/* Times each entry of each user element (COUSUB, COUXX and COUXX2 separately).
- * Returns the number of rows written into costs (at most capacity). */
-int hx_measure_call_costs(hx_session *s, int repeats, hx_call_cost *costs, int capacity);
-
 /* Further bodies timed in the same rounds as the entries (one call per
  * iteration), e.g. a right-hand side that calls them. */
 typedef struct hx_timed_body {
@@ -39,6 +35,9 @@ typedef struct hx_timed_body {
     double *rounds; /* out: ns per call in each round (repeats values, caller's array) */
 } hx_timed_body;
 
+/* Times each entry of each user element (COUSUB, COUXX and COUXX2 separately),
+ * and the extra bodies in the same rounds. Returns the number of rows written
+ * into costs (at most capacity). */
 int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
                                hx_timed_body *extra, int nextra);
 

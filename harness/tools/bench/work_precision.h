@@ -64,7 +64,6 @@ typedef struct hx_wp_result {
     int npoints;
     hx_wp_point point[HX_WP_MAX_POINTS];
     int analytic;               /* the reference is a closed form */
-    double reference_error;     /* numerical reference: its confirming runs apart */
     int restricted;             /* the slow outputs are some bodies only */
     char reference[1024];       /* how the reference was made */
     hx_stability stability;     /* at the initial state */

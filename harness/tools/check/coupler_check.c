@@ -11,6 +11,7 @@
 #include <stdio.h>
 
 #include "base/finite.h"
+#include "base/linalg.h"
 #include "state/measures.h"
 #include "tools/check/checks.h"
 #include "tools/check/coupler_ranges.h"
@@ -32,14 +33,6 @@ static int sample(void *ctx, const double *x, double *out)
     if (cs->b->messages != NULL && hx_messages_stopped(cs->b->messages))
         return -1;
     return hx_all_finite(out, cs->which == 0 ? 1 : cs->which == 1 ? cs->n : cs->n * cs->n) ? 0 : -1;
-}
-
-static double max_abs(const double *v, int n)
-{
-    double m = 0.0;
-    for (int k = 0; k < n; ++k)
-        m = fmax(m, fabs(v[k]));
-    return m;
 }
 
 static void point_text(char *text, size_t size, const double *x, int n)
@@ -91,7 +84,7 @@ int hx_check_coupler(hx_session *s, hx_binding *b, FILE *out)
                     b->element, b->id, b->names[1], x[0], x[1], n > 2 ? ", ..." : "");
             return 1;
         }
-        const double floor1 = 1e-6 * fmax(max_abs(grad, n), 1e-300);
+        const double floor1 = 1e-6 * fmax(hx_max_abs(grad, n), 1e-300);
         for (int j = 0; j < n; ++j) {
             const double h = 1e-5 * fmax(1.0, fabs(x[j]));
             const double e = hx_check_column(sample, &value, x, j, 1, &grad[j], &floor1, h, NULL);
@@ -119,7 +112,7 @@ int hx_check_coupler(hx_session *s, hx_binding *b, FILE *out)
                     b->names[2]);
             return 1;
         }
-        const double hmax = fmax(max_abs(hess, n * n), max_abs(grad, n));
+        const double hmax = fmax(hx_max_abs(hess, n * n), hx_max_abs(grad, n));
         for (int j = 0; j < n; ++j) {
             double column[3], floors[3];
             for (int i = 0; i < n; ++i) {

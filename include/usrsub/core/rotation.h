@@ -54,12 +54,11 @@ void usrsub_tangent_inverse(const double r[3], double Jinv[9], double *dJinv);
  * its generalized rotational forces Q into torques T = J^-T Q, which makes
  * the elastic part conservative for any rotation. */
 typedef struct usrsub_rotation_map {
-    double r[3], rdot[3], omega[3];
+    double r[3], rdot[3];
     double Jinv[9];
     double dJinv[27];
     double dr_da[9];    /* d r / d angles (when A was given), row-major */
     double drdot_da[9]; /* d rdot / d angles at fixed omega */
-    int has_angles;
 } usrsub_rotation_map;
 
 /* From the rotation R and the angular velocity omega (in J); A: d theta/da of
