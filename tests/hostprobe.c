@@ -5,7 +5,10 @@
  *   2 I J      result = c_sysfnc DX DY DZ (I,J,J) and AX AY AZ (I,J)
  *   3 I J      result = c_sysary VEL(I,J,J,J)
  *   4 I J      asks DISP only outside the dependency pass (an undeclared read)
- *   5 S        result[0] = length of Reference_String S, result[1..5] = c_gtunts scales
+ *   5 S        result[0] = length of Reference_String S, result[1..4] = c_gtunts scales
+ *              (time, length, force, mass), result[5] = 1 when nothing past four
+ *              sizes and twelve characters was written
+ *   98         c_errmes(1, "probe asked to stop later", id, "STOP") at time > 0
  *   99         c_errmes(1, "probe asked to stop", id, "STOP")
  * COUSUB/COUXX/COUXX2: phi = sum of disp. There is deliberately no FIESUB.
  */
@@ -16,7 +19,7 @@
 void STDCALL GFOSUB(int *id, double *time, double *par, int *npar, int *dflag, int *iflag,
                     double *result)
 {
-    (void)time, (void)dflag;
+    (void)dflag;
     memset(result, 0, 6 * sizeof(double));
     if (*npar < 1)
         return;
@@ -42,13 +45,26 @@ void STDCALL GFOSUB(int *id, double *time, double *par, int *npar, int *dflag, i
         int nchars = (int)sizeof text - 1, istat = 0, exists = 0;
         c_gtstrg(ipar[0], text, &nchars, &istat);
         result[0] = istat == 0 ? nchars : -1;
-        double scales[5] = {0};
-        char units[64];
+        /* room for four sizes and twelve characters, then canaries the host
+         * must leave alone */
+        double scales[8] = {-7, -7, -7, -7, -7, -7, -7, -7};
+        char units[16];
+        memset(units, '#', sizeof units);
         c_gtunts(&exists, scales, units);
-        for (int k = 0; k < 5 && exists; ++k)
+        for (int k = 0; k < 4 && exists; ++k)
             result[1 + k] = scales[k];
+        int intact = 1;
+        for (int k = 4; k < 8; ++k)
+            intact &= scales[k] == -7;
+        for (int k = 12; k < 16; ++k)
+            intact &= units[k] == '#';
+        result[5] = intact;
         break;
     }
+    case 98:
+        if (*time > 0.0)
+            c_errmes(1, "probe asked to stop later", *id, "STOP");
+        break;
     case 99: c_errmes(1, "probe asked to stop", *id, "STOP"); break;
     default: break;
     }

@@ -21,11 +21,12 @@ static int load(void **state)
 {
     (void)state;
     hx_message msg;
+    char bound[HX_ENTRY_NAME_MAX];
     void *lib = hx_loader_open(&loader, USRSUB_LIBRARY, &msg);
     assert_non_null(lib);
-    cousub = (usrsub_coupler_fn *)hx_loader_symbol(lib, USRSUB_LIBRARY, "COUSUB", &msg);
-    couxx = (usrsub_coupler_fn *)hx_loader_symbol(lib, USRSUB_LIBRARY, "COUXX", &msg);
-    couxx2 = (usrsub_coupler_fn *)hx_loader_symbol(lib, USRSUB_LIBRARY, "COUXX2", &msg);
+    cousub = (usrsub_coupler_fn *)hx_loader_entry(lib, USRSUB_LIBRARY, "COUSUB", bound, sizeof bound, &msg);
+    couxx = (usrsub_coupler_fn *)hx_loader_entry(lib, USRSUB_LIBRARY, "COUXX", bound, sizeof bound, &msg);
+    couxx2 = (usrsub_coupler_fn *)hx_loader_entry(lib, USRSUB_LIBRARY, "COUXX2", bound, sizeof bound, &msg);
     const char *table = test_write_file("steer.tbl", "-1 -2\n0 0\n1 2.5\n2 4\n");
     char xml[1024];
     snprintf(xml, sizeof xml,

@@ -13,6 +13,7 @@
 #include "host/binding.h"
 #include "host/session.h"
 #include "test_support.h"
+#include "tools/check/checks.h"
 
 #define DEG (M_PI / 180.0)
 
@@ -26,7 +27,7 @@ static const char *probe_model(int probe, int i_marker, int j_marker)
     const double c30 = cos(30 * DEG), s30 = sin(30 * DEG), c40 = cos(40 * DEG), s40 = sin(40 * DEG);
     snprintf(text, sizeof text,
              "<MotionSolve>\n<Model>\n"
-             "<Param_Unit length_unit=\"MILLIMETER\" force_unit=\"NEWTON\" mass_unit=\"KILOGRAM\" time_unit=\"SECOND\"/>\n"
+             "<Param_Unit length_unit=\"CENTIMETER\" force_unit=\"KNEWTON\" mass_unit=\"GRAM\" time_unit=\"MINUTE\"/>\n"
              "<Reference_String id=\"7\" string=\"hello.gbs\"/>\n"
              "<Body_Ground id=\"1\"/>\n"
              "<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
@@ -145,11 +146,37 @@ static void strings_and_units(void **state)
     hx_call call;
     evaluate_probe(5, 7, 0, r, &call);
     assert_close(r[0], 9.0, 0, 0); /* strlen("hello.gbs") */
-    assert_close(r[1], 1e-3, 0, 0); /* millimetre */
-    assert_close(r[2], 1.0, 0, 0);
-    assert_close(r[3], 1.0, 0, 0);
-    assert_close(r[4], 1.0, 0, 0);
-    assert_close(r[5], 1.0, 0, 0); /* radian */
+    /* the Adams-compatible order: time, length, force, mass, sizes in SI */
+    assert_close(r[1], 60.0, 0, 0);  /* minute */
+    assert_close(r[2], 1e-2, 0, 0);  /* centimetre */
+    assert_close(r[3], 1e3, 0, 0);   /* kilonewton */
+    assert_close(r[4], 1e-3, 0, 0);  /* gram */
+    assert_close(r[5], 1.0, 0, 0);   /* nothing written past 4 doubles and 12 characters */
+}
+
+/* The units' names: four of three characters in the same order, exactly twelve. */
+static void unit_names(void **state)
+{
+    (void)state;
+    hx_session s;
+    hx_message msg;
+    if (hx_session_open(&s, probe_model(5, 7, 0), stderr, &msg) != 0)
+        fail_msg("%s", msg.text);
+    hx_call call;
+    hx_binding_call_init(&s.bindings.items[0], &call, 0, &s.state, 0);
+    hx_host_bind(&call);
+    int exists = 0;
+    char units[16];
+    memset(units, '#', sizeof units);
+    c_gtunts(&exists, NULL, units);
+    hx_host_unbind();
+    assert_int_equal(exists, 1);
+    assert_memory_equal(units, "MINCM KN G  ####", 16);
+    /* outside any call there is no model: no units */
+    exists = 1;
+    c_gtunts(&exists, NULL, NULL);
+    assert_int_equal(exists, 0);
+    hx_session_close(&s);
 }
 
 static void stop_is_recorded(void **state)
@@ -160,6 +187,26 @@ static void stop_is_recorded(void **state)
     hx_message msg;
     assert_int_equal(hx_session_open(&s, probe_model(99, 21, 11), NULL, &msg), -1);
     assert_contains(msg.text, "dependency pass", "probe asked to stop");
+}
+
+/* check's history audit runs its histories in processes of their own: a STOP
+ * there stops this process's run too, named once. */
+static void a_stop_in_the_history_audit_stops_the_run(void **state)
+{
+    (void)state;
+    hx_session s;
+    hx_message msg;
+    if (hx_session_open(&s, probe_model(98, 21, 11), NULL, &msg) != 0)
+        fail_msg("%s", msg.text);
+    char text[4096] = {0};
+    FILE *out = fmemopen(text, sizeof text - 1, "w");
+    assert_non_null(out);
+    assert_int_equal(hx_audit_history(&s, &s.bindings.items[0], out), 1);
+    fclose(out);
+    assert_true(hx_messages_stopped(&s.messages));
+    assert_string_equal(s.messages.stop_message, "probe asked to stop later");
+    assert_contains(text, "history audit: the element stopped the run in the calls");
+    hx_session_close(&s);
 }
 
 static void stop_ends_a_harness_run(void **state)
@@ -187,6 +234,8 @@ int main(void)
         cmocka_unit_test(dependency_pass_records_queries),
         cmocka_unit_test(undeclared_read_is_noted),
         cmocka_unit_test(strings_and_units),
+        cmocka_unit_test(unit_names),
+        cmocka_unit_test(a_stop_in_the_history_audit_stops_the_run),
         cmocka_unit_test(stop_is_recorded),
         cmocka_unit_test(stop_ends_a_harness_run),
     };

@@ -128,9 +128,38 @@ static void a_library_is_opened_once(void **state)
     assert_non_null(a);
     assert_ptr_equal(a, b);
     assert_int_equal(loader.count, 1);
-    assert_non_null(hx_loader_symbol(a, path, "GFOSUB", &msg));
-    assert_null(hx_loader_symbol(a, path, "NOPE", &msg));
-    assert_contains(msg.text, "'NOPE'", path);
+    char bound[HX_ENTRY_NAME_MAX];
+    assert_non_null(hx_loader_entry(a, path, "GFOSUB", bound, sizeof bound, &msg));
+    assert_null(hx_loader_entry(a, path, "NOPE", bound, sizeof bound, &msg));
+    assert_contains(msg.text, "'NOPE'", path, "looked up NOPE, nope_ and nope");
+    hx_loader_close_all(&loader);
+}
+
+/* NAME, then name_ (Adams' C port header and gfortran on Linux), then name;
+ * the library's lower-case names are the same functions as its upper-case ones. */
+static void entries_by_the_names_linux_solvers_use(void **state)
+{
+    (void)state;
+    hx_loader loader = {0};
+    hx_message msg;
+    char bound[HX_ENTRY_NAME_MAX];
+    void *lib = hx_loader_open(&loader, USRSUB_LIBRARY, &msg);
+    assert_non_null(lib);
+    void *upper = hx_loader_entry(lib, USRSUB_LIBRARY, "GFOSUB", bound, sizeof bound, &msg);
+    assert_string_equal(bound, "GFOSUB");
+    void *lower = hx_loader_entry(lib, USRSUB_LIBRARY, "gfosub", bound, sizeof bound, &msg);
+    assert_string_equal(bound, "gfosub_");
+    assert_non_null(upper);
+    assert_ptr_equal(upper, lower);
+    assert_non_null(hx_loader_entry(lib, USRSUB_LIBRARY, "Abm_Bushing_Field", bound, sizeof bound,
+                                    &msg));
+    assert_string_equal(bound, "abm_bushing_field_");
+    /* a name too long to look up is refused, not truncated */
+    char longname[HX_ENTRY_NAME_MAX + 8];
+    memset(longname, 'A', sizeof longname - 1);
+    longname[sizeof longname - 1] = '\0';
+    assert_null(hx_loader_entry(lib, USRSUB_LIBRARY, longname, bound, sizeof bound, &msg));
+    assert_contains(msg.text, "longer than");
     hx_loader_close_all(&loader);
 }
 
@@ -144,6 +173,7 @@ int main(void)
         cmocka_unit_test_setup(missing_library_is_named, clear_environment),
         cmocka_unit_test_setup(missing_function_is_named_with_its_library, clear_environment),
         cmocka_unit_test_setup(a_library_is_opened_once, clear_environment),
+        cmocka_unit_test_setup(entries_by_the_names_linux_solvers_use, clear_environment),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

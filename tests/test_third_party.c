@@ -10,7 +10,9 @@
 #include <string.h>
 #include <sys/wait.h>
 
+#include "host/session.h"
 #include "test_support.h"
+#include "tools/check/checks.h"
 
 /* Runs check on tests/third_party/tp_NAME.xml; returns the exit status and
  * the output (stdout and stderr). */
@@ -63,6 +65,59 @@ static void a_hidden_state_is_named(void **state)
     (void)state;
     expect("hidden_state", 1, NEEDLES("history audit: FAIL: a hidden state"),
            NEEDLES("which no declared query"));
+}
+
+/* A library built as on Linux, exporting only gfosub_, binds and passes. */
+static void a_linux_entry_name_binds(void **state)
+{
+    (void)state;
+    expect("linux_names", 0, NEEDLES("Force_Vector_TwoBody 1 (gfosub_ in libtp_linux_names.so)",
+                                     "1 passed, 0 failed"), NEEDLES("FAIL"));
+}
+
+/* Damping from a displacement cached at an earlier call, refreshed after the
+ * first ordinary call at a later time: two calls in a row differ. */
+static void a_cache_refreshed_when_time_advances_fails(void **state)
+{
+    (void)state;
+    expect("cached_displacement", 1,
+           NEEDLES("FAIL: two calls in a row at the same state and time", "a hidden state",
+                   "history audit: FAIL: a hidden state: at the same input A", "0 passed, 1 failed"),
+           NEEDLES("not judged"));
+}
+
+/* A rate estimated across time steps: calls in a row agree, the order of
+ * calls across times shows the hidden state. */
+static void a_cache_across_time_steps_fails(void **state)
+{
+    (void)state;
+    expect("step_cache", 1,
+           NEEDLES("history audit: FAIL: a hidden state: at the same input A",
+                   "a value kept from an earlier call", "0 passed, 1 failed"),
+           NEEDLES("two calls in a row", "not judged"));
+}
+
+/* What the host notes in the history audit's processes comes back: the late
+ * reads of tp_late_query (at t > 0, where the audit's calls are) are noted in
+ * this process, so that check fails them. */
+static void reads_noted_in_the_history_audit_come_back(void **state)
+{
+    (void)state;
+    hx_session s;
+    hx_message msg;
+    if (hx_session_open(&s, THIRD_PARTY_DIR "/tp_late_query.xml", NULL, &msg) != 0)
+        fail_msg("%s", msg.text);
+    hx_binding *b = &s.bindings.items[0];
+    assert_int_equal(b->reported_undeclared.count, 0);
+    FILE *out = fopen("/dev/null", "w");
+    assert_non_null(out);
+    hx_audit_history(&s, b, out);
+    fclose(out);
+    assert_true(b->reported_undeclared.count > 0);
+    char text[64];
+    assert_string_equal(hx_query_text(&b->reported_undeclared.query[0], text, sizeof text),
+                        "VX(20,10,10,10)");
+    hx_session_close(&s);
 }
 
 static void a_read_at_a_later_time_is_caught(void **state)
@@ -118,7 +173,11 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(correct_libraries_pass),
         cmocka_unit_test(a_hidden_state_is_named),
+        cmocka_unit_test(a_linux_entry_name_binds),
+        cmocka_unit_test(a_cache_refreshed_when_time_advances_fails),
+        cmocka_unit_test(a_cache_across_time_steps_fails),
         cmocka_unit_test(a_read_at_a_later_time_is_caught),
+        cmocka_unit_test(reads_noted_in_the_history_audit_come_back),
         cmocka_unit_test(a_wrong_field_partial_is_named_by_row_and_column),
         cmocka_unit_test(a_crash_is_reported_and_survived),
         cmocka_unit_test(a_refused_query_is_reported),

@@ -131,8 +131,9 @@ void c_gtstrg(int id, char *string, int *nchars, int *istat)
 
 void c_gtunts(int *exists, double *scales, char *units)
 {
-    (void)units;
+    /* the Adams-compatible layout: time, length, force, mass (s, mm, N, kg) */
     *exists = 1;
-    const double mm_n_kg_s_rad[5] = {1e-3, 1.0, 1.0, 1.0, 1.0};
-    memcpy(scales, mm_n_kg_s_rad, sizeof mm_n_kg_s_rad);
+    const double s_mm_n_kg[4] = {1.0, 1e-3, 1.0, 1.0};
+    memcpy(scales, s_mm_n_kg, sizeof s_mm_n_kg);
+    memcpy(units, "S  MM N  KG ", 12);
 }

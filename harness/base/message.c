@@ -31,3 +31,11 @@ void hx_message_prefix(hx_message *msg, const char *fmt, ...)
     memcpy(msg->text, joined, sizeof msg->text - 1); /* keep the head when too long */
     msg->text[sizeof msg->text - 1] = '\0';
 }
+
+void hx_format_values(char *text, size_t size, const double *v, int n, int digits)
+{
+    size_t used = 0;
+    text[0] = '\0';
+    for (int k = 0; k < n && used < size; ++k)
+        used += (size_t)snprintf(text + used, size - used, k ? " %.*g" : "%.*g", digits, v[k]);
+}

@@ -7,6 +7,8 @@
 #ifndef HX_BASE_MESSAGE_H
 #define HX_BASE_MESSAGE_H
 
+#include <stddef.h>
+
 #define HX_MESSAGE_MAX 1024
 
 typedef struct hx_message {
@@ -20,5 +22,9 @@ int hx_fail(hx_message *msg, const char *fmt, ...) __attribute__((format(printf,
 /* Puts "prefix: " in front of the text already in msg. */
 void hx_message_prefix(hx_message *msg, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
+
+/* The n values of v, separated by blanks, each with `digits` significant
+ * digits, cut at size. */
+void hx_format_values(char *text, size_t size, const double *v, int n, int digits);
 
 #endif

@@ -40,14 +40,6 @@ static void usage(FILE *f)
                "when one fails, 3 when one stops the run through c_errmes.\n");
 }
 
-static void format_values(char *text, size_t size, const double *v, int n)
-{
-    size_t used = 0;
-    text[0] = '\0';
-    for (int k = 0; k < n && used < size; ++k)
-        used += (size_t)snprintf(text + used, size - used, k ? " %.6g" : "%.6g", v[k]);
-}
-
 /* One evaluation at the model's initial state: its outputs, finite or not. */
 static int evaluate(hx_session *s, hx_binding *b, char *outputs, size_t size)
 {
@@ -77,7 +69,7 @@ static int evaluate(hx_session *s, hx_binding *b, char *outputs, size_t size)
         double *rates = work + f->nstate + f->ninput;
         hx_call_yfosub(b, &s->state, work, work + f->nstate, 0, 0, rates, rates + f->nstate, NULL);
         nout = f->nstate + 6;
-        format_values(outputs, size, rates, nout);
+        hx_format_values(outputs, size, rates, nout, 6);
         const int finite = hx_all_finite(rates, nout);
         free(work);
         return finite;
@@ -87,7 +79,7 @@ static int evaluate(hx_session *s, hx_binding *b, char *outputs, size_t size)
         hx_call_fiesub(b, &s->state, disp, velo, 0, 0, out, dfd, dfv, NULL);
         nout = 6;
     }
-    format_values(outputs, size, out, nout);
+    hx_format_values(outputs, size, out, nout, 6);
     return hx_all_finite(out, nout);
 }
 
@@ -97,13 +89,14 @@ static int check_element(hx_session *s, hx_binding *b)
     char deps[512], outputs[1024], lib[512], functions[160];
     snprintf(lib, sizeof lib, "%s", b->library);
     if (b->kind == HX_BIND_YFOSUB) {
-        int n = snprintf(functions, sizeof functions, "%s", b->names[0]);
+        int n = snprintf(functions, sizeof functions, "%s", hx_binding_routine(b, 0));
         for (int k = 0; k < 4 && n > 0 && (size_t)n < sizeof functions; ++k)
-            n += snprintf(functions + n, sizeof functions - (size_t)n, " %s%s", b->names[1 + k],
+            n += snprintf(functions + n, sizeof functions - (size_t)n, " %s%s",
+                          hx_binding_routine(b, 1 + k),
                           b->state_partial[k] != NULL ? "" : " (not exported)");
     } else {
         snprintf(functions, sizeof functions, b->kind == HX_BIND_COUPLER ? "%s %s %s" : "%s",
-                 b->names[0], b->names[1], b->names[2]);
+                 hx_binding_routine(b, 0), hx_binding_routine(b, 1), hx_binding_routine(b, 2));
     }
     printf("%s %d (%s in %s)\n  declared dependencies: %s\n", b->element, b->id, functions,
            basename(lib), hx_dependencies_text(&b->deps, deps, sizeof deps));
@@ -119,7 +112,11 @@ static int check_element(hx_session *s, hx_binding *b)
         printf("  %s %d: FAIL: returned a non-finite value\n", b->element, b->id);
         return 1;
     }
-    int failures = 0;
+    /* the history audit first: its times then lie past all the element has
+     * seen and still in the model's first second */
+    int failures = hx_audit_history(s, b, stdout);
+    if (hx_messages_stopped(&s->messages))
+        return failures + 1;
     if (b->kind == HX_BIND_COUPLER)
         failures += hx_check_coupler(s, b, stdout);
     else if (b->kind == HX_BIND_FIESUB)
@@ -128,8 +125,6 @@ static int check_element(hx_session *s, hx_binding *b)
         failures += hx_check_state_partials(s, b, stdout);
     else
         failures += hx_audit_dependencies(s, b, stdout);
-    if (!hx_messages_stopped(&s->messages))
-        failures += hx_audit_history(s, b, stdout);
     failures += hx_check_queries(b, stdout);
     return failures;
 }
@@ -142,7 +137,7 @@ static void report_call(const hx_binding *b, const hx_call_log *log, const char 
     char args[512] = "";
     if (log->nargs > 0) {
         char values[480];
-        format_values(values, sizeof values, log->args, log->nargs);
+        hx_format_values(values, sizeof values, log->args, log->nargs, 6);
         snprintf(args, sizeof args, ", %s (%s)",
                  b->kind == HX_BIND_COUPLER ? "disp" : b->kind == HX_BIND_YFOSUB ? "input"
                                                      : "disp and velo", values);

@@ -9,6 +9,7 @@
 #include <strings.h>
 
 #include "host/call.h"
+#include "model/units.h"
 #include "usrsub/solver_abi.h"
 
 static _Thread_local hx_call *bound;
@@ -93,13 +94,24 @@ void c_gtstrg(int id, char *string, int *nchars, int *istat)
 
 void c_gtunts(int *exists, double *scales, char *units)
 {
-    (void)units;
+    /* The Adams-compatible layout (docs/interface.md §1): exactly four sizes,
+     * time, length, force, mass, and twelve characters; nothing beyond them,
+     * since callers hold exactly that much. */
+    static const enum hx_unit_kind order[USRSUB_GTUNTS_COUNT] = {
+        [USRSUB_GTUNTS_TIME] = HX_UNIT_TIME, [USRSUB_GTUNTS_LENGTH] = HX_UNIT_LENGTH,
+        [USRSUB_GTUNTS_FORCE] = HX_UNIT_FORCE, [USRSUB_GTUNTS_MASS] = HX_UNIT_MASS};
     const hx_model *m = bound != NULL ? bound->model : NULL;
     const int has = m != NULL && m->has_units;
     if (exists != NULL)
         *exists = has;
-    if (has && scales != NULL)
-        memcpy(scales, m->unit_scales, sizeof m->unit_scales);
+    if (!has)
+        return;
+    for (int k = 0; k < USRSUB_GTUNTS_COUNT; ++k) {
+        if (scales != NULL)
+            scales[k] = m->unit_scales[order[k]];
+        if (units != NULL)
+            memcpy(units + 3 * k, hx_unit_abbreviation(order[k], m->unit_scales[order[k]]), 3);
+    }
 }
 
 /* ---- state queries ------------------------------------------------------------------- */

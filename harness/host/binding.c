@@ -20,7 +20,8 @@ static int bind_state_partials(void *handle, const char *path, hx_binding *b,
     for (int k = 0; k < 4; ++k) {
         hx_message absent;
         hx_message *report = named[k] != NULL ? msg : &absent;
-        void *fn = hx_loader_symbol(handle, path, b->names[1 + k], report);
+        void *fn = hx_loader_entry(handle, path, b->names[1 + k], b->symbols[1 + k],
+                                   sizeof b->symbols[1 + k], report);
         if (fn == NULL && named[k] != NULL)
             return -1;
         b->state_partial[k] = (usrsub_state_partial_fn *)fn;
@@ -43,7 +44,8 @@ static int bind_one(const hx_model *m, hx_bindings *bs, hx_binding *b, const hx_
     const int nfun = b->kind == HX_BIND_COUPLER ? 3 : 1;
     void *fn[3] = {0};
     for (int k = 0; k < nfun; ++k)
-        if ((fn[k] = hx_loader_symbol(handle, path, b->names[k], msg)) == NULL)
+        if ((fn[k] = hx_loader_entry(handle, path, b->names[k], b->symbols[k],
+                                     sizeof b->symbols[k], msg)) == NULL)
             goto failed;
     if (b->kind == HX_BIND_COUPLER)
         for (int k = 0; k < 3; ++k)
@@ -83,10 +85,13 @@ static int bind_twin(hx_bindings *bs, hx_binding *b)
         snprintf(name, sizeof name, "FIESUB");
     hx_message ignored;
     void *handle = hx_loader_open(&bs->loader, b->library, &ignored);
-    void *fn = handle != NULL ? hx_loader_symbol(handle, b->library, name, &ignored) : NULL;
+    char symbol[HX_ENTRY_NAME_MAX];
+    void *fn = handle != NULL ? hx_loader_entry(handle, b->library, name, symbol, sizeof symbol,
+                                                &ignored)
+                              : NULL;
     if (fn == NULL)
         return 0;
-    b->twin_name = strdup(name);
+    b->twin_name = strdup(symbol);
     b->twin_par = malloc(sizeof(double) * (size_t)b->npar);
     if (b->twin_name == NULL || b->twin_par == NULL)
         return -1;
@@ -196,10 +201,15 @@ hx_binding *hx_binding_of_state_eqn(hx_bindings *bs, int element_index)
     return NULL;
 }
 
+const char *hx_binding_routine(const hx_binding *b, int which)
+{
+    return b->symbols[which][0] != '\0' ? b->symbols[which] : b->names[which];
+}
+
 void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_state *s, int iflag)
 {
-    hx_call_init(call, b->element, b->id, b->names[which], b->model, s, b->messages, iflag != 0,
-                 &b->deps);
+    hx_call_init(call, b->element, b->id, hx_binding_routine(b, which), b->model, s, b->messages,
+                 iflag != 0, &b->deps);
     /* couplers and FIESUB get their state in their arguments (docs/interface.md §1) */
     call->may_query = b->kind == HX_BIND_GFOSUB;
     call->reported_undeclared = &b->reported_undeclared;
@@ -273,7 +283,7 @@ static void log_call(hx_binding *b, int which, double time, int iflag, int dflag
                      const double *args, int nargs)
 {
     hx_call_log *log = b->log;
-    log->routine = b->names[which];
+    log->routine = hx_binding_routine(b, which);
     log->iflag = iflag, log->dflag = dflag;
     log->time = time;
     log->nargs = nargs;
@@ -290,6 +300,8 @@ static void begin(hx_binding *b, int which, const hx_state *s, int iflag, hx_cal
         hx_binding_call_init(b, local, which, s, iflag);
         call = local;
     }
+    if (s->time > b->latest_time)
+        b->latest_time = s->time;
     hx_host_bind(call);
 }
 

@@ -38,7 +38,9 @@ typedef struct hx_binding {
     const char *element; /* "Constraint_Coupler", "Force_Vector_TwoBody", "Force_Field",
                           * "Force_StateEqn" */
     char *library;       /* resolved path */
-    const char *names[5];
+    const char *names[5]; /* as the model names them, or the default names */
+    /* the symbols bound for them: NAME, name_ or name (hx_loader_entry) */
+    char symbols[5][HX_ENTRY_NAME_MAX];
     usrsub_coupler_fn *coupler[3]; /* phi, dphi/dM, d2phi/dM2 */
     usrsub_gfosub_fn *gfosub;
     usrsub_fiesub_fn *fiesub;
@@ -57,6 +59,7 @@ typedef struct hx_binding {
     double *twin_par;
     int twin_npar;
     hx_dependencies deps; /* declared in the dependency pass */
+    double latest_time;   /* the latest time any of its functions was called at */
     /* bytes the library kept allocated across the element's first calls (its
      * dependency pass, where a library sets an element up), as the C
      * library's allocator counts them; -1: not measured */
@@ -82,6 +85,10 @@ void hx_bindings_free(hx_bindings *b);
 hx_binding *hx_binding_of_coupler(hx_bindings *b, int coupler_index);
 hx_binding *hx_binding_of_force(hx_bindings *b, int force_index);
 hx_binding *hx_binding_of_state_eqn(hx_bindings *b, int element_index);
+
+/* The name of function `which` of b as the library exports it (the symbol
+ * bound), or as the model names it when it is not exported. */
+const char *hx_binding_routine(const hx_binding *b, int which);
 
 /* A call record of function `which` of b at state s, recording into (iflag)
  * or checking against b->deps. */

@@ -1,6 +1,7 @@
 /* Library resolution and loading (loader.h). */
 #include "host/loader.h"
 
+#include <ctype.h>
 #include <dlfcn.h>
 #include <limits.h>
 #include <stdio.h>
@@ -90,13 +91,33 @@ void *hx_loader_open(hx_loader *loader, const char *path, hx_message *msg)
     return handle;
 }
 
-void *hx_loader_symbol(void *handle, const char *path, const char *name, hx_message *msg)
+void *hx_loader_entry(void *handle, const char *path, const char *name, char *bound,
+                      size_t size, hx_message *msg)
 {
-    dlerror();
-    void *symbol = dlsym(handle, name);
-    if (symbol == NULL)
-        hx_fail(msg, "function '%s' not found in library '%s'", name, path);
-    return symbol;
+    char forms[3][HX_ENTRY_NAME_MAX];
+    const size_t n = strlen(name);
+    if (n + 2 > sizeof forms[0]) {
+        hx_fail(msg, "entry name '%.40s...' is longer than %d characters", name,
+                HX_ENTRY_NAME_MAX - 2);
+        return NULL;
+    }
+    for (size_t k = 0; k <= n; ++k) { /* the terminators too */
+        forms[0][k] = name[k];
+        forms[1][k] = forms[2][k] = (char)tolower((unsigned char)name[k]);
+    }
+    forms[1][n] = '_';
+    forms[1][n + 1] = '\0';
+    for (int k = 0; k < 3; ++k) {
+        dlerror();
+        void *symbol = dlsym(handle, forms[k]);
+        if (symbol != NULL) {
+            snprintf(bound, size, "%s", forms[k]);
+            return symbol;
+        }
+    }
+    hx_fail(msg, "function '%s' not found in library '%s' (looked up %s, %s and %s)", name, path,
+            forms[0], forms[1], forms[2]);
+    return NULL;
 }
 
 void hx_loader_close_all(hx_loader *loader)

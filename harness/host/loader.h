@@ -30,9 +30,15 @@ int hx_loader_resolve(const char *dll_name, const char *model_dir, char *path, s
 /* Opens (once) the library at a resolved path. */
 void *hx_loader_open(hx_loader *loader, const char *path, hx_message *msg);
 
-/* Address of a function in an opened library; NULL with a message naming
- * both the symbol and the library when it is missing. */
-void *hx_loader_symbol(void *handle, const char *path, const char *name, hx_message *msg);
+/* The longest entry name looked up, with its terminator. */
+#define HX_ENTRY_NAME_MAX 64
+
+/* An entry of an opened library by the names a solver looks it up by
+ * (docs/interface.md §5): NAME as given, then in lower case with a trailing
+ * underscore (Adams' C port header on Linux, gfortran), then in lower case.
+ * bound receives the name found; NULL with a message naming all three. */
+void *hx_loader_entry(void *handle, const char *path, const char *name, char *bound,
+                      size_t size, hx_message *msg);
 
 /* dlclose every library. */
 void hx_loader_close_all(hx_loader *loader);

@@ -41,6 +41,18 @@ void hx_messages_error(hx_messages *m, int id, const char *text, int stop)
     pthread_mutex_unlock(&m->lock);
 }
 
+void hx_messages_adopt_stop(hx_messages *m, const char *text)
+{
+    pthread_mutex_lock(&m->lock);
+    ++m->errors;
+    snprintf(m->last_error, sizeof m->last_error, "%s", text != NULL ? text : "");
+    if (!atomic_load_explicit(&m->stop, memory_order_relaxed)) {
+        snprintf(m->stop_message, sizeof m->stop_message, "%s", m->last_error);
+        atomic_store_explicit(&m->stop, 1, memory_order_release);
+    }
+    pthread_mutex_unlock(&m->lock);
+}
+
 void hx_messages_notice(hx_messages *m, int id, const char *type, const char *text)
 {
     pthread_mutex_lock(&m->lock);

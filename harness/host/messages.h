@@ -30,6 +30,9 @@ void hx_messages_reset(hx_messages *m);
 
 /* c_errmes: "ERRMES [id]: text" (with STOP when stop is set). */
 void hx_messages_error(hx_messages *m, int id, const char *text, int stop);
+/* A STOP that a process forked from this one received and printed: this
+ * process stops too, without printing the text again. */
+void hx_messages_adopt_stop(hx_messages *m, const char *text);
 /* c_usrmes: "USRMES:USER [id] TYPE: text". */
 void hx_messages_notice(hx_messages *m, int id, const char *type, const char *text);
 /* The host's own finding about a call: "host: text". */

@@ -63,11 +63,11 @@ static void build_param_unit(hx_draft *d, const hx_element_read *e)
 {
     static const struct {
         const char *attribute;
-        enum usrsub_unit_kind kind;
-    } units[] = {{"length_unit", USRSUB_UNIT_LENGTH},
-                 {"force_unit", USRSUB_UNIT_FORCE},
-                 {"mass_unit", USRSUB_UNIT_MASS},
-                 {"time_unit", USRSUB_UNIT_TIME}};
+        enum hx_unit_kind kind;
+    } units[] = {{"length_unit", HX_UNIT_LENGTH},
+                 {"force_unit", HX_UNIT_FORCE},
+                 {"mass_unit", HX_UNIT_MASS},
+                 {"time_unit", HX_UNIT_TIME}};
     hx_model *m = d->m;
     for (size_t k = 0; k < sizeof units / sizeof units[0]; ++k) {
         const char *name = hx_attr_text(e, units[k].attribute);
@@ -78,7 +78,7 @@ static void build_param_unit(hx_draft *d, const hx_element_read *e)
             return;
         }
     }
-    m->unit_scales[USRSUB_UNIT_ANGLE] = 1.0;
+    m->unit_scales[HX_UNIT_ANGLE] = 1.0;
     const double factor = hx_attr_number(e, "mass_mult_factor", 1.0);
     if (factor != 1.0) {
         hx_draft_fail(d, e->line, "Param_Unit: mass_mult_factor %g is not supported by the"

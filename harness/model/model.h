@@ -12,6 +12,7 @@
 
 #include "base/message.h"
 #include "model/time_function.h"
+#include "model/units.h"
 #include "usrsub/solver_abi.h"
 
 typedef struct hx_user_call {
@@ -149,7 +150,7 @@ typedef struct hx_model {
     char *path;
     char *dir;               /* folder of the model file */
     int has_units;
-    double unit_scales[USRSUB_UNIT_COUNT];
+    double unit_scales[HX_UNIT_COUNT];
     double gravity[3];
     hx_body *bodies;
     int nbodies;

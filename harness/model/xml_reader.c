@@ -359,7 +359,7 @@ static hx_model *read_model(const char *path, const char *text, size_t length, F
         return NULL;
     }
     m->ground = -1;
-    for (int k = 0; k < USRSUB_UNIT_COUNT; ++k)
+    for (int k = 0; k < HX_UNIT_COUNT; ++k)
         m->unit_scales[k] = 1.0;
     char real[PATH_MAX];
     m->path = strdup(text == NULL && realpath(path, real) != NULL ? real : path);

@@ -53,8 +53,8 @@ int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg)
                        " user elements", m->nunsimulated, m->nunsimulated == 1 ? "" : "s",
                        m->unsimulated);
     const double *u = m->unit_scales;
-    d->ucf = m->has_units ? u[USRSUB_UNIT_TIME] * u[USRSUB_UNIT_TIME] * u[USRSUB_UNIT_FORCE] /
-                                (u[USRSUB_UNIT_MASS] * u[USRSUB_UNIT_LENGTH])
+    d->ucf = m->has_units ? u[HX_UNIT_TIME] * u[HX_UNIT_TIME] * u[HX_UNIT_FORCE] /
+                                (u[HX_UNIT_MASS] * u[HX_UNIT_LENGTH])
                           : 1.0;
     const int nb = m->nbodies, nc = m->ncouplers, nf = m->nforces;
     d->dof = calloc((size_t)nb + 1, sizeof *d->dof);

@@ -76,6 +76,26 @@ USRSUB_EXPORT usrsub_state_partial_fn YFOXU;
 USRSUB_EXPORT usrsub_state_partial_fn YFOYX;
 USRSUB_EXPORT usrsub_state_partial_fn YFOYU;
 
+/* Every entry again under the name a Linux solver looks it up by: lower case
+ * with a trailing underscore, as Adams' C port header and gfortran spell it
+ * (docs/interface.md §1). Each is the same function as its upper-case name. */
+USRSUB_EXPORT usrsub_coupler_fn cousub_;
+USRSUB_EXPORT usrsub_coupler_fn couxx_;
+USRSUB_EXPORT usrsub_coupler_fn couxx2_;
+USRSUB_EXPORT usrsub_gfosub_fn gfosub_;
+USRSUB_EXPORT usrsub_fiesub_fn fiesub_;
+USRSUB_EXPORT usrsub_gfosub_fn abm_bushing_;
+USRSUB_EXPORT usrsub_gfosub_fn mount_limits_;
+USRSUB_EXPORT usrsub_gfosub_fn flex_joint_;
+USRSUB_EXPORT usrsub_fiesub_fn abm_bushing_field_;
+USRSUB_EXPORT usrsub_fiesub_fn mount_limits_field_;
+USRSUB_EXPORT usrsub_fiesub_fn flex_joint_field_;
+USRSUB_EXPORT usrsub_yfosub_fn yfosub_;
+USRSUB_EXPORT usrsub_state_partial_fn yfoxx_;
+USRSUB_EXPORT usrsub_state_partial_fn yfoxu_;
+USRSUB_EXPORT usrsub_state_partial_fn yfoyx_;
+USRSUB_EXPORT usrsub_state_partial_fn yfoyu_;
+
 /* ---- Utilities a host provides (resolved from the host at load time) ---- */
 
 void c_sysary(const char *fnc, const int *ipar, int nsize, double *states, int *nstates,
@@ -84,17 +104,21 @@ void c_sysfnc(const char *fnc, const int *ipar, int nsize, double *value, int *e
 void c_errmes(int errflg, const char *msg, int id, const char *endflg);
 void c_usrmes(int msgflg, const char *msg, int id, const char *msgtyp);
 void c_gtstrg(int id, char *string, int *nchars, int *istat);
+/* exists: non-zero when the model declares units. scales: four values, the
+ * size in SI of the model's unit of time, length, force and mass, in that
+ * order (angles are radians); units: twelve characters, four names of three
+ * characters, no terminator. The Adams-compatible layout that published user
+ * code reads (docs/interface.md §1, docs/sources.md). */
 void c_gtunts(int *exists, double *scales, char *units);
 
-/* c_gtunts scales[] order: sizes of the model's units in SI. */
-enum usrsub_unit_kind {
-    USRSUB_UNIT_LENGTH = 0, /* metre */
-    USRSUB_UNIT_FORCE = 1,  /* newton */
-    USRSUB_UNIT_MASS = 2,   /* kilogram */
-    USRSUB_UNIT_TIME = 3,   /* second */
-    USRSUB_UNIT_ANGLE = 4,  /* radian */
-    USRSUB_UNIT_COUNT = 5
+enum usrsub_gtunts_scale {
+    USRSUB_GTUNTS_TIME = 0,   /* second */
+    USRSUB_GTUNTS_LENGTH = 1, /* metre */
+    USRSUB_GTUNTS_FORCE = 2,  /* newton */
+    USRSUB_GTUNTS_MASS = 3,   /* kilogram */
+    USRSUB_GTUNTS_COUNT = 4
 };
+#define USRSUB_GTUNTS_NAMES_LENGTH 12 /* four names of three characters */
 
 #ifdef __cplusplus
 }

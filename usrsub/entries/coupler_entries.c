@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "element_cache.h"
+#include "entry_alias.h"
 #include "entry_report.h"
 #include "finite.h"
 #include "host.h"
@@ -154,3 +155,7 @@ void STDCALL COUXX2(int *id, double *time, double *par, int *npar, double *disp,
     (void)time, (void)iflag;
     coupler_entry(COUPLER_HESSIAN, id, par, npar, disp, ndisp, d2fda2);
 }
+
+ENTRY_ALIAS(usrsub_coupler_fn, cousub_, COUSUB)
+ENTRY_ALIAS(usrsub_coupler_fn, couxx_, COUXX)
+ENTRY_ALIAS(usrsub_coupler_fn, couxx2_, COUXX2)

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "element_cache.h"
+#include "entry_alias.h"
 #include "entry_report.h"
 #include "finite.h"
 #include "force_model.h"
@@ -136,3 +137,12 @@ void STDCALL FIESUB(int *id, double *time, double *par, int *npar, double *disp,
 NAMED_ENTRIES(ABM_BUSHING, FORCE_BUSHING)
 NAMED_ENTRIES(MOUNT_LIMITS, FORCE_MOUNT_LIMITS)
 NAMED_ENTRIES(FLEX_JOINT, FORCE_FLEX_JOINT)
+
+ENTRY_ALIAS(usrsub_gfosub_fn, gfosub_, GFOSUB)
+ENTRY_ALIAS(usrsub_fiesub_fn, fiesub_, FIESUB)
+ENTRY_ALIAS(usrsub_gfosub_fn, abm_bushing_, ABM_BUSHING)
+ENTRY_ALIAS(usrsub_fiesub_fn, abm_bushing_field_, ABM_BUSHING_FIELD)
+ENTRY_ALIAS(usrsub_gfosub_fn, mount_limits_, MOUNT_LIMITS)
+ENTRY_ALIAS(usrsub_fiesub_fn, mount_limits_field_, MOUNT_LIMITS_FIELD)
+ENTRY_ALIAS(usrsub_gfosub_fn, flex_joint_, FLEX_JOINT)
+ENTRY_ALIAS(usrsub_fiesub_fn, flex_joint_field_, FLEX_JOINT_FIELD)

@@ -77,6 +77,13 @@ static const void *property_named(usrsub_user_list *u, const char *what, const c
     }
     double scales[USRSUB_UNIT_COUNT];
     const int has_units = host_model_units(scales);
+    if (has_units < 0) {
+        usrsub_fail(&report->error, "the host's c_gtunts reported unit sizes that are not"
+                    " positive and finite (time %g s, length %g m, force %g N, mass %g kg)",
+                    scales[USRSUB_UNIT_TIME], scales[USRSUB_UNIT_LENGTH],
+                    scales[USRSUB_UNIT_FORCE], scales[USRSUB_UNIT_MASS]);
+        return NULL;
+    }
     const void *p = property_cache_get(kind, path, has_units ? scales : NULL, read, release,
                                        &report->notices, &report->error);
     if (p == NULL)

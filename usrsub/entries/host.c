@@ -3,6 +3,8 @@
 
 #include <string.h>
 
+#include "usrsub/readers/units.h"
+
 void host_report_error(int id, const char *text)
 {
     c_errmes(1, text, id, "STOP");
@@ -34,12 +36,25 @@ int host_read_string(int string_id, char *text, int capacity)
 
 int host_model_units(double scales[USRSUB_UNIT_COUNT])
 {
+    /* The Adams-compatible layout: time, length, force, mass (docs/interface.md
+     * §1). Room to spare for a host that writes more than it should. */
+    double reply[4 * USRSUB_GTUNTS_COUNT];
+    char names[4 * USRSUB_GTUNTS_NAMES_LENGTH];
     int exists = 0;
-    char names[256] = {0};
+    for (int k = 0; k < (int)(sizeof reply / sizeof reply[0]); ++k)
+        reply[k] = 1.0;
+    c_gtunts(&exists, reply, names);
+    scales[USRSUB_UNIT_TIME] = reply[USRSUB_GTUNTS_TIME];
+    scales[USRSUB_UNIT_LENGTH] = reply[USRSUB_GTUNTS_LENGTH];
+    scales[USRSUB_UNIT_FORCE] = reply[USRSUB_GTUNTS_FORCE];
+    scales[USRSUB_UNIT_MASS] = reply[USRSUB_GTUNTS_MASS];
+    scales[USRSUB_UNIT_ANGLE] = 1.0;
+    if (exists == 0)
+        return 0;
     for (int k = 0; k < USRSUB_UNIT_COUNT; ++k)
-        scales[k] = 1.0;
-    c_gtunts(&exists, scales, names);
-    return exists != 0;
+        if (!(scales[k] > 0.0 && scales[k] < 1e300))
+            return -1;
+    return 1;
 }
 
 int host_query_array(const char *fnc, const int *ipar, int nsize, double *states,

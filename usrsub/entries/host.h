@@ -6,6 +6,7 @@
 #ifndef USRSUB_HOST_H
 #define USRSUB_HOST_H
 
+#include "usrsub/readers/units.h"
 #include "usrsub/solver_abi.h"
 
 /* An input error: c_errmes(1, text, id, "STOP"). */
@@ -17,8 +18,9 @@ void host_report_notice(int id, const char *text);
  * padding. Returns 0, or -1 when the host has no such string. */
 int host_read_string(int string_id, char *text, int capacity);
 
-/* Sizes of the model's units in SI (enum usrsub_unit_kind order). Returns 1
- * when the model declares its units, 0 otherwise. */
+/* Sizes of the model's units in SI, in enum usrsub_unit_kind order (angles
+ * in radians), from c_gtunts. Returns 1 when the model declares its units, 0
+ * when it does not, -1 when the host's sizes are not positive and finite. */
 int host_model_units(double scales[USRSUB_UNIT_COUNT]);
 
 /* c_sysfnc; returns 0 when the host answered. */

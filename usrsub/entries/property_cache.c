@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "usrsub/solver_abi.h"
+#include "usrsub/readers/units.h"
 
 typedef struct property_entry {
     struct property_entry *next;

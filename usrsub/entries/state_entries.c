@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "entry_report.h"
+#include "entry_alias.h"
 #include "finite.h"
 #include "force_model.h"
 #include "usrsub/solver_abi.h"
@@ -149,3 +150,9 @@ PARTIAL_ENTRY(YFOXX, BLOCK_XX)
 PARTIAL_ENTRY(YFOXU, BLOCK_XU)
 PARTIAL_ENTRY(YFOYX, BLOCK_YX)
 PARTIAL_ENTRY(YFOYU, BLOCK_YU)
+
+ENTRY_ALIAS(usrsub_yfosub_fn, yfosub_, YFOSUB)
+ENTRY_ALIAS(usrsub_state_partial_fn, yfoxx_, YFOXX)
+ENTRY_ALIAS(usrsub_state_partial_fn, yfoxu_, YFOXU)
+ENTRY_ALIAS(usrsub_state_partial_fn, yfoyx_, YFOYX)
+ENTRY_ALIAS(usrsub_state_partial_fn, yfoyu_, YFOYU)

@@ -4,9 +4,9 @@
  * of them): every body state (position, orientation, velocity, angular
  * velocity) the force depends on, by finite differences, must be reached by
  * a query declared in the dependency pass; every declared query must change
- * the force at one of the states at least when its answer changes. A state
- * whose force does not repeat is not judged here: the history audit names
- * that.
+ * the force at one of the states at least when its answer changes. Two calls
+ * in a row at the same state and time must give the same force: one that
+ * does not keeps a value from an earlier call, and fails here.
  */
 #include <math.h>
 #include <stdio.h>
@@ -14,6 +14,7 @@
 
 #include "base/vecmath.h"
 #include "sim/element_probe.h"
+#include "state/measures.h"
 #include "tools/check/checks.h"
 #include "tools/check/element_samples.h"
 
@@ -58,11 +59,29 @@ typedef struct audit {
     hx_session *s;
     hx_binding *b;
     hx_state base, moved;
-    int failures, checked, influencing, unreached, unrepeatable;
+    int failures, states, checked, influencing, unreached;
     unsigned used[HX_MAX_QUERIES];
     int counts[HX_MAX_QUERIES];
     FILE *out;
 } audit;
+
+/* Two calls in a row at one state and time that disagree. */
+static void report_unrepeatable(const audit *a, const double first[6], const double second[6])
+{
+    double disp[6], velo[6]; /* as the host measures them, J's motion included */
+    hx_force_deformation(&a->base, a->b->index, disp, velo);
+    static const char *const names[6] = {"Fx", "Fy", "Fz", "Tx", "Ty", "Tz"};
+    int k = 0;
+    while (k < 5 && memcmp(&first[k], &second[k], sizeof first[k]) == 0)
+        ++k;
+    fprintf(a->out, "  %s %d: FAIL: two calls in a row at the same state and time t = %.9g"
+            " (deformation %.9g %.9g %.9g %.9g %.9g %.9g, rate %.9g %.9g %.9g %.9g %.9g %.9g of"
+            " I relative to J) return %s = %.17g, then %.17g: the force keeps a value from an"
+            " earlier call (a hidden state), which breaks implicit solvers, differencing and"
+            " restarts\n", a->b->element, a->b->id, a->base.time, disp[0], disp[1], disp[2],
+            disp[3], disp[4], disp[5], velo[0], velo[1], velo[2], velo[3], velo[4], velo[5],
+            names[k], first[k], second[k]);
+}
 
 /* Body states that move the force but no declared query. */
 static int audit_states(audit *a, const double scale[12], const double out0[6])
@@ -144,6 +163,7 @@ int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
     double t_last = 0.0;
     for (int sample = 1; sample < HX_FORCE_SAMPLES && a.failures == 0; ++sample) {
         double disp[6], velo[6], scale[12], out0[6], again[6];
+        ++a.states;
         hx_sample_element_state(s, b->index, sample, disp, velo, scale);
         hx_place_relative(&s->state, &a.base, f->i_marker, f->j_marker, disp, velo);
         a.base.time = t_last = hx_sample_time(m, sample);
@@ -157,8 +177,10 @@ int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
             break;
         }
         if (memcmp(out0, again, sizeof out0) != 0) {
-            ++a.unrepeatable; /* a hidden state: the history audit says so */
-            continue;
+            report_unrepeatable(&a, out0, again);
+            hx_state_free(&a.base);
+            hx_state_free(&a.moved);
+            return 1; /* nothing else can be judged of a force that does not repeat */
         }
         if (audit_states(&a, scale, out0) != 0 || audit_queries(&a, out0) != 0) {
             ++a.failures;
@@ -173,26 +195,15 @@ int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
         used_len += (size_t)snprintf(used_text + used_len, sizeof used_text - used_len,
                                      "%s%s uses %d of %d", q ? ", " : "", qt,
                                      __builtin_popcount(a.used[q]), a.counts[q]);
-        if (a.used[q] == 0 && a.unrepeatable == 0) {
+        if (a.used[q] == 0 && a.failures == 0) {
             fprintf(out, "  %s %d: FAIL: declares %s but its force depends on it at none of the"
                     " %d states\n", b->element, b->id, qt, HX_FORCE_SAMPLES - 1);
             ++a.failures;
         }
     }
     hx_dependencies_text(&b->deps, declared, sizeof declared);
-    if (a.unrepeatable == HX_FORCE_SAMPLES - 1) {
-        fprintf(out, "  %s %d: dependency audit: not judged: at none of its %d states does the force"
-                " repeat when called twice (the history audit says why); declared %s\n",
-                b->element, b->id, a.unrepeatable, declared);
-        hx_state_free(&a.base);
-        hx_state_free(&a.moved);
-        return 0;
-    }
     char reach[160];
-    if (a.unrepeatable > 0)
-        snprintf(reach, sizeof reach, "not judged at %d state%s whose force does not repeat",
-                 a.unrepeatable, a.unrepeatable == 1 ? "" : "s");
-    else if (a.influencing == 0)
+    if (a.influencing == 0)
         snprintf(reach, sizeof reach, "none moves the force");
     else if (a.unreached == 0)
         snprintf(reach, sizeof reach, "all of them reached by a declared query");
@@ -200,9 +211,9 @@ int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
         snprintf(reach, sizeof reach, "%d of them reached by no declared query", a.unreached);
     fprintf(out, "  %s %d: dependency audit at %d states, t from %g to %g: declared %s; %d of %d"
             " body-state changes move the force, %s; %s: %s\n", b->element, b->id,
-            HX_FORCE_SAMPLES - 1, hx_sample_time(m, 1), t_last, declared, a.influencing, a.checked,
+            a.states, hx_sample_time(m, 1), t_last, declared, a.influencing, a.checked,
             reach, used_text[0] ? used_text : "no queries declared",
-            a.failures ? "FAIL" : a.unrepeatable ? "not judged" : "pass");
+            a.failures ? "FAIL" : "pass");
     hx_state_free(&a.base);
     hx_state_free(&a.moved);
     return a.failures ? 1 : 0;

@@ -14,16 +14,16 @@ double hx_jitter(unsigned *seed)
 
 double hx_sample_time(const hx_model *m, int k)
 {
-    const double second = 1.0 / (m->has_units ? m->unit_scales[USRSUB_UNIT_TIME] : 1.0);
+    const double second = 1.0 / (m->has_units ? m->unit_scales[HX_UNIT_TIME] : 1.0);
     return k == 0 ? 0.0 : second * (double)k / (HX_FORCE_SAMPLES - 1);
 }
 
 /* The typical steps of a model: 1 mm, 0.02 rad, and those over 10 ms. */
 static void typical_steps(const hx_model *m, double *length, double *angle, double *rate)
 {
-    const double L = m->has_units ? m->unit_scales[USRSUB_UNIT_LENGTH] : 1e-3;
-    const double T = m->has_units ? m->unit_scales[USRSUB_UNIT_TIME] : 1.0;
-    const double A = m->has_units ? m->unit_scales[USRSUB_UNIT_ANGLE] : 1.0;
+    const double L = m->has_units ? m->unit_scales[HX_UNIT_LENGTH] : 1e-3;
+    const double T = m->has_units ? m->unit_scales[HX_UNIT_TIME] : 1.0;
+    const double A = m->has_units ? m->unit_scales[HX_UNIT_ANGLE] : 1.0;
     *length = 1e-3 / L;
     *angle = 0.02 / A;
     *rate = 1.0 / (0.01 / T);

@@ -1,15 +1,28 @@
 /*
  * The history audit (checks.h): a solver calls an element in any order, at
- * trial states it throws away, differencing with dflag set, and again after
- * a restart; an element whose output depends on what it was called with
- * before (a value kept from an earlier call) breaks every implicit solver.
- * At two inputs A and B (different states and times), the outputs at A must
- * be bit-identical: repeated, after a call at B, after a dflag call at B,
- * and after a call at A at B's time. Whether the output depends on time is
- * said, not judged.
+ * trial states it throws away, differencing with dflag set, going back in
+ * time after a rejected step, and again after a restart; an element whose
+ * outputs depend on what it was called with before (a value kept from an
+ * earlier call) breaks every implicit solver. So the outputs at one input A
+ * and time T must be bit-identical whatever came before.
+ *
+ * Each history (a few calls, then A at T) runs in a process of its own,
+ * forked from this one, so that every history starts from the same library
+ * state and the outputs at A and T are compared across histories, not along
+ * one sequence. The times lie beyond any the element has been called at (the
+ * check runs this audit first, after the calls at t = 0, so that they stay in
+ * the model's first second), so that a cache refreshed only when time
+ * advances is refreshed here. What the host notes in a history (a read
+ * outside the declared dependencies, a refused query, a STOP) comes back to
+ * this process. Whether the output depends on time is said, not judged.
  */
+#include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "sim/element_probe.h"
 #include "state/measures.h"
@@ -20,6 +33,9 @@
 #define MAX_OUT 81
 #define MAX_IN 64
 
+enum { INPUT_A, INPUT_B };
+enum { EARLIER, AUDITED, LATER, TIMES };
+
 typedef struct probe {
     hx_session *s;
     hx_binding *b;
@@ -27,10 +43,38 @@ typedef struct probe {
     /* A and B: joint displacements, deformation and rate, or a state
      * equation's states and inputs */
     double input[2][MAX_IN];
-    double time[2];
+    int ninput;
+    double time[TIMES];
+    int nout;
 } probe;
 
-/* Every output of the element at input `which`, at time t; dflag as given. */
+typedef struct call_step {
+    int input, time, dflag;
+} call_step;
+
+/* Calls made before the audited one, A at time[AUDITED]. */
+typedef struct history {
+    const char *what;
+    int nsteps;
+    call_step step[2];
+} history;
+
+static const history histories[] = {
+    {"as the first call at its time", 0, {{0}}},
+    {"repeated at once", 1, {{INPUT_A, AUDITED, 0}}},
+    {"after a call at input B at the same time", 1, {{INPUT_B, AUDITED, 0}}},
+    {"after a call at input B at an earlier time", 1, {{INPUT_B, EARLIER, 0}}},
+    {"after a call at A at an earlier time, then one at B at its time", 2,
+     {{INPUT_A, EARLIER, 0}, {INPUT_B, AUDITED, 0}}},
+    {"after a dflag call at input B at the same time", 1, {{INPUT_B, AUDITED, 1}}},
+    {"after calls at a later time (as after a rejected step)", 2,
+     {{INPUT_A, LATER, 0}, {INPUT_B, LATER, 0}}},
+    {"after a call at A at an earlier time", 1, {{INPUT_A, EARLIER, 0}}},
+};
+#define HISTORIES ((int)(sizeof histories / sizeof histories[0]))
+
+/* Every output of the element at input `which`, at time t; dflag as given
+ * (couplers have none). */
 static int evaluate(probe *p, int which, double t, int dflag, double *out)
 {
     hx_binding *b = p->b;
@@ -73,12 +117,19 @@ static int outputs(const hx_binding *b, const hx_model *m)
     return b->kind == HX_BIND_FIESUB ? 78 : 6;
 }
 
+/* Times past every time the element was called at, spread as the checks'
+ * samples 3, 5 and 8 are. */
+static void choose_times(probe *p)
+{
+    static const int samples[TIMES] = {3, 5, 8};
+    for (int k = 0; k < TIMES; ++k)
+        p->time[k] = p->b->latest_time + hx_sample_time(p->s->model, samples[k]);
+}
+
 static void choose_inputs(probe *p)
 {
     const hx_model *m = p->s->model;
     hx_binding *b = p->b;
-    p->time[0] = hx_sample_time(m, 3);
-    p->time[1] = hx_sample_time(m, 8);
     if (b->kind == HX_BIND_COUPLER) {
         const hx_coupler *c = &m->couplers[b->index];
         double q0[3] = {0}, lo[3] = {0}, hi[3] = {0};
@@ -86,20 +137,123 @@ static void choose_inputs(probe *p)
             q0[i] = hx_joint_coordinate(&p->s->state, c->joint[i]);
         hx_coupler_ranges(m, b->par, b->npar, c->njoints, q0, lo, hi);
         for (int i = 0; i < c->njoints; ++i) {
-            p->input[0][i] = lo[i] + 0.31 * (hi[i] - lo[i]);
-            p->input[1][i] = lo[i] + (0.77 - 0.1 * i) * (hi[i] - lo[i]);
+            p->input[INPUT_A][i] = lo[i] + 0.31 * (hi[i] - lo[i]);
+            p->input[INPUT_B][i] = lo[i] + (0.77 - 0.1 * i) * (hi[i] - lo[i]);
         }
+        p->ninput = c->njoints;
         return;
     }
     double scale[MAX_IN];
     if (b->kind == HX_BIND_YFOSUB) {
-        const int ns = m->state_eqns[b->index].nstate;
-        hx_sample_state_element(p->s, b->index, 3, p->input[0], p->input[0] + ns, scale);
-        hx_sample_state_element(p->s, b->index, 8, p->input[1], p->input[1] + ns, scale);
+        const hx_state_eqn *f = &m->state_eqns[b->index];
+        hx_sample_state_element(p->s, b->index, 3, p->input[INPUT_A], p->input[INPUT_A] + f->nstate,
+                                scale);
+        hx_sample_state_element(p->s, b->index, 8, p->input[INPUT_B], p->input[INPUT_B] + f->nstate,
+                                scale);
+        p->ninput = f->nstate + f->ninput;
         return;
     }
-    hx_sample_element_state(p->s, b->index, 3, p->input[0], p->input[0] + 6, scale);
-    hx_sample_element_state(p->s, b->index, 8, p->input[1], p->input[1] + 6, scale);
+    hx_sample_element_state(p->s, b->index, 3, p->input[INPUT_A], p->input[INPUT_A] + 6, scale);
+    hx_sample_element_state(p->s, b->index, 8, p->input[INPUT_B], p->input[INPUT_B] + 6, scale);
+    p->ninput = 12;
+}
+
+/* What a history produced: the outputs at A and time[AUDITED], those of its
+ * first call, and what the host noted of the element meanwhile. */
+typedef struct result {
+    double audited[MAX_OUT], first[MAX_OUT];
+    enum { RAN, STOPPED, SIGNALLED, EXITED } outcome;
+    int code; /* the signal or the exit status */
+    hx_noted_queries undeclared, refused;
+    char stop_message[HX_TEXT_MAX];
+} result;
+
+static void run_history(probe *p, const history *h, result *r)
+{
+    hx_binding *b = p->b;
+    memset(r, 0, sizeof *r);
+    int stopped = 0;
+    for (int k = 0; k < h->nsteps && !stopped; ++k) {
+        const call_step *c = &h->step[k];
+        stopped = evaluate(p, c->input, p->time[c->time], c->dflag,
+                           k == 0 ? r->first : r->audited) != 0;
+    }
+    if (!stopped)
+        stopped = evaluate(p, INPUT_A, p->time[AUDITED], 0, r->audited) != 0;
+    if (!stopped && h->nsteps == 0)
+        memcpy(r->first, r->audited, sizeof r->first);
+    r->outcome = stopped ? STOPPED : RAN;
+    r->undeclared = b->reported_undeclared;
+    r->refused = b->reported_refused;
+    if (stopped)
+        snprintf(r->stop_message, sizeof r->stop_message, "%s", b->messages->stop_message);
+}
+
+static int read_all(int fd, void *buffer, size_t size)
+{
+    char *at = buffer;
+    while (size > 0) {
+        const ssize_t n = read(fd, at, size);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return -1;
+        at += n, size -= (size_t)n;
+    }
+    return 0;
+}
+
+/* The history in a process forked from this one, so that every history
+ * starts from the same library state; once no process can be had, in this
+ * one (isolated turns 0). What the host noted, and a STOP, are taken over. */
+static void run_isolated(probe *p, const history *h, result *r, int *isolated)
+{
+    int fds[2] = {-1, -1};
+    pid_t child = -1;
+    fflush(stdout);
+    fflush(stderr);
+    if (*isolated && pipe(fds) == 0 && (child = fork()) < 0) {
+        close(fds[0]);
+        close(fds[1]);
+    }
+    if (child < 0) {
+        *isolated = 0;
+        run_history(p, h, r); /* in this process: what it notes is noted here */
+        return;
+    }
+    if (child == 0) {
+        close(fds[0]);
+        prctl(PR_SET_PDEATHSIG, SIGKILL); /* a hang dies with the check that waits */
+        run_history(p, h, r);
+        const ssize_t n = write(fds[1], r, sizeof *r);
+        _exit(n == (ssize_t)sizeof *r ? 0 : 1);
+    }
+    close(fds[1]);
+    const int got = read_all(fds[0], r, sizeof *r);
+    close(fds[0]);
+    int status = 0;
+    while (waitpid(child, &status, 0) < 0 && errno == EINTR)
+        ;
+    if (WIFSIGNALED(status)) {
+        r->outcome = SIGNALLED, r->code = WTERMSIG(status);
+    } else if (got != 0) {
+        r->outcome = EXITED, r->code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    } else {
+        hx_binding *b = p->b; /* the next history starts from what this one noted */
+        b->reported_undeclared = r->undeclared;
+        b->reported_refused = r->refused;
+        if (r->outcome == STOPPED)
+            hx_messages_adopt_stop(b->messages, r->stop_message);
+    }
+}
+
+static const char *input_name(const hx_binding *b)
+{
+    switch (b->kind) {
+    case HX_BIND_COUPLER: return "joint displacements";
+    case HX_BIND_YFOSUB: return "states, then inputs";
+    default: return "deformation and rate of I relative to J";
+    }
 }
 
 int hx_audit_history(hx_session *s, hx_binding *b, FILE *out)
@@ -116,43 +270,57 @@ int hx_audit_history(hx_session *s, hx_binding *b, FILE *out)
     if (hx_state_clone(&p.state, &s->state) != 0)
         return 1;
     choose_inputs(&p);
-    const int n = outputs(b, s->model);
-    double first[MAX_OUT], again[MAX_OUT], other[MAX_OUT];
-    static const char *const after[] = {"repeated at once", "after a call at B",
-                                        "after a dflag call at B", "after a call at A at B's time"};
-    int status = evaluate(&p, 0, p.time[0], 0, first);
-    int time_dependent = 0, failed_step = -1, component = 0;
-    for (int step = 0; step < 4 && status == 0 && failed_step < 0; ++step) {
-        if (step == 1)
-            status = evaluate(&p, 1, p.time[1], 0, other);
-        else if (step == 2)
-            status = b->kind == HX_BIND_COUPLER ? evaluate(&p, 1, p.time[1], 0, other)
-                                                : evaluate(&p, 1, p.time[1], 1, other);
-        else if (step == 3) {
-            status = evaluate(&p, 0, p.time[1], 0, other);
-            time_dependent = status == 0 && memcmp(other, first, sizeof(double) * (size_t)n) != 0;
+    choose_times(&p);
+    p.nout = outputs(b, s->model);
+    result r[HISTORIES];
+    int isolated = 1, failed = -1, component = 0;
+    for (int h = 0; h < HISTORIES && failed < 0; ++h) {
+        run_isolated(&p, &histories[h], &r[h], &isolated);
+        if (r[h].outcome != RAN) {
+            failed = h;
+            break;
         }
-        if (status == 0)
-            status = evaluate(&p, 0, p.time[0], 0, again);
-        for (int k = 0; status == 0 && k < n && failed_step < 0; ++k)
-            if (memcmp(&first[k], &again[k], sizeof first[k]) != 0)
-                failed_step = step, component = k;
+        for (int k = 0; h > 0 && k < p.nout && failed < 0; ++k)
+            if (memcmp(&r[0].audited[k], &r[h].audited[k], sizeof(double)) != 0)
+                failed = h, component = k;
     }
     hx_state_free(&p.state);
-    if (status != 0) {
-        fprintf(out, "  %s %d: history audit: the element stopped the run\n", b->element, b->id);
+    if (failed >= 0 && r[failed].outcome == STOPPED) {
+        fprintf(out, "  %s %d: history audit: the element stopped the run in the calls %s\n",
+                b->element, b->id, histories[failed].what);
         return 1;
     }
-    if (failed_step >= 0) {
-        fprintf(out, "  %s %d: history audit: FAIL: a hidden state: at the same input A (t = %g)"
-                " output %d was %.17g, then %.17g %s: the output depends on earlier calls (a"
-                " value kept between calls), which breaks implicit solvers, differencing and"
-                " restarts\n", b->element, b->id, p.time[0], component + 1, first[component],
-                again[component], after[failed_step]);
+    if (failed >= 0 && r[failed].outcome == SIGNALLED) {
+        fprintf(out, "  %s %d: history audit: FAIL: the element crashed with signal %d (%s) in"
+                " the calls %s\n", b->element, b->id, r[failed].code, strsignal(r[failed].code),
+                histories[failed].what);
         return 1;
     }
-    fprintf(out, "  %s %d: history audit: at the same input, bit-identical outputs repeated, after"
-            " a call at another input, after a dflag call and after another time%s: pass\n",
-            b->element, b->id, time_dependent ? " (the output depends on time)" : "");
+    if (failed >= 0 && r[failed].outcome == EXITED) {
+        fprintf(out, "  %s %d: history audit: FAIL: the process ended (exit status %d) in the"
+                " calls %s: the library exits instead of returning\n", b->element, b->id,
+                r[failed].code, histories[failed].what);
+        return 1;
+    }
+    char input[1024];
+    hx_format_values(input, sizeof input, p.input[INPUT_A], p.ninput, 9);
+    if (failed >= 0) {
+        fprintf(out, "  %s %d: history audit: FAIL: a hidden state: at the same input A (%s: %s)"
+                " and time t = %.9g, output %d was %.17g %s, and %.17g %s: the outputs depend on"
+                " earlier calls (a value kept from an earlier call), which breaks implicit"
+                " solvers, differencing and restarts\n", b->element, b->id, input_name(b), input,
+                p.time[AUDITED], component + 1, r[0].audited[component], histories[0].what,
+                r[failed].audited[component], histories[failed].what);
+        return 1;
+    }
+    const int last = HISTORIES - 1; /* its first call: A at the earlier time */
+    const int time_dependent =
+        memcmp(r[last].first, r[0].audited, sizeof(double) * (size_t)p.nout) != 0;
+    fprintf(out, "  %s %d: history audit: at input A and t = %.9g, bit-identical outputs after %d"
+            " different histories (repeated, after calls at another input, at earlier and"
+            " later times, with dflag)%s%s: pass\n", b->element, b->id, p.time[AUDITED],
+            HISTORIES, isolated ? ", each from the same start in a process of its own"
+                                : ", one after another in this process",
+            time_dependent ? "; the output depends on time" : "");
     return 0;
 }
