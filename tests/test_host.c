@@ -51,12 +51,18 @@ static const char *probe_model(int probe, int i_marker, int j_marker)
     return test_write_file(name, text);
 }
 
+/* A session on the probe model; the test fails when it does not open. */
+static void open_probe(hx_session *s, int probe, int i, int j, FILE *stream)
+{
+    hx_message msg;
+    if (hx_session_open(s, probe_model(probe, i, j), stream, &msg) != 0)
+        fail_msg("%s", msg.text);
+}
+
 static void evaluate_probe(int probe, int i, int j, double result[6], hx_call *call)
 {
     hx_session s;
-    hx_message msg;
-    if (hx_session_open(&s, probe_model(probe, i, j), stderr, &msg) != 0)
-        fail_msg("%s", msg.text);
+    open_probe(&s, probe, i, j, stderr);
     hx_binding *b = &s.bindings.items[0];
     hx_call_gfosub(b, &s.state, 0, 1, result, NULL); /* dependency pass */
     hx_binding_call_init(b, call, 0, &s.state, 0);
@@ -159,9 +165,7 @@ static void unit_names(void **state)
 {
     (void)state;
     hx_session s;
-    hx_message msg;
-    if (hx_session_open(&s, probe_model(5, 7, 0), stderr, &msg) != 0)
-        fail_msg("%s", msg.text);
+    open_probe(&s, 5, 7, 0, stderr);
     hx_call call;
     hx_binding_call_init(&s.bindings.items[0], &call, 0, &s.state, 0);
     hx_host_bind(&call);
@@ -195,9 +199,7 @@ static void a_stop_in_the_history_audit_stops_the_run(void **state)
 {
     (void)state;
     hx_session s;
-    hx_message msg;
-    if (hx_session_open(&s, probe_model(98, 21, 11), NULL, &msg) != 0)
-        fail_msg("%s", msg.text);
+    open_probe(&s, 98, 21, 11, NULL);
     char text[4096] = {0};
     FILE *out = fmemopen(text, sizeof text - 1, "w");
     assert_non_null(out);

@@ -148,6 +148,14 @@ static const char rubber_gbs[] = HEADER("gbs", "radian")
 /* G1(M) = M^2 at the knots -1 0 1 2 (a natural spline through them). */
 static const char table[] = "-1 1\n0 0\n1 1\n2 4\n";
 
+/* The test fails, naming the entry and the units, when the library reported
+ * an error since errors was last cleared. */
+static void expect_no_error(const char *entry)
+{
+    if (errors)
+        fail_msg("%s in %s: %s", entry, units->name, last_error);
+}
+
 static void *library;
 static int next_id = 100; /* a new element for every call: set-up reads the units */
 
@@ -184,8 +192,7 @@ static void field(const char *entry, double string_id, const double disp[6],
     memcpy(v, velo, sizeof v);
     errors = 0;
     fn(&id, &t, par, &npar, d, v, &flag, &flag, F, dfd, dfv);
-    if (errors)
-        fail_msg("%s in %s: %s", entry, units->name, last_error);
+    expect_no_error(entry);
 }
 
 /* L, F, T: the sizes of the model's length, force and time units in mm, N, s. */
@@ -324,8 +331,7 @@ static void state_equation_in_every_system(void **state)
         errors = 0;
         yfosub(&id, &t, par, &npar, &flag, &flag, &nstate, states, &ninput, input, &noutpt,
                stated, output);
-        if (errors)
-            fail_msg("YFOSUB in %s: %s", units->name, last_error);
+        expect_no_error("YFOSUB");
         assert_close(stated[0], -10.0 * T / L, 1e-12, 0);
         assert_close(output[0], -245.0 / Fu, 1e-12, 0);
     }
@@ -345,8 +351,7 @@ static void coupler_table_is_not_converted(void **state)
         double t = 0.0, par[5] = {4, 5, 2, 1, -3}, disp[2] = {1.0, 0.5}, phi = 0.0;
         errors = 0;
         cousub(&id, &t, par, &npar, disp, &ndisp, &flag, &phi);
-        if (errors)
-            fail_msg("COUSUB in %s: %s", units->name, last_error);
+        expect_no_error("COUSUB");
         assert_close(phi, 0.5, 1e-14, 1e-14);
     }
 }

@@ -1,6 +1,7 @@
 /* Host adapter: the one file that calls the host's utilities (host.h). */
 #include "host.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "usrsub/readers/units.h"
@@ -52,7 +53,7 @@ int host_model_units(double scales[USRSUB_UNIT_COUNT])
     if (exists == 0)
         return 0;
     for (int k = 0; k < USRSUB_UNIT_COUNT; ++k)
-        if (!(scales[k] > 0.0 && scales[k] < 1e300))
+        if (!(isfinite(scales[k]) && scales[k] > 0.0))
             return -1;
     return 1;
 }
