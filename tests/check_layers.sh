@@ -2,7 +2,8 @@
 # The architecture, checked (README, "Architecture"):
 #  - arrows run one way: a file includes only headers of its own layer or a
 #    lower one (library: entries -> readers -> core; harness: cmd -> tools ->
-#    sim -> host -> state -> model -> base);
+#    sim/simulation -> sim/newton -> sim/dynamics -> sim/ode -> host -> state
+#    -> model -> base; the ODE solvers know nothing of the model);
 #  - the harness shares no code with the library it verifies: of the
 #    library's headers it includes only the solver ABI;
 #  - the harness has one global, the ABI's binding (host/abi.c);
@@ -22,9 +23,12 @@ rank_of() { # layer rank of a path inside a tree, or empty
     harness/model/*) echo 1 ;;
     harness/state/*) echo 2 ;;
     harness/host/*) echo 3 ;;
-    harness/sim/*) echo 4 ;;
-    harness/tools/*) echo 5 ;;
-    harness/cmd/*) echo 6 ;;
+    harness/sim/ode/*) echo 4 ;;
+    harness/sim/dynamics/*) echo 5 ;;
+    harness/sim/newton/*) echo 6 ;;
+    harness/sim/simulation/*) echo 7 ;;
+    harness/tools/*) echo 8 ;;
+    harness/cmd/*) echo 9 ;;
   esac
 }
 

@@ -2,7 +2,7 @@
 #ifndef SIM_SUPPORT_H
 #define SIM_SUPPORT_H
 
-#include "sim/simulation.h"
+#include "sim/simulation/simulation.h"
 
 typedef struct trajectory {
     int n;          /* state size */

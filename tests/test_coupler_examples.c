@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "sim/dynamics/constraints.h"
 #include "sim_support.h"
 #include "test_support.h"
 #include "usrsub/core/spline.h"
@@ -79,8 +80,8 @@ static void hydraulic_jack_holds_the_car(void **state)
     double y[16];
     for (int k = 0; k < s.dynamics.n; ++k)
         y[k] = sim_state(&s, 5, k);
-    const double F1 = hx_dynamics_coupler_force(&s.dynamics, t, y, 0, 0);
-    const double F2 = hx_dynamics_coupler_force(&s.dynamics, t, y, 0, 1);
+    const double F1 = hx_constraints_coupler_force(&s.dynamics, t, y, 0, 0);
+    const double F2 = hx_constraints_coupler_force(&s.dynamics, t, y, 0, 1);
     assert_close(F2 / F1, A2 / A1, 1e-12, 0);
     assert_close(F2, 1000.0 * 9810.0 / UCF, 1e-9, 0); /* carries the car's weight */
     assert_constraints_held(&s);
@@ -127,9 +128,9 @@ static void differential_splits_torque_equally(void **state)
     for (int k = 0; k < s.dynamics.n; ++k)
         y[k] = sim_state(&s, last, k);
     hx_dynamics_rhs(&s.dynamics, 1.0, y, (double[16]){0});
-    const double left = hx_dynamics_coupler_force(&s.dynamics, 1.0, y, 0, 0);
-    const double right = hx_dynamics_coupler_force(&s.dynamics, 1.0, y, 0, 1);
-    const double carrier = hx_dynamics_coupler_force(&s.dynamics, 1.0, y, 0, 2);
+    const double left = hx_constraints_coupler_force(&s.dynamics, 1.0, y, 0, 0);
+    const double right = hx_constraints_coupler_force(&s.dynamics, 1.0, y, 0, 1);
+    const double carrier = hx_constraints_coupler_force(&s.dynamics, 1.0, y, 0, 2);
     assert_close(left, right, 1e-14, 0);
     assert_close(carrier, -2.0 * left, 1e-14, 0);
     assert_constraints_held(&s);

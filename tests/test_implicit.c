@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "cmd/commands.h"
-#include "sim/newton_matrix.h"
+#include "sim/newton/newton_matrix.h"
 #include "sim_support.h"
 #include "test_support.h"
 #include "tools/bench/linear_reference.h"

@@ -14,7 +14,7 @@
 
 #include "host/session.h"
 #include "model/model.h"
-#include "sim/dynamics.h"
+#include "sim/dynamics/dynamics.h"
 #include "test_support.h"
 
 #define HEAD "<MotionSolve><Model>\n"

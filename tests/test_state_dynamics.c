@@ -14,8 +14,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sim/newton_matrix.h"
-#include "sim/state_elements.h"
+#include "sim/newton/newton_matrix.h"
+#include "sim/dynamics/state_elements.h"
 #include "sim_support.h"
 #include "test_support.h"
 

@@ -7,7 +7,7 @@
 #include "cmd/commands.h"
 #include "cmd/crash_report.h"
 #include "cmd/options.h"
-#include "sim/simulation.h"
+#include "sim/simulation/simulation.h"
 #include "tools/bench/stability.h"
 
 static void usage(FILE *f)

@@ -10,7 +10,7 @@
 #ifndef HX_LINEAR_REFERENCE_H
 #define HX_LINEAR_REFERENCE_H
 
-#include "sim/dynamics.h"
+#include "sim/dynamics/dynamics.h"
 
 #define HX_REFERENCE_MODES 24
 

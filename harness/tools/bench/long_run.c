@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sim/simulation.h"
+#include "sim/simulation/simulation.h"
 
 #define SAMPLES 1000
 
@@ -21,7 +21,7 @@ static int observe(void *ctx, hx_dynamics *d, double t, const double *y)
     energy_trace *tr = ctx;
     if (tr->count > SAMPLES)
         return 0;
-    const hx_energy e = hx_dynamics_energy(d, t, y);
+    const hx_energy e = hx_energy_of(d, t, y);
     if (tr->count == 0)
         tr->e0 = e.total;
     tr->kinetic_max = fmax(tr->kinetic_max, fabs(e.kinetic));

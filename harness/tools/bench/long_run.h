@@ -9,7 +9,7 @@
 
 #include <stdio.h>
 
-#include "sim/integrator.h"
+#include "sim/ode/integrator.h"
 #include "host/session.h"
 
 typedef struct hx_long_run {

@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "host/state_inputs.h"
-#include "sim/state_elements.h"
+#include "sim/dynamics/state_elements.h"
 #include "state/measures.h"
 
 /* ---- stand-in entries: replay what the real entry returned -------------------- */

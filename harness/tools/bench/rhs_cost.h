@@ -12,7 +12,7 @@
 #define HX_RHS_COST_H
 
 #include "tools/bench/call_cost.h"
-#include "sim/dynamics.h"
+#include "sim/dynamics/dynamics.h"
 
 typedef struct hx_rhs_cost {
     double rhs_ns;     /* median per evaluation */

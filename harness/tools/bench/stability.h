@@ -9,8 +9,8 @@
 #ifndef HX_STABILITY_H
 #define HX_STABILITY_H
 
-#include "sim/dynamics.h"
-#include "sim/integrator.h"
+#include "sim/dynamics/dynamics.h"
+#include "sim/ode/integrator.h"
 
 typedef struct hx_stability {
     double magnitude;                 /* |lambda|, per time unit */

@@ -8,7 +8,7 @@
 #include "tools/bench/call_cost.h"
 #include "tools/bench/linear_reference.h"
 #include "tools/plot.h"
-#include "sim/simulation.h"
+#include "sim/simulation/simulation.h"
 
 /* A fixed-step sweep stops halving past this many right-hand sides a run:
  * on a stiff model the stable steps alone cost millions. */

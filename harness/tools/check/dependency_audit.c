@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "base/vecmath.h"
-#include "sim/element_probe.h"
+#include "sim/dynamics/element_probe.h"
 #include "state/measures.h"
 #include "tools/check/checks.h"
 #include "tools/check/element_samples.h"

@@ -24,7 +24,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "sim/element_probe.h"
+#include "sim/dynamics/element_probe.h"
 #include "state/measures.h"
 #include "tools/check/checks.h"
 #include "tools/check/coupler_ranges.h"

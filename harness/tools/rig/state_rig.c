@@ -8,7 +8,7 @@
 #include "base/finite.h"
 #include "base/vecmath.h"
 #include "host/state_inputs.h"
-#include "sim/element_probe.h"
+#include "sim/dynamics/element_probe.h"
 
 typedef struct state_rig {
     hx_rig *r;

@@ -11,7 +11,7 @@
 #ifndef HX_TOOLS_RIG_STATE_RIG_H
 #define HX_TOOLS_RIG_STATE_RIG_H
 
-#include "sim/integrator.h"
+#include "sim/ode/integrator.h"
 #include "tools/rig/rig.h"
 
 typedef struct hx_state_rig_result {

@@ -1,14 +1,10 @@
-/*
- * The rigid bodies of the dynamics (dynamics.h): their degrees of freedom,
- * their frames at a state, the loads applied to them, and their Newton-Euler
- * accelerations.
- */
+/* The rigid bodies of the dynamics (bodies.h). */
 #include <math.h>
 #include <string.h>
 
 #include "base/linalg.h"
 #include "base/vecmath.h"
-#include "sim/dynamics.h"
+#include "sim/dynamics/bodies.h"
 #include "state/measures.h"
 
 int hx_bodies_init(hx_dynamics *d, hx_message *msg)
@@ -64,43 +60,45 @@ int hx_bodies_init(hx_dynamics *d, hx_message *msg)
     return 0;
 }
 
-void hx_bodies_set_frames(hx_dynamics *d, const double *y)
+void hx_bodies_frame(const hx_dynamics *d, int k, const double *y, hx_frame *f)
 {
     const double *q = y, *u = y + d->nq;
-    const hx_model *m = d->m;
-    for (int k = 0; k < m->nbodies; ++k) {
-        const hx_body_dof *dof = &d->dof[k];
-        const hx_body *b = &m->bodies[k];
-        hx_frame *f = &d->state.bodies[k];
-        switch (dof->kind) {
-        case HX_DOF_GROUND:
-            break;
-        case HX_DOF_FREE:
-            v3_copy(f->p, q + dof->q);
-            quat_to_matrix(f->R, q + dof->q + 3);
-            v3_copy(f->v, u + dof->u);
-            m3_apply(f->w, f->R, u + dof->u + 3);
-            break;
-        case HX_DOF_REVOLUTE: {
-            double Rot[9], r0[3], r[3];
-            m3_axis_angle(Rot, dof->axis, q[dof->q] - dof->coord0);
-            m3_mul(f->R, Rot, b->R0);
-            v3_sub(r0, b->p0, dof->origin);
-            m3_apply(r, Rot, r0);
-            v3_add(f->p, dof->origin, r);
-            v3_scale(f->w, dof->axis, u[dof->u]);
-            v3_cross(f->v, f->w, r);
-            break;
-        }
-        case HX_DOF_SLIDER:
-            m3_copy(f->R, b->R0);
-            v3_copy(f->p, b->p0);
-            v3_axpy(f->p, q[dof->q] - dof->coord0, dof->axis);
-            v3_scale(f->v, dof->axis, u[dof->u]);
-            v3_set(f->w, 0, 0, 0);
-            break;
-        }
+    const hx_body_dof *dof = &d->dof[k];
+    const hx_body *b = &d->m->bodies[k];
+    switch (dof->kind) {
+    case HX_DOF_GROUND:
+        break;
+    case HX_DOF_FREE:
+        v3_copy(f->p, q + dof->q);
+        quat_to_matrix(f->R, q + dof->q + 3);
+        v3_copy(f->v, u + dof->u);
+        m3_apply(f->w, f->R, u + dof->u + 3);
+        break;
+    case HX_DOF_REVOLUTE: {
+        double Rot[9], r0[3], r[3];
+        m3_axis_angle(Rot, dof->axis, q[dof->q] - dof->coord0);
+        m3_mul(f->R, Rot, b->R0);
+        v3_sub(r0, b->p0, dof->origin);
+        m3_apply(r, Rot, r0);
+        v3_add(f->p, dof->origin, r);
+        v3_scale(f->w, dof->axis, u[dof->u]);
+        v3_cross(f->v, f->w, r);
+        break;
     }
+    case HX_DOF_SLIDER:
+        m3_copy(f->R, b->R0);
+        v3_copy(f->p, b->p0);
+        v3_axpy(f->p, q[dof->q] - dof->coord0, dof->axis);
+        v3_scale(f->v, dof->axis, u[dof->u]);
+        v3_set(f->w, 0, 0, 0);
+        break;
+    }
+}
+
+void hx_bodies_set_frames(hx_dynamics *d, const double *y)
+{
+    for (int k = 0; k < d->m->nbodies; ++k)
+        hx_bodies_frame(d, k, y, &d->state.bodies[k]);
 }
 
 void hx_bodies_initial_state(const hx_dynamics *d, double *y)
@@ -131,7 +129,7 @@ void hx_bodies_initial_state(const hx_dynamics *d, double *y)
     }
 }
 
-double hx_apply_load(hx_dynamics *d, int body, const double point[3], const double F[3],
+double hx_bodies_apply_load(hx_dynamics *d, int body, const double point[3], const double F[3],
                      const double T[3], double sign)
 {
     if (d->dof[body].kind == HX_DOF_GROUND)
@@ -206,7 +204,7 @@ double hx_bodies_inverse_mass(const hx_dynamics *d, int u_index)
     return 0.0; /* free-body velocities are not coupled */
 }
 
-void hx_dynamics_advance_positions(hx_dynamics *d, double *y, double h)
+void hx_bodies_advance_positions(hx_dynamics *d, double *y, double h)
 {
     const double *u = y + d->nq;
     for (int k = 0; k < d->m->nbodies; ++k) {

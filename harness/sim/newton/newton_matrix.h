@@ -32,8 +32,8 @@
 #ifndef HX_SIM_NEWTON_MATRIX_H
 #define HX_SIM_NEWTON_MATRIX_H
 
-#include "sim/dynamics.h"
-#include "sim/state_jacobian.h"
+#include "sim/dynamics/dynamics.h"
+#include "sim/newton/state_jacobian.h"
 
 typedef enum hx_partials_source {
     HX_PARTIALS_FIESUB,     /* a Force_Field's own dfddis and dfdvel */

@@ -15,7 +15,7 @@
 #ifndef HX_SIM_STATE_JACOBIAN_H
 #define HX_SIM_STATE_JACOBIAN_H
 
-#include "sim/dynamics.h"
+#include "sim/dynamics/dynamics.h"
 
 typedef struct hx_state_jacobian {
     hx_dynamics *d;

@@ -1,5 +1,6 @@
 /* The Force_StateEqn elements in the equations of motion (state_elements.h). */
-#include "sim/state_elements.h"
+#include "sim/dynamics/state_elements.h"
+#include "sim/dynamics/bodies.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -66,7 +67,7 @@ int hx_state_element_evaluate(hx_dynamics *d, int k, const double *x, const doub
     hx_state_elements *se = d->stateful;
     const hx_state_eqn *f = &d->m->state_eqns[k];
     hx_binding *b = se->binding[k];
-    /* copies (past the inputs of hx_apply_state_elements): a library may
+    /* copies (past the inputs of hx_state_elements_apply): a library may
      * write into its arguments, never into y */
     double *states = se->work + f->ninput, *input = states + f->nstate;
     memcpy(states, x, sizeof(double) * (size_t)f->nstate);
@@ -91,11 +92,11 @@ static double apply_outputs(hx_dynamics *d, const hx_state_eqn *f, const double 
     double F[3], T[3];
     m3_apply(F, ref->R, out);
     m3_apply(T, ref->R, out + 3);
-    return hx_apply_load(d, m->markers[f->i_marker].body, I->p, F, T, 1.0) +
-           hx_apply_load(d, m->markers[f->j_marker].body, I->p, F, T, -1.0);
+    return hx_bodies_apply_load(d, m->markers[f->i_marker].body, I->p, F, T, 1.0) +
+           hx_bodies_apply_load(d, m->markers[f->j_marker].body, I->p, F, T, -1.0);
 }
 
-int hx_apply_state_elements(hx_dynamics *d, const double *y, double *ydot)
+int hx_state_elements_apply(hx_dynamics *d, const double *y, double *ydot)
 {
     hx_state_elements *se = d->stateful;
     for (int k = 0; k < se->count; ++k) {

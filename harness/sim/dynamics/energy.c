@@ -1,10 +1,10 @@
 /* The energy of a state and its balance (dynamics.h). */
 #include "base/vecmath.h"
-#include "sim/dynamics.h"
-#include "sim/element_probe.h"
+#include "sim/dynamics/energy.h"
+#include "sim/dynamics/element_probe.h"
 #include "state/measures.h"
 
-hx_energy hx_dynamics_energy(hx_dynamics *d, double t, const double *y)
+hx_energy hx_energy_of(hx_dynamics *d, double t, const double *y)
 {
     const hx_model *m = d->m;
     hx_dynamics_set_state(d, t, y);

@@ -10,8 +10,9 @@
 
 #include <stdio.h>
 
-#include "sim/dynamics.h"
-#include "sim/integrator.h"
+#include "sim/dynamics/dynamics.h"
+#include "sim/dynamics/energy.h"
+#include "sim/ode/integrator.h"
 
 /* Called at each output time after the CSV row; non-zero stops the run. */
 typedef int hx_observer_fn(void *ctx, hx_dynamics *d, double t, const double *y);

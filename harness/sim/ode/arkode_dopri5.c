@@ -9,7 +9,7 @@
 #include <limits.h>
 #include <string.h>
 
-#include "sim/sundials_run.h"
+#include "sim/ode/sundials_common.h"
 
 static int project_step(double t, N_Vector y, void *user_data)
 {
@@ -40,7 +40,7 @@ static long steps_of(void *solver)
     return steps;
 }
 
-hx_status hx_integrate_arkode_dopri5(hx_run *r, double t0, double *y)
+hx_status hx_integrate_arkode_dopri5(hx_integration *r, double t0, double *y)
 {
     const hx_ode *o = r->ode;
     const hx_integrator_options *opt = r->opt;

@@ -1,6 +1,6 @@
 /* The integrators' common entry, names and fixed-step methods (integrator.h). */
-#include "sim/integrator.h"
-#include "sim/integration_run.h"
+#include "sim/ode/integrator.h"
+#include "sim/ode/integration.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -73,12 +73,12 @@ const char *hx_status_text(hx_status status)
 
 /* ---- fixed steps ----------------------------------------------------------------- */
 
-static int fixed_step(hx_run *r, hx_method method, double t, double h, double *y, double *work)
+static int fixed_step(hx_integration *r, hx_method method, double t, double h, double *y, double *work)
 {
     const hx_ode *o = r->ode;
     const int n = o->n;
     double *k1 = work, *k2 = k1 + n, *k3 = k2 + n, *k4 = k3 + n, *tmp = k4 + n;
-    if (hx_run_evaluate(r, t, y, k1) != 0)
+    if (hx_integration_evaluate(r, t, y, k1) != 0)
         return -1;
     switch (method) {
     case HX_METHOD_EULER:
@@ -94,15 +94,15 @@ static int fixed_step(hx_run *r, hx_method method, double t, double h, double *y
     case HX_METHOD_RK4:
         for (int i = 0; i < n; ++i)
             tmp[i] = y[i] + 0.5 * h * k1[i];
-        if (hx_run_evaluate(r, t + 0.5 * h, tmp, k2) != 0)
+        if (hx_integration_evaluate(r, t + 0.5 * h, tmp, k2) != 0)
             return -1;
         for (int i = 0; i < n; ++i)
             tmp[i] = y[i] + 0.5 * h * k2[i];
-        if (hx_run_evaluate(r, t + 0.5 * h, tmp, k3) != 0)
+        if (hx_integration_evaluate(r, t + 0.5 * h, tmp, k3) != 0)
             return -1;
         for (int i = 0; i < n; ++i)
             tmp[i] = y[i] + h * k3[i];
-        if (hx_run_evaluate(r, t + h, tmp, k4) != 0)
+        if (hx_integration_evaluate(r, t + h, tmp, k4) != 0)
             return -1;
         for (int i = 0; i < n; ++i)
             y[i] += h * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]) / 6.0;
@@ -112,7 +112,7 @@ static int fixed_step(hx_run *r, hx_method method, double t, double h, double *y
     }
 }
 
-static hx_status integrate_fixed(hx_run *r, double t0, double *y)
+static hx_status integrate_fixed(hx_integration *r, double t0, double *y)
 {
     const hx_ode *o = r->ode;
     const hx_integrator_options *opt = r->opt;
@@ -146,7 +146,7 @@ static hx_status integrate_fixed(hx_run *r, double t0, double *y)
         }
         r->stats->steps++;
         r->stats->t_reached = t1;
-        if (!hx_run_finite_and_bounded(r, y)) {
+        if (!hx_integration_finite_and_bounded(r, y)) {
             status = HX_INTEGRATION_UNSTABLE;
             break;
         }
@@ -165,9 +165,9 @@ hx_status hx_integrate(const hx_ode *ode, double t0, double *y, const hx_integra
 {
     memset(stats, 0, sizeof *stats);
     stats->t_reached = t0;
-    hx_run r = {ode, opt, stats, 0.0, t0, 0};
+    hx_integration r = {ode, opt, stats, 0.0, t0, 0};
     const int m = ode->nq + ode->nu > 0 ? ode->nq + ode->nu : ode->n;
-    r.limit = GROWTH_LIMIT * (1.0 + hx_run_norm(y, m));
+    r.limit = GROWTH_LIMIT * (1.0 + hx_integration_norm(y, m));
     if (opt->method == HX_METHOD_SYMPLECTIC_EULER && ode->advance == NULL)
         return HX_INTEGRATION_FAILED;
     switch (opt->method) {

@@ -1,5 +1,5 @@
 /*
- * The couplers in the equations of motion (dynamics.h): one Lagrange
+ * The couplers in the equations of motion (constraints.h): one Lagrange
  * multiplier each, with COUSUB/COUXX for the constraint and its Jacobian and
  * COUXX2 for the velocity-squared term; after a step, positions and
  * velocities are projected back onto phi = 0 and its rate.
@@ -10,7 +10,8 @@
 #include "base/finite.h"
 #include "base/linalg.h"
 #include "base/vecmath.h"
-#include "sim/dynamics.h"
+#include "sim/dynamics/bodies.h"
+#include "sim/dynamics/constraints.h"
 
 #define PROJECTION_ITERATIONS 25
 #define PHI_TOLERANCE 1e-13
@@ -99,7 +100,7 @@ static void weighted_gram(const hx_dynamics *d, const double *G, const double *m
         }
 }
 
-int hx_apply_constraints(hx_dynamics *d, double t, const double *y, double *udot)
+int hx_constraints_apply(hx_dynamics *d, double t, const double *y, double *udot)
 {
     const int nc = d->m->ncouplers;
     if (nc == 0)
@@ -128,7 +129,7 @@ int hx_apply_constraints(hx_dynamics *d, double t, const double *y, double *udot
     return 0;
 }
 
-int hx_dynamics_project(hx_dynamics *d, double t, double *y)
+int hx_constraints_project(hx_dynamics *d, double t, double *y)
 {
     for (int k = 0; k < d->m->nbodies; ++k)
         if (d->dof[k].kind == HX_DOF_FREE)
@@ -178,14 +179,14 @@ int hx_dynamics_project(hx_dynamics *d, double t, double *y)
         y[d->nq + k] -= minv[k] * s;
     }
     double phi_max, phidot_max;
-    if (hx_dynamics_residuals(d, t, y, &phi_max, &phidot_max) != 0)
+    if (hx_constraints_residuals(d, t, y, &phi_max, &phidot_max) != 0)
         return -1;
     d->max_phi = fmax(d->max_phi, phi_max);
     d->max_phidot = fmax(d->max_phidot, phidot_max);
     return 0;
 }
 
-int hx_dynamics_residuals(hx_dynamics *d, double t, const double *y, double *phi_max,
+int hx_constraints_residuals(hx_dynamics *d, double t, const double *y, double *phi_max,
                           double *phidot_max)
 {
     *phi_max = *phidot_max = 0.0;
@@ -205,7 +206,7 @@ int hx_dynamics_residuals(hx_dynamics *d, double t, const double *y, double *phi
     return 0;
 }
 
-double hx_dynamics_coupler_force(hx_dynamics *d, double t, const double *y, int coupler,
+double hx_constraints_coupler_force(hx_dynamics *d, double t, const double *y, int coupler,
                                  int joint)
 {
     double phi, grad[3];

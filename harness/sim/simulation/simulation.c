@@ -1,12 +1,14 @@
 /* Simulations: integration, CSV output and summary (simulation.h). */
-#include "sim/simulation.h"
+#include "sim/simulation/simulation.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "base/clock.h"
-#include "sim/newton_matrix.h"
+#include "sim/dynamics/bodies.h"
+#include "sim/dynamics/constraints.h"
+#include "sim/newton/newton_matrix.h"
 
 
 /* Energy the force elements took out since the start: the work they did not
@@ -32,14 +34,14 @@ static int rhs(void *ctx, double t, const double *y, double *ydot)
 static int project(void *ctx, double t, double *y)
 {
     hx_dynamics *d = ((run_context *)ctx)->d;
-    if (hx_dynamics_project(d, t, y) != 0)
+    if (hx_constraints_project(d, t, y) != 0)
         return -1;
     return d->m->ncouplers > 0 ? 1 : 0;
 }
 
 static void advance(void *ctx, double *y, double h)
 {
-    hx_dynamics_advance_positions(((run_context *)ctx)->d, y, h);
+    hx_bodies_advance_positions(((run_context *)ctx)->d, y, h);
 }
 
 static int jacobian(void *ctx, double t, const double *y, double *J)
@@ -65,7 +67,7 @@ static int output_work(run_context *rc, double t, const double *y)
     hx_dynamics *d = rc->d;
     hx_simulation_result *r = rc->result;
     if (!rc->opt->skip_energy || rc->opt->csv != NULL) {
-        const hx_energy e = hx_dynamics_energy(d, t, y);
+        const hx_energy e = hx_energy_of(d, t, y);
         r->energy_scale = fmax(r->energy_scale, fabs(e.kinetic));
         r->energy_error_max = fmax(r->energy_error_max, fabs(e.total - r->energy0.total));
         r->balance_error_max = fmax(r->balance_error_max, fabs(e.balance - r->energy0.balance));
@@ -103,7 +105,7 @@ int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
         free(y);
         return -1;
     }
-    result->energy0 = hx_dynamics_energy(d, 0.0, y);
+    result->energy0 = hx_energy_of(d, 0.0, y);
     result->energy_scale = fmax(fabs(result->energy0.total), fabs(result->energy0.kinetic));
     run_context rc = {d, opt, result, hx_seconds(), hx_seconds(), NULL};
     hx_newton_matrix newton;
@@ -139,7 +141,7 @@ int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
     }
     if (opt->progress && result->seconds >= 1.0)
         fprintf(stderr, "\n");
-    result->energy_end = hx_dynamics_energy(d, result->stats.t_reached, y);
+    result->energy_end = hx_energy_of(d, result->stats.t_reached, y);
     result->dissipated = hx_dissipated(&result->energy_end, &result->energy0);
     result->max_phi = d->max_phi;
     result->max_phidot = d->max_phidot;

@@ -1,5 +1,5 @@
-/* The SUNDIALS integrators' shared glue (sundials_run.h). */
-#include "sim/sundials_run.h"
+/* The SUNDIALS integrators' shared glue (sundials_common.h). */
+#include "sim/ode/sundials_common.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -8,7 +8,7 @@
 
 #include "base/finite.h"
 
-int hx_sundials_open(hx_sundials *s, hx_run *r, double *y)
+int hx_sundials_open(hx_sundials *s, hx_integration *r, double *y)
 {
     memset(s, 0, sizeof *s);
     s->r = r;
@@ -45,7 +45,7 @@ int hx_sundials_rhs(double t, N_Vector y, N_Vector ydot, void *user_data)
      * (whose elements stop the run on such a state) is not asked */
     if (!hx_all_finite(state, s->r->ode->n))
         return 1;
-    return hx_run_evaluate(s->r, t, state, NV_DATA_S(ydot)) == 0 ? 0 : -1;
+    return hx_integration_evaluate(s->r, t, state, NV_DATA_S(ydot)) == 0 ? 0 : -1;
 }
 
 int hx_sundials_correction(hx_sundials *s, double t, const double *y, double *corr)
@@ -70,7 +70,7 @@ void hx_sundials_message(int error_code, const char *module, const char *functio
 hx_status hx_sundials_drive(hx_sundials *s, void *solver, hx_sundials_advance_fn *advance,
                             hx_sundials_status_fn *status_of, long (*steps_of)(void *solver))
 {
-    hx_run *r = s->r;
+    hx_integration *r = s->r;
     const hx_ode *o = r->ode;
     const hx_integrator_options *opt = r->opt;
     double *y = NV_DATA_S(s->y);
@@ -78,14 +78,14 @@ hx_status hx_sundials_drive(hx_sundials *s, void *solver, hx_sundials_advance_fn
     const int every_step = opt->output != NULL && !at_intervals;
     double t = r->t0;
     while (t < opt->t_end) {
-        const double tout = at_intervals ? hx_run_next_output(r) : opt->t_end;
+        const double tout = at_intervals ? hx_integration_next_output(r) : opt->t_end;
         const int flag = advance(solver, tout, s->y, &t, every_step);
         r->stats->t_reached = t;
         if (flag < 0)
             return status_of(flag);
         if (opt->max_steps > 0 && steps_of(solver) >= opt->max_steps && t < opt->t_end)
             return HX_INTEGRATION_TOO_MANY_STEPS;
-        if (!hx_run_finite_and_bounded(r, y))
+        if (!hx_integration_finite_and_bounded(r, y))
             return HX_INTEGRATION_UNSTABLE;
         if (opt->output == NULL)
             continue;

@@ -1,8 +1,9 @@
 /* The run's CSV: a header and one row per output time (simulation.h). */
 #include <stdlib.h>
 
-#include "sim/simulation.h"
-#include "sim/state_elements.h"
+#include "sim/dynamics/constraints.h"
+#include "sim/simulation/simulation.h"
+#include "sim/dynamics/state_elements.h"
 #include "state/measures.h"
 
 void hx_csv_header(FILE *f, const hx_dynamics *d)
@@ -51,7 +52,7 @@ int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, const hx_ener
     }
     free(ydot);
     double phi, phidot;
-    if (hx_dynamics_residuals(d, t, y, &phi, &phidot) != 0)
+    if (hx_constraints_residuals(d, t, y, &phi, &phidot) != 0)
         return -1;
     fprintf(f, "%.10g", t);
     for (int k = 0; k < m->nbodies; ++k) {
@@ -72,7 +73,7 @@ int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, const hx_ener
         const double lambda = d->lambda[k];
         fprintf(f, ",%.15g", lambda);
         for (int j = 0; j < c->njoints; ++j)
-            fprintf(f, ",%.15g", hx_dynamics_coupler_force(d, t, y, k, j));
+            fprintf(f, ",%.15g", hx_constraints_coupler_force(d, t, y, k, j));
     }
     for (int k = 0; k < m->nforces; ++k) {
         double disp[6], velo[6];

@@ -1,6 +1,7 @@
 /* Gravity and the model's loads on the bodies (dynamics.h). */
 #include "base/vecmath.h"
-#include "sim/dynamics.h"
+#include "sim/dynamics/bodies.h"
+#include "sim/dynamics/loads.h"
 
 static double value_at(const hx_time_function *f, double t)
 {
@@ -8,7 +9,7 @@ static double value_at(const hx_time_function *f, double t)
     return f->kind == 0 ? f->a[0] : hx_time_function_at(f, t);
 }
 
-double hx_apply_loads(hx_dynamics *d, double t)
+double hx_loads_apply(hx_dynamics *d, double t)
 {
     const hx_model *m = d->m;
     for (int k = 0; k < m->nbodies; ++k)
@@ -29,7 +30,7 @@ double hx_apply_loads(hx_dynamics *d, double t)
             const hx_frame *ref = hx_state_marker(&d->state, l->ref_marker, &scratch[2]);
             m3_apply(F, ref->R, f);
             m3_apply(T, ref->R, tq);
-            power += hx_apply_load(d, bi, I->p, F, T, 1.0);
+            power += hx_bodies_apply_load(d, bi, I->p, F, T, 1.0);
             continue;
         }
         const hx_frame *J = hx_state_marker(&d->state, l->j_marker, &scratch[1]);
@@ -45,9 +46,9 @@ double hx_apply_loads(hx_dynamics *d, double t)
             if (len > 0.0)
                 v3_scale(F, r, value / len); /* positive pushes I away from J */
         }
-        power += hx_apply_load(d, bi, I->p, F, T, 1.0);
+        power += hx_bodies_apply_load(d, bi, I->p, F, T, 1.0);
         if (!l->action_only)
-            power += hx_apply_load(d, bj, J->p, F, T, -1.0);
+            power += hx_bodies_apply_load(d, bj, J->p, F, T, -1.0);
     }
     return power;
 }

@@ -2,27 +2,27 @@
  * What the integrators taken from SUNDIALS (bdf.c: CVODE; arkode_dopri5.c:
  * ARKODE) share: one SUNDIALS context per integration, the state as an
  * N_Vector over the caller's array, the right-hand side and the projection
- * through hx_run (counted as the other integrators count them), the solvers'
+ * through hx_integration (counted as the other integrators count them), the solvers'
  * messages kept for the summary instead of printed, and the loop over the
  * output times.
  */
-#ifndef HX_SIM_SUNDIALS_RUN_H
-#define HX_SIM_SUNDIALS_RUN_H
+#ifndef HX_SIM_ODE_SUNDIALS_COMMON_H
+#define HX_SIM_ODE_SUNDIALS_COMMON_H
 
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 
-#include "sim/integration_run.h"
+#include "sim/ode/integration.h"
 
 typedef struct hx_sundials {
-    hx_run *r;
+    hx_integration *r;
     SUNContext context;
     N_Vector y;       /* over the caller's y: the solver writes its outputs there */
     double *scratch;  /* n values */
 } hx_sundials;
 
 /* 0, or -1 (out of memory). */
-int hx_sundials_open(hx_sundials *s, hx_run *r, double *y);
+int hx_sundials_open(hx_sundials *s, hx_integration *r, double *y);
 void hx_sundials_close(hx_sundials *s);
 
 /* f(t, y) for CVODE and ARKODE (one signature): 0; 1 (recoverable: the solver

@@ -13,7 +13,7 @@
 
 #include <stdio.h>
 
-#include "sim/dynamics.h"
+#include "sim/dynamics/dynamics.h"
 
 typedef struct hx_state_elements {
     int count;
@@ -35,7 +35,7 @@ void hx_state_elements_initial(const hx_dynamics *d, double *y);
  * applied to the bodies, their power added to ydot[d->element_work].
  * Returns 0, or -1 (d->message) when an element stopped the run or returned
  * a non-finite value. */
-int hx_apply_state_elements(hx_dynamics *d, const double *y, double *ydot);
+int hx_state_elements_apply(hx_dynamics *d, const double *y, double *ydot);
 
 /* Element k at d->state with states x (its nstate) and inputs u (its
  * ninput), dflag as given: rates xdot and outputs out; 0 or -1 (d->message). */

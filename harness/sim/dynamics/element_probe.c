@@ -1,5 +1,5 @@
 /* Force elements at prescribed states (element_probe.h). */
-#include "sim/element_probe.h"
+#include "sim/dynamics/element_probe.h"
 
 #include <math.h>
 #include <stdlib.h>

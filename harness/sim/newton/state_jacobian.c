@@ -1,5 +1,5 @@
 /* The Force_StateEqn elements' share of the Newton matrix (state_jacobian.h). */
-#include "sim/state_jacobian.h"
+#include "sim/newton/state_jacobian.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -8,7 +8,7 @@
 
 #include "base/finite.h"
 #include "host/state_inputs.h"
-#include "sim/state_elements.h"
+#include "sim/dynamics/state_elements.h"
 
 static const char *const routine_names[4] = {"YFOXX", "YFOXU", "YFOYX", "YFOYU"};
 

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sim/integration_run.h"
+#include "sim/ode/integration.h"
 
 static const double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
 static const double a21 = 1.0 / 5;
@@ -37,7 +37,7 @@ static double error_norm(const double *e, const double *y0, const double *y1, in
 }
 
 /* Hairer's starting step: an Euler trial scaled to the tolerance. */
-static int initial_step(hx_run *r, double t, const double *y, const double *f0, double *work,
+static int initial_step(hx_integration *r, double t, const double *y, const double *f0, double *work,
                         double *h_out)
 {
     const hx_ode *o = r->ode;
@@ -57,7 +57,7 @@ static int initial_step(hx_run *r, double t, const double *y, const double *f0, 
     double *y1 = work, *f1 = work + n;
     for (int i = 0; i < n; ++i)
         y1[i] = y[i] + h * f0[i];
-    if (hx_run_evaluate(r, t + h, y1, f1) != 0)
+    if (hx_integration_evaluate(r, t + h, y1, f1) != 0)
         return -1;
     double der2 = 0.0;
     for (int i = 0; i < n; ++i) {
@@ -74,7 +74,7 @@ static int initial_step(hx_run *r, double t, const double *y, const double *f0, 
     return 0;
 }
 
-hx_status hx_integrate_dopri5(hx_run *r, double t0, double *y)
+hx_status hx_integrate_dopri5(hx_integration *r, double t0, double *y)
 {
     const hx_ode *o = r->ode;
     const hx_integrator_options *opt = r->opt;
@@ -90,7 +90,7 @@ hx_status hx_integrate_dopri5(hx_run *r, double t0, double *y)
     hx_status status = HX_INTEGRATION_OK;
     double t = t0, h = opt->step, facold = 1e-4;
     int reject = 0, stiff_count = 0, nonstiff_count = 0;
-    if (hx_run_evaluate(r, t, y, k1) != 0) {
+    if (hx_integration_evaluate(r, t, y, k1) != 0) {
         free(mem);
         return HX_INTEGRATION_FAILED;
     }
@@ -118,7 +118,7 @@ hx_status hx_integrate_dopri5(hx_run *r, double t0, double *y)
     do {                                                                                      \
         for (int i = 0; i < n; ++i)                                                           \
             y1[i] = y[i] + h * (expr);                                                        \
-        failed = failed || hx_run_evaluate(r, t + (cx) * h, y1, out) != 0;                           \
+        failed = failed || hx_integration_evaluate(r, t + (cx) * h, y1, out) != 0;                           \
     } while (0)
         STAGE(k2, c2, a21 * k1[i]);
         if (!failed) STAGE(k3, c3, a31 * k1[i] + a32 * k2[i]);
@@ -188,7 +188,7 @@ hx_status hx_integrate_dopri5(hx_run *r, double t0, double *y)
         if (opt->output != NULL) {
             if (opt->output_interval > 0.0) {
                 double to;
-                while (!stop && (to = hx_run_next_output(r)) <= t1 + 1e-12 * fabs(h)) {
+                while (!stop && (to = hx_integration_next_output(r)) <= t1 + 1e-12 * fabs(h)) {
                     const double th = (to - t) / h;
                     const double th1 = 1.0 - th;
                     for (int i = 0; i < n; ++i)
@@ -214,12 +214,12 @@ hx_status hx_integrate_dopri5(hx_run *r, double t0, double *y)
                 status = HX_INTEGRATION_FAILED;
                 break;
             }
-            if (changed > 0 && !last && hx_run_evaluate(r, t, y, k1) != 0) {
+            if (changed > 0 && !last && hx_integration_evaluate(r, t, y, k1) != 0) {
                 status = HX_INTEGRATION_FAILED;
                 break;
             }
         }
-        if (!hx_run_finite_and_bounded(r, y)) {
+        if (!hx_integration_finite_and_bounded(r, y)) {
             status = HX_INTEGRATION_UNSTABLE;
             break;
         }

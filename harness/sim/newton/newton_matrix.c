@@ -1,5 +1,5 @@
 /* The Newton matrix from the elements' own partials (newton_matrix.h). */
-#include "sim/newton_matrix.h"
+#include "sim/newton/newton_matrix.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -4,10 +4,11 @@
  * the same point. */
 #include "base/finite.h"
 #include "base/vecmath.h"
-#include "sim/dynamics.h"
+#include "sim/dynamics/bodies.h"
+#include "sim/dynamics/element_forces.h"
 #include "state/measures.h"
 
-int hx_apply_element_forces(hx_dynamics *d, double *power)
+int hx_element_forces_apply(hx_dynamics *d, double *power)
 {
     const hx_model *m = d->m;
     const hx_state *s = &d->state;
@@ -48,8 +49,8 @@ int hx_apply_element_forces(hx_dynamics *d, double *power)
             m3_apply(F, axes, out);
             m3_apply(T, axes, out + 3);
         }
-        *power += hx_apply_load(d, m->markers[f->i_marker].body, I->p, F, T, 1.0);
-        *power += hx_apply_load(d, m->markers[f->j_marker].body, I->p, F, T, -1.0);
+        *power += hx_bodies_apply_load(d, m->markers[f->i_marker].body, I->p, F, T, 1.0);
+        *power += hx_bodies_apply_load(d, m->markers[f->j_marker].body, I->p, F, T, -1.0);
     }
     return 0;
 }

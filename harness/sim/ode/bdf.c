@@ -16,7 +16,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include "base/finite.h"
-#include "sim/sundials_run.h"
+#include "sim/ode/sundials_common.h"
 
 static int newton_jacobian(double t, N_Vector y, N_Vector fy, SUNMatrix J, void *user_data,
                            N_Vector tmp1, N_Vector tmp2, N_Vector tmp3)
@@ -88,7 +88,7 @@ static void collect_stats(void *solver, hx_integrator_stats *st)
     st->last_step = last;
 }
 
-hx_status hx_integrate_bdf(hx_run *r, double t0, double *y)
+hx_status hx_integrate_bdf(hx_integration *r, double t0, double *y)
 {
     const hx_ode *o = r->ode;
     const hx_integrator_options *opt = r->opt;

@@ -80,56 +80,12 @@ int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot);
 /* The kinematics of y into d->state: bodies' frames, then markers. */
 void hx_dynamics_set_state(hx_dynamics *d, double t, const double *y);
 
-/* Normalizes quaternions and projects onto the couplers; returns 0 or -1. */
-int hx_dynamics_project(hx_dynamics *d, double t, double *y);
-
-/* Largest |phi| and |dphi/dt| of the couplers at a state. */
-int hx_dynamics_residuals(hx_dynamics *d, double t, const double *y, double *phi,
-                          double *phidot);
-
-/* q <- q + h N(q) u (quaternions by their exact increment), for symplectic Euler. */
-void hx_dynamics_advance_positions(hx_dynamics *d, double *y, double h);
-
-/* The energy of a state, in force * length units (energy.c). */
-typedef struct hx_energy {
-    double total;     /* kinetic + gravity potential + elastic - work of the loads */
-    double kinetic;
-    double elastic;   /* the force elements' potential at their deformation */
-    double balance;   /* kinetic + gravity potential - work of loads and elements:
-                       * constant whatever the elements do (damping included),
-                       * so its drift is the integrator's alone */
-} hx_energy;
-
-hx_energy hx_dynamics_energy(hx_dynamics *d, double t, const double *y);
-
-/* Generalized force coupler puts on joint `joint` of its list: G_kj lambda_k. */
-double hx_dynamics_coupler_force(hx_dynamics *d, double t, const double *y, int coupler,
-                                 int joint);
-
-/* ---- the parts of an evaluation, for the files of the sim layer ---------------- */
+/* ---- for the stages of an evaluation (bodies.h, loads.h, element_forces.h,
+ * state_elements.h, constraints.h) ----------------------------------------------- */
 
 /* Records the first failure in d->message; returns -1. */
 int hx_dynamics_fail(hx_dynamics *d, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 /* -1 when an element asked to stop the run (c_errmes STOP). */
 int hx_dynamics_check_stop(hx_dynamics *d, const hx_binding *b);
-
-/* Body set-up, and the accelerations of the bodies from d->force, d->torque. */
-int hx_bodies_init(hx_dynamics *d, hx_message *msg);
-void hx_bodies_set_frames(hx_dynamics *d, const double *y);
-void hx_bodies_initial_state(const hx_dynamics *d, double *y);
-void hx_bodies_accelerations(hx_dynamics *d, const double *y, double *ydot);
-/* Adds F at a world point (and a couple T, may be NULL) to a body's force and
- * torque about its centre, with sign; returns their power (0 on ground). */
-double hx_apply_load(hx_dynamics *d, int body, const double point[3], const double F[3],
-                     const double T[3], double sign);
-/* 1/mass of a jointed body's velocity u_index (0 for free bodies). */
-double hx_bodies_inverse_mass(const hx_dynamics *d, int u_index);
-
-/* Gravity and the model's loads at time t; returns their power. */
-double hx_apply_loads(hx_dynamics *d, double t);
-/* The force elements at d->state; *power receives the power of their forces. */
-int hx_apply_element_forces(hx_dynamics *d, double *power);
-/* The couplers' multipliers into the accelerations udot. */
-int hx_apply_constraints(hx_dynamics *d, double t, const double *y, double *udot);
 
 #endif

@@ -1,6 +1,10 @@
 /* The right-hand side and its set-up (dynamics.h). */
-#include "sim/dynamics.h"
-#include "sim/state_elements.h"
+#include "sim/dynamics/dynamics.h"
+#include "sim/dynamics/bodies.h"
+#include "sim/dynamics/constraints.h"
+#include "sim/dynamics/element_forces.h"
+#include "sim/dynamics/loads.h"
+#include "sim/dynamics/state_elements.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -117,12 +121,12 @@ int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot)
     hx_dynamics_set_state(d, t, y);
     memset(d->force, 0, sizeof(double) * 3 * (size_t)nb);
     memset(d->torque, 0, sizeof(double) * 3 * (size_t)nb);
-    ydot[d->load_work] = hx_apply_loads(d, t);
-    if (hx_apply_element_forces(d, &ydot[d->element_work]) != 0 ||
-        hx_apply_state_elements(d, y, ydot) != 0)
+    ydot[d->load_work] = hx_loads_apply(d, t);
+    if (hx_element_forces_apply(d, &ydot[d->element_work]) != 0 ||
+        hx_state_elements_apply(d, y, ydot) != 0)
         return -1;
     hx_bodies_accelerations(d, y, ydot);
-    return hx_apply_constraints(d, t, y, ydot + d->nq);
+    return hx_constraints_apply(d, t, y, ydot + d->nq);
 }
 
 int hx_dynamics_initial_state(hx_dynamics *d, double *y)
@@ -131,5 +135,5 @@ int hx_dynamics_initial_state(hx_dynamics *d, double *y)
     hx_bodies_initial_state(d, y);
     hx_state_elements_initial(d, y);
     d->max_phi = d->max_phidot = 0.0;
-    return hx_dynamics_project(d, 0.0, y);
+    return hx_constraints_project(d, 0.0, y);
 }

@@ -1,0 +1,19 @@
+/* The energy of a state of the dynamics. */
+#ifndef HX_SIM_DYNAMICS_ENERGY_H
+#define HX_SIM_DYNAMICS_ENERGY_H
+
+#include "sim/dynamics/dynamics.h"
+
+/* In force * length units. */
+typedef struct hx_energy {
+    double total;     /* kinetic + gravity potential + elastic - work of the loads */
+    double kinetic;
+    double elastic;   /* the force elements' potential at their deformation */
+    double balance;   /* kinetic + gravity potential - work of loads and elements:
+                       * constant whatever the elements do (damping included),
+                       * so its drift is the integrator's alone */
+} hx_energy;
+
+hx_energy hx_energy_of(hx_dynamics *d, double t, const double *y);
+
+#endif
