@@ -19,9 +19,9 @@ set -euo pipefail
 
 packages_of() {
   case "$1" in
-    main) echo cmake gcc make libc6-dev libexpat1-dev libsundials-dev gnuplot-nox ;;
+    main) echo cmake gcc make libc6-dev libexpat1-dev libsundials-dev libsuitesparse-dev gnuplot-nox ;;
     test) echo "$(packages_of main) libcmocka-dev clang libclang-rt-14-dev valgrind" ;;
-    fuzz) echo cmake gcc make libc6-dev libexpat1-dev libsundials-dev clang libclang-rt-14-dev ;;
+    fuzz) echo cmake gcc make libc6-dev libexpat1-dev libsundials-dev libsuitesparse-dev clang libclang-rt-14-dev ;;
     *) return 1 ;;
   esac
 }

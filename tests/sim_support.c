@@ -1,7 +1,9 @@
 /* Helpers of the simulating tests (sim_support.h). */
 #include "sim_support.h"
+#include "sim/newton/newton_matrix.h"
 
 #include <dlfcn.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -258,4 +260,71 @@ void csv_free(csv_table *t)
 {
     free(t->v);
     memset(t, 0, sizeof *t);
+}
+
+double newton_matrix_against_differences(hx_dynamics *d, double t, const double *y,
+                                         const char *what, long *outside)
+{
+    const int n = d->n;
+    hx_newton_matrix nm;
+    hx_message msg;
+    if (hx_newton_matrix_init(&nm, d, &msg) != 0)
+        fail_msg("%s: %s", what, msg.text);
+    double *values = calloc((size_t)nm.pattern.nnz + 1, sizeof(double));
+    double *A = calloc((size_t)n * (size_t)n, sizeof(double));
+    double *D = calloc((size_t)n * (size_t)n, sizeof(double));
+    double *shifted = malloc(sizeof(double) * (size_t)n), *up = malloc(sizeof(double) * (size_t)n);
+    double *down = malloc(sizeof(double) * (size_t)n);
+    unsigned char *in = calloc((size_t)n * (size_t)n, 1);
+    assert_non_null(values), assert_non_null(A), assert_non_null(D), assert_non_null(in);
+    if (hx_newton_matrix_build(&nm, t, y, values) != 0)
+        fail_msg("%s: %s", what, d->message);
+    for (int c = 0; c < n; ++c)
+        for (int k = nm.pattern.colptr[c]; k < nm.pattern.colptr[c + 1]; ++k) {
+            A[(size_t)nm.pattern.rowind[k] + (size_t)n * c] = values[k];
+            in[(size_t)nm.pattern.rowind[k] + (size_t)n * c] = 1;
+        }
+    char described[1024] = "";
+    hx_newton_matrix_describe(&nm, described, sizeof described);
+    for (int c = 0; c < n; ++c) {
+        const double h = 1e-6 * fmax(1.0, fabs(y[c]));
+        for (int side = 0; side < 2; ++side) {
+            memcpy(shifted, y, sizeof(double) * (size_t)n);
+            shifted[c] += side ? -h : h;
+            if (hx_dynamics_rhs(d, t, shifted, side ? down : up) != 0)
+                fail_msg("%s: %s", what, d->message);
+        }
+        for (int r = 0; r < n; ++r)
+            D[r + (size_t)n * c] = (up[r] - down[r]) / (2.0 * h);
+    }
+    double worst = 0.0;
+    int worst_r = 0, worst_c = 0;
+    *outside = nm.outside;
+    for (int r = 0; r < n; ++r) {
+        if (r == d->load_work || r == d->element_work)
+            continue;
+        double row = 0.0;
+        for (int c = 0; c < n; ++c)
+            row = fmax(row, fabs(D[r + (size_t)n * c]));
+        for (int c = 0; c < n && row > 0.0; ++c) {
+            const size_t at = r + (size_t)n * c;
+            if (!in[at] && fabs(D[at]) > 1e-9 * row) {
+                if (*outside < 5)
+                    printf("  %s: row %d, column %d is %.6g by differences, outside the sparsity\n",
+                           what, r, c, D[at]);
+                ++*outside;
+            }
+            const double e = fabs(A[at] - D[at]) / row;
+            if (e > worst)
+                worst = e, worst_r = r, worst_c = c;
+        }
+    }
+    printf("  %s: Newton matrix (%d x %d, %d nonzeros) against differences of the whole right-hand"
+           " side: largest difference %.2g of its row (row %d, column %d: %.10g against %.10g);"
+           " %ld outside the sparsity\n  (%s)\n", what, n, n, nm.pattern.nnz, worst, worst_r,
+           worst_c, A[worst_r + (size_t)n * worst_c], D[worst_r + (size_t)n * worst_c], *outside,
+           described);
+    free(values), free(A), free(D), free(shifted), free(up), free(down), free(in);
+    hx_newton_matrix_free(&nm);
+    return worst;
 }

@@ -32,6 +32,16 @@ double sim_lambda(const sim *s, int row, int coupler);
 /* Offset of a jointed body's coordinate (position) by joint id. */
 int sim_joint_q(const sim *s, int joint_id);
 int sim_joint_u(const sim *s, int joint_id);
+/* The assembled Newton matrix (sim/newton/) at (t, y) against central
+ * differences of the whole right-hand side, entry by entry relative to each
+ * row's largest entry (the work accumulators' rows apart: the matrix leaves
+ * them out): returns the largest difference; *outside receives the count of
+ * entries the differences find nonzero (above 1e-9 of their row) where the
+ * sparsity says zero, or that the build itself found outside it. Prints a
+ * line naming what. */
+double newton_matrix_against_differences(hx_dynamics *d, double t, const double *y,
+                                         const char *what, long *outside);
+
 /* Runs "usrsub-harness check" in-process; returns its exit status. */
 int sim_check(const char *model);
 

@@ -18,6 +18,7 @@
 
 #include "cmd/commands.h"
 #include "sim/newton/newton_matrix.h"
+#include "sim/ode/column_groups.h"
 #include "sim_support.h"
 #include "test_support.h"
 #include "tools/bench/linear_reference.h"
@@ -101,52 +102,27 @@ static double state_difference(const hx_dynamics *d, const double *a, const doub
     return worst;
 }
 
+static int is_model(const struct dirent *e)
+{
+    const size_t n = strlen(e->d_name);
+    return n > 4 && strcmp(e->d_name + n - 4, ".xml") == 0;
+}
+
 /* ---- the Newton matrix against differences of the whole right-hand side ------------ */
 
 static void compare_jacobians(model *m, double t, const double *y, const char *what,
                               hx_partials_source expected)
 {
-    hx_dynamics *d = &m->d;
-    const int n = d->n;
     hx_newton_matrix nm;
     hx_message msg;
-    assert_int_equal(hx_newton_matrix_init(&nm, d, &msg), 0);
-    double *Ja = calloc((size_t)(n * n), sizeof(double));
-    double *Jf = calloc((size_t)(n * n), sizeof(double));
-    double *yp = malloc(sizeof(double) * (size_t)n), *fp = malloc(sizeof(double) * (size_t)n);
-    double *fm = malloc(sizeof(double) * (size_t)n);
-    assert_int_equal(hx_newton_matrix_build(&nm, t, y, Ja), 0);
+    assert_int_equal(hx_newton_matrix_init(&nm, &m->d, &msg), 0);
     for (int k = 0; k < nm.nf; ++k)
         assert_int_equal(nm.source[k], expected);
-    for (int c = 0; c < n; ++c) {
-        const double h = 1e-6 * fmax(1.0, fabs(y[c]));
-        memcpy(yp, y, sizeof(double) * (size_t)n);
-        yp[c] = y[c] + h;
-        assert_int_equal(hx_dynamics_rhs(d, t, yp, fp), 0);
-        yp[c] = y[c] - h;
-        assert_int_equal(hx_dynamics_rhs(d, t, yp, fm), 0);
-        for (int r = 0; r < n; ++r)
-            Jf[r + n * c] = (fp[r] - fm[r]) / (2.0 * h);
-    }
-    /* entry by entry, against the size of its row (rows mix units) */
-    double worst = 0.0;
-    int worst_r = 0, worst_c = 0;
-    for (int r = 0; r < n; ++r) {
-        double row = 0.0;
-        for (int c = 0; c < n; ++c)
-            row = fmax(row, fabs(Jf[r + n * c]));
-        for (int c = 0; c < n; ++c) {
-            const double e = row > 0.0 ? fabs(Ja[r + n * c] - Jf[r + n * c]) / row : 0.0;
-            if (e > worst)
-                worst = e, worst_r = r, worst_c = c;
-        }
-    }
-    printf("%s: analytic Newton matrix (%d x %d) against differences of the whole right-hand"
-           " side: largest difference %.2g of its row (row %d, column %d: %.10g against %.10g)\n",
-           what, n, n, worst, worst_r, worst_c, Ja[worst_r + n * worst_c], Jf[worst_r + n * worst_c]);
-    assert_true(worst < 1e-6);
-    free(Ja), free(Jf), free(yp), free(fp), free(fm);
     hx_newton_matrix_free(&nm);
+    long outside = 0;
+    const double worst = newton_matrix_against_differences(&m->d, t, y, what, &outside);
+    assert_int_equal(outside, 0);
+    assert_true(worst < 1e-6);
 }
 
 static void newton_matrix_equals_differences_on_the_powertrain(void **state)
@@ -159,6 +135,137 @@ static void newton_matrix_equals_differences_on_the_powertrain(void **state)
     hx_simulation_result r = simulate(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-8, 0.6, y);
     assert_int_equal(r.status, HX_INTEGRATION_OK);
     compare_jacobians(&m, 0.6, y, "powertrain.xml at t = 0.6 s", HX_PARTIALS_TWIN);
+    close_model(&m);
+}
+
+/* Every bundled model the harness simulates, at a state it reaches (0.05 s
+ * of DOPRI5 from the start: loads on, elements deformed), and chains of
+ * bodies from scripts/chain_model.sh: the assembled matrix equals the
+ * differences entry by entry, and no nonzero lies outside its sparsity. */
+static void newton_matrix_equals_differences_on_every_model(void **state)
+{
+    (void)state;
+    struct dirent **names;
+    const int count = scandir(EXAMPLES_DIR, &names, is_model, alphasort);
+    assert_true(count > 10);
+    char paths[64][1024];
+    int npaths = 0;
+    for (int k = 0; k < count; ++k) {
+        if (npaths < 60)
+            snprintf(paths[npaths++], sizeof paths[0], "%s/%s", EXAMPLES_DIR, names[k]->d_name);
+        free(names[k]);
+    }
+    free(names);
+    static const int links[] = {2, 5};
+    for (int k = 0; k < 2; ++k) {
+        char command[2048];
+        snprintf(paths[npaths], sizeof paths[0], "%s/chain_%d.xml", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp", links[k]);
+        snprintf(command, sizeof command, "sh %s/chain_model.sh %d %s", SCRIPTS_DIR, links[k],
+                 paths[npaths]);
+        assert_int_equal(system(command), 0);
+        ++npaths;
+    }
+    int compared = 0;
+    for (int k = 0; k < npaths; ++k) {
+        hx_session session;
+        hx_dynamics d;
+        hx_message msg;
+        if (hx_session_open(&session, paths[k], stderr, &msg) != 0)
+            fail_msg("%s: %s", paths[k], msg.text);
+        if (hx_dynamics_init(&d, &session, &msg) != 0) { /* not simulated: check-only models */
+            hx_dynamics_free(&d);
+            hx_session_close(&session);
+            continue;
+        }
+        model m = {session, d};
+        double *y = calloc((size_t)m.d.n, sizeof(double));
+        hx_simulation_result r = simulate(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-8, 0.05, y);
+        assert_int_equal(r.status, HX_INTEGRATION_OK);
+        const char *name = strrchr(paths[k], '/') + 1;
+        long outside = 0;
+        const double worst = newton_matrix_against_differences(&m.d, 0.05, y, name, &outside);
+        assert_int_equal(outside, 0);
+        if (worst >= 1e-6)
+            fail_msg("%s: the Newton matrix differs from differences by %.2g of a row", name, worst);
+        compared++;
+        free(y);
+        hx_dynamics_free(&m.d);
+        hx_session_close(&m.session);
+    }
+    printf("%d models compared\n", compared);
+    assert_true(compared >= 20);
+}
+
+/* Differences by column groups (what --jacobian fd uses) on a chain: no two
+ * columns of a group share a row of the sparsity, there are far fewer
+ * groups than columns, and the grouped matrix equals the matrix of the same
+ * differences taken one column at a time. */
+static int rhs_of(void *ctx, double t, const double *y, double *ydot)
+{
+    return hx_dynamics_rhs(ctx, t, y, ydot);
+}
+
+static void differences_by_column_groups_equal_them_column_by_column(void **state)
+{
+    (void)state;
+    char path[1024], command[2048];
+    snprintf(path, sizeof path, "%s/chain_12.xml", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp");
+    snprintf(command, sizeof command, "sh %s/chain_model.sh 12 %s", SCRIPTS_DIR, path);
+    assert_int_equal(system(command), 0);
+    model m;
+    open_model(&m, path);
+    const int n = m.d.n;
+    double *y = calloc((size_t)n, sizeof(double)), *fy = calloc((size_t)n, sizeof(double));
+    double *h = calloc((size_t)n, sizeof(double)), *work = calloc(2 * (size_t)n, sizeof(double));
+    hx_simulation_result r = simulate(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-8, 0.05, y);
+    assert_int_equal(r.status, HX_INTEGRATION_OK);
+    hx_newton_matrix nm;
+    hx_message msg;
+    assert_int_equal(hx_newton_matrix_init(&nm, &m.d, &msg), 0);
+    const hx_sparsity *sp = &nm.pattern;
+    hx_column_groups g;
+    assert_int_equal(hx_column_groups_build(&g, sp), 0);
+    /* no row shared inside a group */
+    int *owner = malloc(sizeof(int) * (size_t)n);
+    for (int k = 0; k < g.count; ++k) {
+        for (int i = 0; i < n; ++i)
+            owner[i] = -1;
+        for (int j = g.start[k]; j < g.start[k + 1]; ++j)
+            for (int p = sp->colptr[g.columns[j]]; p < sp->colptr[g.columns[j] + 1]; ++p) {
+                assert_int_equal(owner[sp->rowind[p]], -1);
+                owner[sp->rowind[p]] = g.columns[j];
+            }
+    }
+    printf("chain of 12 bodies: %d states, %d nonzeros, %d column groups\n", n, sp->nnz, g.count);
+    assert_true(g.count < n / 3);
+    double *grouped = calloc((size_t)sp->nnz, sizeof(double));
+    double *single = calloc((size_t)sp->nnz, sizeof(double));
+    for (int i = 0; i < n; ++i)
+        h[i] = 1e-7 * fmax(1.0, fabs(y[i]));
+    assert_int_equal(hx_dynamics_rhs(&m.d, 0.05, y, fy), 0);
+    assert_int_equal(hx_grouped_differences(&g, sp, rhs_of, &m.d, 0.05, y, fy, h, m.d.load_work, grouped, work), 0);
+    hx_column_groups one = {n, malloc(sizeof(int) * (size_t)(n + 1)), malloc(sizeof(int) * (size_t)n)};
+    for (int i = 0; i <= n; ++i)
+        one.start[i] = i;
+    for (int i = 0; i < n; ++i)
+        one.columns[i] = i;
+    assert_int_equal(hx_grouped_differences(&one, sp, rhs_of, &m.d, 0.05, y, fy, h, m.d.load_work, single, work), 0);
+    /* against each row's largest entry (rows mix units); a column counted in
+     * another's row would be wrong by the size of its entry */
+    double *row = calloc((size_t)n, sizeof(double)), worst = 0.0;
+    for (int p = 0; p < sp->nnz; ++p)
+        row[sp->rowind[p]] = fmax(row[sp->rowind[p]], fabs(single[p]));
+    for (int p = 0; p < sp->nnz; ++p)
+        worst = fmax(worst, row[sp->rowind[p]] > 0.0
+                                ? fabs(grouped[p] - single[p]) / row[sp->rowind[p]]
+                                : fabs(grouped[p]));
+    printf("  grouped against column by column: largest difference %.2g of its row\n", worst);
+    assert_true(worst <= 1e-6);
+    free(row);
+    hx_column_groups_free(&one);
+    hx_column_groups_free(&g);
+    hx_newton_matrix_free(&nm);
+    free(owner), free(grouped), free(single), free(y), free(fy), free(h), free(work);
     close_model(&m);
 }
 
@@ -352,12 +459,6 @@ static void a_twin_that_disagrees_is_set_aside(void **state)
 
 /* ---- BDF against DOPRI5 on every bundled model --------------------------------------- */
 
-static int is_model(const struct dirent *e)
-{
-    const size_t n = strlen(e->d_name);
-    return n > 4 && strcmp(e->d_name + n - 4, ".xml") == 0;
-}
-
 static void bdf_agrees_with_dopri5_on_every_bundled_model(void **state)
 {
     (void)state;
@@ -471,13 +572,16 @@ static void run_takes_bdf_on_every_model_and_says_when_it_is_stiff(void **state)
     assert_int_equal(run_captured(EXAMPLES_DIR "/powertrain.xml", bdf_run, text, sizeof text), 0);
     printf("%s", text);
     assert_contains(text, "not stiff for this run", "--integrator dopri5",
-                    "differences of the whole right-hand side");
+                    "differences of the right-hand side in");
+    assert_contains(text, "linear solver: dense LU (auto", "column groups", "Newton matrices took");
 }
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(newton_matrix_equals_differences_on_the_powertrain),
+        cmocka_unit_test(newton_matrix_equals_differences_on_every_model),
+        cmocka_unit_test(differences_by_column_groups_equal_them_column_by_column),
         cmocka_unit_test(bdf_converges_at_its_order),
         cmocka_unit_test(a_wrong_partial_costs_newton_iterations_not_accuracy),
         cmocka_unit_test(a_twin_that_disagrees_is_set_aside),

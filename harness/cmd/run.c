@@ -21,7 +21,10 @@ static void usage(FILE *f)
             "                      rk4 | euler | symplectic-euler (fixed steps: give --step) |\n"
             "                      dopri5-arkode (ARKODE's Dormand-Prince, for comparison)\n"
             "  --jacobian KIND     bdf's Newton matrix: analytic (default: the elements' own\n"
-            "                      partials) | fd (differences of the whole right-hand side)\n"
+            "                      partials, assembled element by element) | fd (differences of\n"
+            "                      the right-hand side, by column groups on the sparsity)\n"
+            "  --linear-solver S   bdf's Newton systems: auto (default: dense LU below 100\n"
+            "                      states, KLU sparse LU from 100 on) | dense | klu\n"
             "  --max-order Q       bdf's highest order, 1 to 5 (default 5)\n"
             "  --step H            fixed step (adaptive methods: the first step; default\n"
             "                      automatic)\n"
@@ -111,6 +114,7 @@ static int parse(int argc, char **argv, hx_simulation_options *so, const char **
         {"rtol", required_argument, NULL, 'r'},       {"atol", required_argument, NULL, 'a'},
         {"max-step", required_argument, NULL, 'm'},   {"quiet", no_argument, NULL, 'q'},
         {"jacobian", required_argument, NULL, 'j'},   {"max-order", required_argument, NULL, 'O'},
+        {"linear-solver", required_argument, NULL, 'L'},
         {"help", no_argument, NULL, 'h'},             {0, 0, 0, 0}};
     hx_integrator_options *io = &so->integration;
     int opt;
@@ -129,6 +133,13 @@ static int parse(int argc, char **argv, hx_simulation_options *so, const char **
             if (hx_jacobian_parse(optarg, &io->jacobian) != 0) {
                 fprintf(stderr, "usrsub-harness run: --jacobian '%s' is not analytic or fd\n",
                         optarg);
+                bad = 1;
+            }
+            break;
+        case 'L':
+            if (hx_linear_solver_parse(optarg, &io->linear_solver) != 0) {
+                fprintf(stderr, "usrsub-harness run: --linear-solver '%s' is not auto, dense or"
+                        " klu\n", optarg);
                 bad = 1;
             }
             break;

@@ -68,12 +68,17 @@ void hx_bodies_frame(const hx_dynamics *d, int k, const double *y, hx_frame *f)
     switch (dof->kind) {
     case HX_DOF_GROUND:
         break;
-    case HX_DOF_FREE:
+    case HX_DOF_FREE: {
+        /* the orientation of the unit quaternion: a trial state off unit
+         * length (a Newton iterate, a difference) still has a rigid body */
+        double unit[4] = {q[dof->q + 3], q[dof->q + 4], q[dof->q + 5], q[dof->q + 6]};
+        quat_normalize(unit);
         v3_copy(f->p, q + dof->q);
-        quat_to_matrix(f->R, q + dof->q + 3);
+        quat_to_matrix(f->R, unit);
         v3_copy(f->v, u + dof->u);
         m3_apply(f->w, f->R, u + dof->u + 3);
         break;
+    }
     case HX_DOF_REVOLUTE: {
         double Rot[9], r0[3], r[3];
         m3_axis_angle(Rot, dof->axis, q[dof->q] - dof->coord0);

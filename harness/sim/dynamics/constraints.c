@@ -51,7 +51,10 @@ static int coupler_terms(hx_dynamics *d, int k, double t, const double *y, doubl
         return n;
     }
     double hess[9] = {0};
-    d->state.time = t; /* couplers get their state in disp: only the time is bound */
+    if (d->state.time != t) { /* couplers get their state in disp: only the time is bound */
+        d->state.time = t;
+        d->evaluated = 0;
+    }
     hx_call_coupler(b, 0, &d->state, disp, n, 0, phi, NULL);
     hx_call_coupler(b, 1, &d->state, disp, n, 0, grad, NULL);
     if (gamma != NULL)
@@ -215,3 +218,46 @@ double hx_constraints_coupler_force(hx_dynamics *d, double t, const double *y, i
     return grad[joint] * d->lambda[coupler];
 }
 
+
+int hx_constraints_coupled(const hx_dynamics *d, int *index)
+{
+    int count = 0;
+    for (int k = 0; k < d->m->ncouplers; ++k) {
+        int ui[3];
+        const int n = coupler_joints(d, k, ui);
+        for (int i = 0; i < n; ++i) {
+            int seen = 0;
+            for (int j = 0; j < count && !seen; ++j)
+                seen = index[j] == ui[i];
+            if (!seen)
+                index[count++] = ui[i];
+        }
+    }
+    return count;
+}
+
+int hx_constraints_projector(hx_dynamics *d, double t, const double *y, const int *index,
+                             int count, double *work, double *P)
+{
+    const int nc = d->m->ncouplers, nu = d->nu;
+    double *G = d->scratch, *minv = G + nc * nu + nc * nc, *phi = minv + nu;
+    double *A = work, *z = work + nc * nc;
+    if (constraint_jacobian(d, t, y, G, phi, NULL) != 0)
+        return -1;
+    for (int k = 0; k < nu; ++k)
+        minv[k] = hx_bodies_inverse_mass(d, k);
+    for (int j = 0; j < count; ++j) {
+        weighted_gram(d, G, minv, A); /* the solve takes it apart */
+        for (int k = 0; k < nc; ++k)
+            z[k] = G[k * nu + index[j]];
+        if (hx_solve(nc, A, z) != 0)
+            return hx_dynamics_fail(d, "the couplers' constraint Jacobian is singular at t = %g", t);
+        for (int i = 0; i < count; ++i) {
+            double s = 0.0;
+            for (int k = 0; k < nc; ++k)
+                s += G[k * nu + index[i]] * z[k];
+            P[i + count * j] = (i == j ? 1.0 : 0.0) - minv[index[i]] * s;
+        }
+    }
+    return 0;
+}

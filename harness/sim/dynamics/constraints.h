@@ -13,6 +13,17 @@
  * loads alone on entry). */
 int hx_constraints_apply(hx_dynamics *d, double t, const double *y, double *udot);
 
+/* The velocities (indices into u) the couplers join, each once; returns
+ * their count (at most nu). */
+int hx_constraints_coupled(const hx_dynamics *d, int *index);
+
+/* The couplers' share of the accelerations is udot = P udot_free + c(q, u),
+ * with P = I - M^-1 G^T (G M^-1 G^T)^-1 G: P over the coupled velocities
+ * (index, count, from hx_constraints_coupled), column-major count x count;
+ * work holds nc (nc + 1) values. 0, or -1 (d->message). */
+int hx_constraints_projector(hx_dynamics *d, double t, const double *y, const int *index,
+                             int count, double *work, double *P);
+
 /* Normalizes quaternions and projects onto the couplers; returns 0 or -1. */
 int hx_constraints_project(hx_dynamics *d, double t, double *y);
 

@@ -69,8 +69,11 @@ int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg)
     d->world_aligned = calloc((size_t)nf + 1, 1);
     d->force = calloc(3 * (size_t)nb + 1, sizeof *d->force);
     d->torque = calloc(3 * (size_t)nb + 1, sizeof *d->torque);
+    d->element_outputs = calloc(6 * (size_t)nf + 1, sizeof(double));
+    d->element_partials = calloc(72 * (size_t)nf + 1, sizeof(double));
     if (!d->dof || !d->coupler_binding || !d->force_binding || !d->lambda || !d->element_load ||
-        !d->world_aligned || !d->force || !d->torque || hx_state_clone(&d->state, &s->state) != 0 ||
+        !d->world_aligned || !d->force || !d->torque || !d->element_outputs ||
+        !d->element_partials || hx_state_clone(&d->state, &s->state) != 0 ||
         hx_state_clone(&d->probe, &s->state) != 0)
         return hx_fail(msg, "out of memory");
     if (hx_bodies_init(d, msg) != 0 || hx_state_elements_init(d, msg) != 0)
@@ -78,6 +81,10 @@ int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg)
     d->load_work = d->states + d->nstates;
     d->element_work = d->load_work + 1;
     d->n = d->element_work + 1;
+    d->free_accelerations = calloc((size_t)d->nu + 1, sizeof(double));
+    d->evaluated_y = calloc((size_t)d->n, sizeof(double));
+    if (d->free_accelerations == NULL || d->evaluated_y == NULL)
+        return hx_fail(msg, "out of memory");
     /* scratch: G (nc x nu), A (nc x nc), several vectors of nu and nc */
     d->scratch = calloc((size_t)(nc * d->nu + nc * nc + 6 * (d->nu + nc) + 16), sizeof(double));
     if (d->scratch == NULL)
@@ -102,6 +109,10 @@ void hx_dynamics_free(hx_dynamics *d)
     free(d->force);
     free(d->torque);
     free(d->scratch);
+    free(d->element_outputs);
+    free(d->element_partials);
+    free(d->free_accelerations);
+    free(d->evaluated_y);
     hx_state_elements_free(d);
     hx_state_free(&d->state);
     hx_state_free(&d->probe);
@@ -110,6 +121,7 @@ void hx_dynamics_free(hx_dynamics *d)
 
 void hx_dynamics_set_state(hx_dynamics *d, double t, const double *y)
 {
+    d->evaluated = 0;
     d->state.time = t;
     hx_bodies_set_frames(d, y);
     hx_state_update(&d->state);
@@ -126,7 +138,15 @@ int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot)
         hx_state_elements_apply(d, y, ydot) != 0)
         return -1;
     hx_bodies_accelerations(d, y, ydot);
-    return hx_constraints_apply(d, t, y, ydot + d->nq);
+    if (d->m->ncouplers > 0) {
+        memcpy(d->free_accelerations, ydot + d->nq, sizeof(double) * (size_t)d->nu);
+        if (hx_constraints_apply(d, t, y, ydot + d->nq) != 0)
+            return -1;
+    }
+    memcpy(d->evaluated_y, y, sizeof(double) * (size_t)d->n);
+    d->evaluated_t = t;
+    d->evaluated = 1;
+    return 0;
 }
 
 int hx_dynamics_initial_state(hx_dynamics *d, double *y)

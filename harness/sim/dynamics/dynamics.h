@@ -56,11 +56,15 @@ typedef struct hx_dynamics {
                                    * for good (on ground, unturned) */
     double *force, *torque;     /* per body, world, torque about the cm */
     double *scratch;
-    /* Non-NULL: 6 outputs per force element, then 6 per Force_StateEqn, in
-     * the element's own axes, that the evaluation applies as they are instead
-     * of calling the elements (the Newton matrix's frozen differences,
-     * newton_matrix.h); the Force_StateEqn states' rates are then zero. */
-    const double *frozen_outputs;
+    /* What the last evaluation found, for the Newton matrix (sim/newton/),
+     * which takes them instead of calling the elements again: */
+    double *element_outputs;    /* 6 per force element, in its own result axes */
+    double *element_partials;   /* 72 per FIESUB element: dfddis, then dfdvel */
+    double *free_accelerations; /* nu: the bodies' udot before the couplers act */
+    double *evaluated_y;        /* the y of that evaluation */
+    double evaluated_t;
+    int evaluated;              /* 1: d->state and the above belong to (evaluated_t,
+                                 * evaluated_y); any other setting of d->state clears it */
     int failed;
     char message[1024];
     double max_phi, max_phidot; /* largest constraint residuals after projections */

@@ -1,5 +1,5 @@
 /* The user force elements in the equations of motion (dynamics.h): each is
- * called with the dynamics' state bound (or its frozen outputs taken), its
+ * called with the dynamics' state bound, its
  * result turned into world axes and applied at I, its reaction on J's body at
  * the same point. */
 #include "base/finite.h"
@@ -17,30 +17,25 @@ int hx_element_forces_apply(hx_dynamics *d, double *power)
         const hx_force *f = &m->forces[k];
         hx_binding *b = d->force_binding[k];
         const hx_frame *I = &s->markers[f->i_marker], *J = &s->markers[f->j_marker];
-        double out[6] = {0};
+        double *out = d->element_outputs + 6 * k;
         /* the result's axes: the reference marker's (GFOSUB), or J's (FIESUB) */
         const double *axes = f->interface == HX_FORCE_GFOSUB
                                  ? (f->ref_marker >= 0 ? s->markers[f->ref_marker].R
                                                        : hx_world_frame.R)
                                  : J->R;
-        if (d->frozen_outputs != NULL) {
-            /* re-applied at this state's frames and lever arms, not re-evaluated */
-            for (int i = 0; i < 6; ++i)
-                out[i] = d->frozen_outputs[6 * k + i];
+        if (f->interface == HX_FORCE_GFOSUB) {
+            hx_call_gfosub(b, s, 0, 0, out, NULL);
         } else {
-            if (f->interface == HX_FORCE_GFOSUB) {
-                hx_call_gfosub(b, s, 0, 0, out, NULL);
-            } else {
-                double disp[6], velo[6], dfd[36], dfv[36];
-                hx_field_state(I, J, disp, velo);
-                hx_call_fiesub(b, s, disp, velo, 0, 0, out, dfd, dfv, NULL);
-            }
-            if (hx_dynamics_check_stop(d, b) != 0)
-                return -1;
-            if (!hx_all_finite(out, 6))
-                return hx_dynamics_fail(d, "%s %d returned a non-finite force at t = %g",
-                                        b->element, b->id, s->time);
+            /* the partials come with the force: kept for the Newton matrix */
+            double disp[6], velo[6], *dfd = d->element_partials + 72 * k;
+            hx_field_state(I, J, disp, velo);
+            hx_call_fiesub(b, s, disp, velo, 0, 0, out, dfd, dfd + 36, NULL);
         }
+        if (hx_dynamics_check_stop(d, b) != 0)
+            return -1;
+        if (!hx_all_finite(out, 6))
+            return hx_dynamics_fail(d, "%s %d returned a non-finite force at t = %g", b->element,
+                                    b->id, s->time);
         double *F = d->element_load + 6 * k, *T = F + 3;
         if (d->world_aligned[k]) {
             v3_copy(F, out);

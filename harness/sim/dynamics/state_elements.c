@@ -102,19 +102,11 @@ int hx_state_elements_apply(hx_dynamics *d, const double *y, double *ydot)
     for (int k = 0; k < se->count; ++k) {
         const hx_state_eqn *f = &d->m->state_eqns[k];
         double *out = se->outputs + 6 * k, *xdot = ydot + se->offset[k];
-        if (d->frozen_outputs != NULL) {
-            /* outputs re-applied at this state's frames; the states' rates are
-             * the Newton matrix's own rows (newton_matrix.h) */
-            memcpy(out, d->frozen_outputs + 6 * (d->m->nforces + k), 6 * sizeof(double));
-            memset(xdot, 0, sizeof(double) * (size_t)f->nstate);
-        } else {
-            double *u = se->work; /* the call's own copies come after them */
-            if (hx_state_eqn_inputs(&d->state, k, u) != 0)
-                return hx_dynamics_fail(d, "Force_StateEqn %d: an input could not be measured",
-                                        f->id);
-            if (hx_state_element_evaluate(d, k, y + se->offset[k], u, 0, xdot, out) != 0)
-                return -1;
-        }
+        double *u = se->work; /* the call's own copies come after them */
+        if (hx_state_eqn_inputs(&d->state, k, u) != 0)
+            return hx_dynamics_fail(d, "Force_StateEqn %d: an input could not be measured", f->id);
+        if (hx_state_element_evaluate(d, k, y + se->offset[k], u, 0, xdot, out) != 0)
+            return -1;
         ydot[d->element_work] += apply_outputs(d, f, out);
     }
     return 0;

@@ -1,335 +1,206 @@
-/* The Newton matrix from the elements' own partials (newton_matrix.h). */
-#include "sim/newton/newton_matrix.h"
+/* The Newton matrix, assembled element by element (newton_matrix.h). */
+#include "sim/newton/newton_parts.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "base/finite.h"
-#include "state/measures.h"
+#include "base/vecmath.h"
+#include "sim/dynamics/bodies.h"
+#include "sim/dynamics/constraints.h"
 
-#define TWIN_TOLERANCE 1e-9
-
-/* The perturbation of column c: relative above 1, absolute below (the
- * kinematics and the frozen right-hand side are smooth: central differences
- * of this size are good to about 1e-10). */
-static double column_step(const double *y, int c)
+void hx_newton_add(hx_newton_matrix *nm, int row0, int count, int col, const double *v)
 {
+    const hx_sparsity *s = &nm->pattern;
+    int p = hx_sparsity_find(s, row0, col);
+    for (int i = 0; i < count; ++i) {
+        if (v[i] == 0.0)
+            continue;
+        /* a block's rows are consecutive in its column: look up only when not */
+        int at = p >= 0 && p + i < s->colptr[col + 1] && s->rowind[p + i] == row0 + i
+                     ? p + i : hx_sparsity_find(s, row0 + i, col);
+        if (at < 0)
+            nm->outside++;
+        else
+            nm->values[at] += v[i];
+    }
+}
+
+int hx_newton_body_columns(const hx_dynamics *d, int b, int columns[13])
+{
+    const hx_body_dof *dof = &d->dof[b];
+    const int nq = dof->kind == HX_DOF_FREE ? 7 : dof->kind == HX_DOF_GROUND ? 0 : 1;
+    const int nu = dof->kind == HX_DOF_FREE ? 6 : nq;
+    for (int i = 0; i < nq; ++i)
+        columns[i] = dof->q + i;
+    for (int i = 0; i < nu; ++i)
+        columns[nq + i] = d->nq + dof->u + i;
+    return nq + nu;
+}
+
+double hx_newton_step(const double *y, int c)
+{
+    /* relative above 1, absolute below: the measures are smooth, so central
+     * differences of this size are good to about 1e-10 */
     return 1e-5 * fmax(1.0, fabs(y[c]));
 }
 
-static void mark_body(hx_newton_matrix *nm, int k, int marker)
+void hx_newton_probe_move(hx_newton_matrix *nm, int b, const double *y)
 {
-    if (marker >= 0)
-        nm->touches[k * nm->d->m->nbodies + nm->d->m->markers[marker].body] = 1;
+    const hx_dynamics *d = nm->d;
+    hx_bodies_frame(d, b, y, &nm->probe.bodies[b]);
+    for (int k = nm->body_marker_start[b]; k < nm->body_marker_start[b + 1]; ++k)
+        hx_marker_frame(d->m, &nm->probe.bodies[b], nm->body_markers[k],
+                        &nm->probe.markers[nm->body_markers[k]]);
 }
 
-/* The twin's results are in J's axes; the GFOSUB result in the reference
- * marker's: the two compare only when those axes coincide for good. */
-static int same_axes(const hx_model *m, const hx_force *f)
+void hx_newton_probe_restore(hx_newton_matrix *nm, int b)
 {
-    if (f->ref_marker == f->j_marker)
-        return 1;
-    if (f->ref_marker < 0)
-        return 0;
-    const hx_marker *r = &m->markers[f->ref_marker], *j = &m->markers[f->j_marker];
-    return r->body == j->body && memcmp(r->R_local, j->R_local, sizeof r->R_local) == 0;
+    const hx_state *s = &nm->d->state;
+    nm->probe.bodies[b] = s->bodies[b];
+    for (int k = nm->body_marker_start[b]; k < nm->body_marker_start[b + 1]; ++k)
+        nm->probe.markers[nm->body_markers[k]] = s->markers[nm->body_markers[k]];
+}
+
+void hx_newton_applied_force(hx_newton_matrix *nm, const hx_applied_force *a, int col, int b,
+                             const hx_motion *mo, const double dout[6])
+{
+    const hx_dynamics *d = nm->d;
+    static const hx_motion still;
+    const hx_motion *none = &still;
+    /* the motions of the axes, the point, and the two bodies' centres */
+    const double *dth_A = b >= 0 && b == a->ba ? mo->dth : none->dth;
+    hx_motion point = still;
+    if (b >= 0 && b == a->bi)
+        hx_point_motion(&d->state.bodies[b], mo, a->I, &point);
+    double dF[3], dT[3], tmp[3];
+    m3_apply(dF, a->R_A, dout);
+    m3_apply(dT, a->R_A, dout + 3);
+    v3_cross(tmp, dth_A, a->F);
+    v3_add(dF, dF, tmp);
+    v3_cross(tmp, dth_A, a->T);
+    v3_add(dT, dT, tmp);
+    for (int side = 0; side < 2; ++side) {
+        const int body = side == 0 ? a->bi : a->bj;
+        if (d->dof[body].kind == HX_DOF_GROUND)
+            continue;
+        const double sign = side == 0 ? 1.0 : -1.0;
+        /* torque about the body's centre: (p_I - p_body) x F + T */
+        double arm[3], darm[3], torque[3], force[3];
+        v3_sub(arm, a->I->p, d->state.bodies[body].p);
+        v3_copy(darm, point.dp);
+        if (b == body)
+            v3_sub(darm, darm, mo->dp);
+        v3_cross(torque, darm, a->F);
+        v3_cross(tmp, arm, dF);
+        v3_add(torque, torque, tmp);
+        v3_add(torque, torque, dT);
+        v3_scale(torque, torque, sign);
+        v3_scale(force, dF, sign);
+        hx_newton_body_load(nm, body, col, force, torque);
+    }
+}
+
+static int body_marker_lists(hx_newton_matrix *nm)
+{
+    const hx_model *m = nm->d->m;
+    nm->body_marker_start = calloc((size_t)m->nbodies + 2, sizeof(int));
+    nm->body_markers = malloc(sizeof(int) * ((size_t)m->nmarkers + 1));
+    if (nm->body_marker_start == NULL || nm->body_markers == NULL)
+        return -1;
+    for (int k = 0; k < m->nmarkers; ++k)
+        if (m->markers[k].tracked)
+            nm->body_marker_start[m->markers[k].body + 1]++;
+    for (int b = 0; b < m->nbodies; ++b)
+        nm->body_marker_start[b + 1] += nm->body_marker_start[b];
+    int *fill = calloc((size_t)m->nbodies + 1, sizeof(int));
+    if (fill == NULL)
+        return -1;
+    for (int k = 0; k < m->nmarkers; ++k)
+        if (m->markers[k].tracked) {
+            const int b = m->markers[k].body;
+            nm->body_markers[nm->body_marker_start[b] + fill[b]++] = k;
+        }
+    free(fill);
+    return 0;
 }
 
 int hx_newton_matrix_init(hx_newton_matrix *nm, hx_dynamics *d, hx_message *msg)
 {
     memset(nm, 0, sizeof *nm);
+    hx_messages_init(&nm->twin_messages, NULL);
     nm->d = d;
     nm->n = d->n;
     nm->m = d->nq + d->nu;
-    const hx_model *m = d->m;
-    const int nf = nm->nf = m->nforces, n = nm->n;
-    nm->ne = m->nstate_eqns;
-    const size_t f1 = (size_t)nf + 1, o1 = f1 + (size_t)nm->ne; /* output groups */
-    nm->source = calloc(f1, sizeof *nm->source);
-    nm->why = calloc(f1 * HX_NEWTON_WHY, 1);
-    nm->column_body = calloc((size_t)nm->m + 1, sizeof *nm->column_body);
-    nm->touches = calloc(f1 * (size_t)m->nbodies, 1);
-    nm->outputs = calloc(6 * o1, sizeof(double));
-    nm->partials = calloc(72 * f1, sizeof(double));
-    nm->dout = calloc(6 * f1 * ((size_t)nm->m + 1), sizeof(double));
-    nm->response = calloc(6 * o1 * (size_t)n, sizeof(double));
-    nm->unit = calloc(6 * o1, sizeof(double));
-    nm->y = calloc(3 * (size_t)n, sizeof(double));
-    nm->plus = calloc(24 * f1, sizeof(double));
-    hx_messages_init(&nm->twin_messages, NULL);
-    if (!nm->source || !nm->why || !nm->column_body || !nm->touches || !nm->outputs ||
-        !nm->partials || !nm->dout || !nm->response || !nm->unit || !nm->y || !nm->plus ||
-        hx_state_jacobian_init(&nm->states, d, msg) != 0) {
+    nm->nf = d->m->nforces;
+    const int nc = d->m->ncouplers;
+    nm->y = calloc(3 * (size_t)nm->n + 1, sizeof(double));
+    nm->coupled = calloc((size_t)d->nu + 1, sizeof(int));
+    int ok = nm->y != NULL && nm->coupled != NULL && body_marker_lists(nm) == 0 &&
+             hx_state_clone(&nm->probe, &d->state) == 0;
+    if (ok) {
+        nm->f_plus = nm->y + nm->n;
+        nm->f_minus = nm->f_plus + nm->n;
+        nm->ncoupled = nc > 0 ? hx_constraints_coupled(d, nm->coupled) : 0;
+        const size_t k = (size_t)nm->ncoupled;
+        nm->projector = calloc(k * k + 2 * k + (size_t)nc * ((size_t)nc + 1) + 1, sizeof(double));
+        nm->coupler_work = nm->projector + k * k;
+        ok = nm->projector != NULL;
+    }
+    if (!ok || hx_element_blocks_init(nm, msg) != 0 || hx_state_blocks_init(nm, msg) != 0 ||
+        hx_newton_pattern(nm) != 0) {
         hx_newton_matrix_free(nm);
         return hx_fail(msg, "out of memory");
-    }
-    nm->fp = nm->y + n;
-    nm->fm = nm->fp + n;
-    nm->minus = nm->plus + 12 * f1;
-    for (int b = 0; b < m->nbodies; ++b) {
-        const hx_body_dof *dof = &d->dof[b];
-        const int nq = dof->kind == HX_DOF_FREE ? 7 : dof->kind == HX_DOF_GROUND ? 0 : 1;
-        const int nu = dof->kind == HX_DOF_FREE ? 6 : nq;
-        for (int i = 0; i < nq; ++i)
-            nm->column_body[dof->q + i] = b;
-        for (int i = 0; i < nu; ++i)
-            nm->column_body[d->nq + dof->u + i] = b;
-    }
-    for (int k = 0; k < nf; ++k) {
-        const hx_force *f = &m->forces[k];
-        const hx_binding *b = d->force_binding[k];
-        mark_body(nm, k, f->i_marker);
-        mark_body(nm, k, f->j_marker);
-        char *why = nm->why + k * HX_NEWTON_WHY;
-        if (f->interface == HX_FORCE_FIESUB) {
-            nm->source[k] = HX_PARTIALS_FIESUB;
-        } else if (b->twin == NULL) {
-            nm->source[k] = HX_PARTIALS_DIFFERENCES;
-            snprintf(why, HX_NEWTON_WHY, "its library exports no FIESUB twin of %s", b->names[0]);
-        } else if (!same_axes(m, f)) {
-            nm->source[k] = HX_PARTIALS_DIFFERENCES;
-            snprintf(why, HX_NEWTON_WHY, "its ref_marker_id is not its J marker, whose axes the"
-                     " twin %s answers in", b->twin_name);
-        } else {
-            nm->source[k] = HX_PARTIALS_TWIN;
-        }
-        if (nm->source[k] == HX_PARTIALS_DIFFERENCES)
-            mark_body(nm, k, f->ref_marker); /* its result turns with that frame */
     }
     return 0;
 }
 
 void hx_newton_matrix_free(hx_newton_matrix *nm)
 {
+    hx_sparsity_free(&nm->pattern);
     free(nm->source);
     free(nm->why);
-    free(nm->column_body);
-    free(nm->touches);
-    free(nm->outputs);
-    free(nm->partials);
-    free(nm->dout);
-    free(nm->response);
-    free(nm->unit);
+    free(nm->twin_partials);
+    hx_state_free(&nm->probe);
+    free(nm->body_markers);
+    free(nm->body_marker_start);
+    hx_state_blocks_free(nm);
+    free(nm->coupled);
+    free(nm->projector);
     free(nm->y);
-    free(nm->plus);
-    hx_state_jacobian_free(&nm->states);
     hx_messages_destroy(&nm->twin_messages);
     memset(nm, 0, sizeof *nm);
 }
 
-/* The twin agrees with the GFOSUB result: each of force and torque to 1e-9
- * of its size (rounding of the two angle measures allowed for). */
-static int twin_agrees(const double gfo[6], const double twin[6], double *worst)
-{
-    *worst = 0.0;
-    for (int g = 0; g < 6; g += 3) {
-        double size = 0.0;
-        for (int i = g; i < g + 3; ++i)
-            size = fmax(size, fmax(fabs(gfo[i]), fabs(twin[i])));
-        for (int i = g; i < g + 3; ++i)
-            if (size > 0.0)
-                *worst = fmax(*worst, fabs(gfo[i] - twin[i]) / size);
-    }
-    return *worst <= TWIN_TOLERANCE;
-}
-
-/* Each element's outputs at the dynamics' state (set to y), and the partials
- * of those that have them. */
-static int outputs_and_partials(hx_newton_matrix *nm)
+/* The right-hand side at (t, y) as the dynamics keeps it: the integrator's
+ * own last evaluation when it was there (CVODE builds J at the state whose f
+ * it has just taken), else one more. */
+static int evaluated_at(hx_newton_matrix *nm, double t, const double *y)
 {
     hx_dynamics *d = nm->d;
-    const hx_state *s = &d->state;
-    for (int k = 0; k < nm->nf; ++k) {
-        hx_binding *b = d->force_binding[k];
-        double *out = nm->outputs + 6 * k, *dfd = nm->partials + 72 * k, *dfv = dfd + 36;
-        double disp[6], velo[6];
-        hx_force_deformation(s, k, disp, velo);
-        if (nm->source[k] == HX_PARTIALS_FIESUB) {
-            hx_call_fiesub(b, s, disp, velo, 0, 0, out, dfd, dfv, NULL);
-            nm->partial_calls++;
-        } else {
-            hx_call_gfosub(b, s, 0, 0, out, NULL);
-            nm->partial_calls++;
-        }
-        if (hx_dynamics_check_stop(d, b) != 0)
-            return -1;
-        if (!hx_all_finite(out, 6))
-            return hx_dynamics_fail(d, "%s %d returned a non-finite force at t = %g", b->element,
-                                    b->id, s->time);
-        if (nm->source[k] != HX_PARTIALS_TWIN)
-            continue;
-        double field[6], worst = 0.0;
-        hx_call_twin(b, s, disp, velo, field, dfd, dfv, &nm->twin_messages);
-        nm->partial_calls++;
-        const int refused = hx_messages_stopped(&nm->twin_messages);
-        const int finite = hx_all_finite(dfd, 72);
-        if (refused || !finite || !twin_agrees(out, field, &worst)) {
-            /* for good: a twin that disagrees once is not the element's */
-            nm->source[k] = HX_PARTIALS_DIFFERENCES;
-            mark_body(nm, k, d->m->forces[k].ref_marker);
-            if (refused)
-                snprintf(nm->why + k * HX_NEWTON_WHY, HX_NEWTON_WHY, "its twin %s refused the"
-                         " list: %.80s", b->twin_name, nm->twin_messages.stop_message);
-            else if (!finite)
-                snprintf(nm->why + k * HX_NEWTON_WHY, HX_NEWTON_WHY, "its twin %s returned"
-                         " non-finite partials at t = %g", b->twin_name, s->time);
-            else
-                snprintf(nm->why + k * HX_NEWTON_WHY, HX_NEWTON_WHY, "its twin %s differs from"
-                         " it by %.2g (relative) at t = %g", b->twin_name, worst, s->time);
-            hx_messages_reset(&nm->twin_messages);
-        }
-    }
-    return 0;
-}
-
-static double angle_difference(double a, double b)
-{
-    double x = a - b;
-    if (x > M_PI)
-        x -= 2.0 * M_PI;
-    else if (x < -M_PI)
-        x += 2.0 * M_PI;
-    return x;
-}
-
-/* What column c moves of each element it touches, at y + sign h e_c: the
- * deformation and rates (12 values) or, for elements differenced alone, their
- * outputs (GFOSUB with dflag set). */
-static int perturbed(hx_newton_matrix *nm, double t, int c, double h, double *into)
-{
-    hx_dynamics *d = nm->d;
-    const int body = nm->column_body[c], nb = d->m->nbodies;
-    const double keep = nm->y[c];
-    nm->y[c] = keep + h;
-    hx_dynamics_set_state(d, t, nm->y);
-    nm->y[c] = keep;
-    for (int k = 0; k < nm->nf; ++k) {
-        if (!nm->touches[k * nb + body])
-            continue;
-        double *v = into + 12 * k;
-        if (nm->source[k] != HX_PARTIALS_DIFFERENCES) {
-            hx_force_deformation(&d->state, k, v, v + 6);
-            continue;
-        }
-        hx_binding *b = d->force_binding[k];
-        hx_call_gfosub(b, &d->state, 1, 0, v, NULL);
-        nm->partial_calls++;
-        if (hx_dynamics_check_stop(d, b) != 0)
-            return -1;
-        if (!hx_all_finite(v, 6))
-            return hx_dynamics_fail(d, "%s %d returned a non-finite force at t = %g", b->element,
-                                    b->id, t);
-    }
-    return 0;
-}
-
-/* dOut_k/dy column by column (positions and velocities). */
-static int output_derivatives(hx_newton_matrix *nm, double t)
-{
-    const int m = nm->m, nb = nm->d->m->nbodies;
-    memset(nm->dout, 0, sizeof(double) * 6 * (size_t)nm->nf * (size_t)m);
-    for (int c = 0; c < m; ++c) {
-        const int body = nm->column_body[c];
-        int any = 0;
-        for (int k = 0; k < nm->nf && !any; ++k)
-            any = nm->touches[k * nb + body];
-        if (!any)
-            continue;
-        const double h = column_step(nm->y, c);
-        if (perturbed(nm, t, c, h, nm->plus) != 0 || perturbed(nm, t, c, -h, nm->minus) != 0)
-            return -1;
-        for (int k = 0; k < nm->nf; ++k) {
-            if (!nm->touches[k * nb + body])
-                continue;
-            const double *p = nm->plus + 12 * k, *q = nm->minus + 12 * k;
-            double *col = nm->dout + 6 * ((size_t)k * (size_t)m + (size_t)c);
-            if (nm->source[k] == HX_PARTIALS_DIFFERENCES) {
-                for (int i = 0; i < 6; ++i)
-                    col[i] = (p[i] - q[i]) / (2.0 * h);
-                continue;
-            }
-            double rate[12]; /* d(disp, velo)/dy_c */
-            for (int i = 0; i < 12; ++i)
-                rate[i] = (i >= 3 && i < 6 ? angle_difference(p[i], q[i]) : p[i] - q[i]) / (2.0 * h);
-            const double *dfd = nm->partials + 72 * k, *dfv = dfd + 36;
-            for (int i = 0; i < 6; ++i) {
-                double s = 0.0;
-                for (int j = 0; j < 6; ++j)
-                    s += dfd[i + 6 * j] * rate[j] + dfv[i + 6 * j] * rate[6 + j];
-                col[i] = s;
-            }
-        }
-    }
-    return 0;
-}
-
-static int frozen_rhs(hx_newton_matrix *nm, double t, const double *y, const double *outputs,
-                      double *f)
-{
-    nm->d->frozen_outputs = outputs;
-    const int status = hx_dynamics_rhs(nm->d, t, y, f);
-    nm->d->frozen_outputs = NULL;
-    nm->frozen_evaluations++;
-    return status;
-}
-
-int hx_newton_matrix_build(hx_newton_matrix *nm, double t, const double *y, double *J)
-{
-    hx_dynamics *d = nm->d;
-    const int n = nm->n, m = nm->m, nf = nm->nf;
-    memcpy(nm->y, y, sizeof(double) * (size_t)n);
-    hx_dynamics_set_state(d, t, y);
-    if (outputs_and_partials(nm) != 0 || output_derivatives(nm, t) != 0 ||
-        hx_state_jacobian_outputs(&nm->states, t, y, nm->outputs + 6 * nf, &nm->partial_calls) != 0)
-        return -1;
-    /* J_frozen, column by column; the work accumulators' columns are zero */
-    memset(J, 0, sizeof(double) * (size_t)n * (size_t)n);
-    for (int c = 0; c < m; ++c) {
-        const double h = column_step(y, c);
-        nm->y[c] = y[c] + h;
-        int status = frozen_rhs(nm, t, nm->y, nm->outputs, nm->fp);
-        nm->y[c] = y[c] - h;
-        status |= frozen_rhs(nm, t, nm->y, nm->outputs, nm->fm);
-        nm->y[c] = y[c];
-        if (status != 0)
-            return -1;
-        for (int r = 0; r < n; ++r)
-            J[r + (size_t)n * c] = (nm->fp[r] - nm->fm[r]) / (2.0 * h);
-    }
-    const int groups = nf + nm->ne; /* the force elements', then the state elements' */
-    if (groups == 0)
+    if (d->evaluated && d->evaluated_t == t &&
+        memcmp(d->evaluated_y, y, sizeof(double) * (size_t)nm->n) == 0)
         return 0;
-    /* B_k: the response to each unit output, less the response to none */
-    memset(nm->unit, 0, sizeof(double) * 6 * (size_t)groups);
-    if (frozen_rhs(nm, t, y, nm->unit, nm->fm) != 0)
+    nm->evaluations++;
+    return hx_dynamics_rhs(d, t, y, nm->f_plus);
+}
+
+int hx_newton_matrix_build(hx_newton_matrix *nm, double t, const double *y, double *values)
+{
+    hx_dynamics *d = nm->d;
+    if (evaluated_at(nm, t, y) != 0)
         return -1;
-    for (int k = 0; k < groups; ++k)
-        for (int j = 0; j < 6; ++j) {
-            nm->unit[6 * k + j] = 1.0;
-            const int status = frozen_rhs(nm, t, y, nm->unit, nm->fp);
-            nm->unit[6 * k + j] = 0.0;
-            if (status != 0)
-                return -1;
-            double *col = nm->response + (size_t)n * (6 * (size_t)k + (size_t)j);
-            for (int r = 0; r < n; ++r)
-                col[r] = nm->fp[r] - nm->fm[r];
-        }
-    /* J += B_k dOut_k/dy */
-    for (int k = 0; k < nf; ++k)
-        for (int c = 0; c < m; ++c) {
-            const double *dout = nm->dout + 6 * ((size_t)k * (size_t)m + (size_t)c);
-            for (int j = 0; j < 6; ++j) {
-                if (dout[j] == 0.0)
-                    continue;
-                const double *B = nm->response + (size_t)n * (6 * (size_t)k + (size_t)j);
-                double *col = J + (size_t)n * c;
-                for (int r = 0; r < n; ++r)
-                    col[r] += B[r] * dout[j];
-            }
-        }
-    hx_state_jacobian_add(&nm->states, nm->response + (size_t)n * 6 * (size_t)nf, J);
+    nm->values = values;
+    memset(values, 0, sizeof(double) * (size_t)nm->pattern.nnz);
+    memcpy(nm->y, y, sizeof(double) * (size_t)nm->n);
+    hx_state_copy(&nm->probe, &d->state);
+    hx_body_blocks(nm, y);
+    /* the element calls below may set the dynamics' state: the element
+     * blocks, which read it, come first */
+    if (hx_element_blocks(nm, t, y) != 0 || hx_load_blocks(nm, t, y) != 0 ||
+        hx_state_blocks(nm, t, y) != 0 || hx_coupler_blocks(nm, t, y) != 0)
+        return -1;
     return 0;
 }
 
@@ -346,5 +217,5 @@ void hx_newton_matrix_describe(const hx_newton_matrix *nm, char *text, size_t si
             len += snprintf(text + len, size - (size_t)len, "\n    %s %d by differences: %s",
                             nm->d->force_binding[k]->element, nm->d->force_binding[k]->id,
                             nm->why + k * HX_NEWTON_WHY);
-    hx_state_jacobian_describe(&nm->states, text, size);
+    hx_state_blocks_describe(nm, text, size);
 }

@@ -1,34 +1,116 @@
 /*
  * Variable-order (1 to 5), variable-step BDF through SUNDIALS CVODE, with
- * Newton iterations on a dense matrix: the Newton matrix I - gamma J from the
- * ode's jacobian (the elements' own partials, newton_matrix.c), or from
- * CVODE's difference quotients of the whole right-hand side. Constraints stay
+ * Newton iterations on the Newton matrix I - gamma J: J from the ode's
+ * jacobian (the elements' own partials), or by differences of the right-hand
+ * side (by column groups on the ode's sparsity, else CVODE's own); the
+ * linear systems by dense LU, or by sparse LU (KLU) on the sparsity. Constraints stay
  * as the explicit methods have them: couplers through their multipliers in
  * the right-hand side, and after each step CVODE's projection interface puts
  * the state back on phi = 0, dphi/dt = 0 and the quaternions on unit length.
  */
 #include <cvode/cvode.h>
 #include <cvode/cvode_proj.h>
+#include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <string.h>
+#include <stdlib.h>
 #include <sunlinsol/sunlinsol_dense.h>
+#include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_dense.h>
+#include <sunmatrix/sunmatrix_sparse.h>
 
+#include "base/clock.h"
 #include "base/finite.h"
+#include "sim/ode/column_groups.h"
 #include "sim/ode/sundials_common.h"
+
+/* Dense LU below this many states, KLU from it on. Measured on the bundled
+ * models and on chains of bodies (scripts/scaling.sh): dense is the faster
+ * below about a hundred states, where its O(n^3) is still small and KLU's
+ * bookkeeping is not. */
+#define HX_KLU_FROM 100
+
+/* CVODE's own rule for a difference increment (its dense difference-quotient
+ * Jacobian): the smallest increment in weighted norm */
+#define MIN_INCREMENT_FACTOR 1000.0
+
+typedef struct bdf_context {
+    hx_sundials s;              /* first: the shared callbacks take the context as it */
+    void *solver;
+    int sparse;                 /* the matrix is CVODE's sparse (KLU) one */
+    hx_column_groups groups;    /* differences on the sparsity */
+    double *values;             /* nnz: J in the sparsity's order (dense matrix) */
+    double *increment, *work;   /* n and 2n: the differences' */
+    long fd_evaluations;
+    double seconds;
+} bdf_context;
+
+static int counted_rhs(void *ctx, double t, const double *y, double *ydot)
+{
+    bdf_context *c = ctx;
+    c->fd_evaluations++;
+    return hx_integration_evaluate(c->s.r, t, y, ydot);
+}
+
+/* J by column groups, each column's increment by CVODE's rule. */
+static int grouped_jacobian(bdf_context *c, double t, const double *y, const double *fy,
+                            N_Vector weights, double *values)
+{
+    const hx_ode *o = c->s.r->ode;
+    const int n = o->n;
+    double step = 0.0;
+    CVodeGetErrWeights(c->solver, weights);
+    CVodeGetCurrentStep(c->solver, &step);
+    const double *w = NV_DATA_S(weights);
+    double norm = 0.0;
+    for (int i = 0; i < n; ++i)
+        norm += (fy[i] * w[i]) * (fy[i] * w[i]);
+    norm = sqrt(norm / n);
+    const double root = sqrt(DBL_EPSILON);
+    const double least = norm != 0.0 ? MIN_INCREMENT_FACTOR * fabs(step) * DBL_EPSILON * n * norm
+                                     : 1.0;
+    for (int i = 0; i < n; ++i)
+        c->increment[i] = fmax(root * fabs(y[i]), least / w[i]);
+    return hx_grouped_differences(&c->groups, o->sparsity, counted_rhs, c, t, y, fy,
+                                  c->increment, n - o->quadratures, values, c->work);
+}
 
 static int newton_jacobian(double t, N_Vector y, N_Vector fy, SUNMatrix J, void *user_data,
                            N_Vector tmp1, N_Vector tmp2, N_Vector tmp3)
 {
-    (void)fy, (void)tmp1, (void)tmp2, (void)tmp3;
-    hx_sundials *s = user_data;
-    const hx_ode *o = s->r->ode;
+    (void)tmp2, (void)tmp3;
+    bdf_context *c = user_data;
+    const hx_ode *o = c->s.r->ode;
+    const hx_sparsity *sp = o->sparsity;
     const double *state = NV_DATA_S(y);
     if (!hx_all_finite(state, o->n))
         return 1; /* recoverable: CVODE retries with a smaller step */
-    /* SUNDenseMatrix stores its n x n entries column by column, as J is built */
-    return o->jacobian(o->ctx, t, state, SM_DATA_D(J)) == 0 ? 0 : -1;
+    const double start = hx_seconds();
+    /* the sparse matrix takes the values in place; the dense one from them,
+     * or (no sparsity) column-major as its own n x n entries are stored */
+    double *values = c->sparse ? SM_DATA_S(J) : sp != NULL ? c->values : SM_DATA_D(J);
+    if (c->sparse) {
+        sunindextype *ptr = SM_INDEXPTRS_S(J), *ind = SM_INDEXVALS_S(J);
+        for (int k = 0; k <= sp->n; ++k)
+            ptr[k] = sp->colptr[k];
+        for (int k = 0; k < sp->nnz; ++k)
+            ind[k] = sp->rowind[k];
+    }
+    int status;
+    if (c->s.r->opt->jacobian == HX_JACOBIAN_ANALYTIC)
+        status = o->jacobian(o->ctx, t, state, NV_DATA_S(fy), values);
+    else
+        status = grouped_jacobian(c, t, state, NV_DATA_S(fy), tmp1, values);
+    if (status == 0 && !c->sparse && sp != NULL) {
+        double *dense = SM_DATA_D(J);
+        memset(dense, 0, sizeof(double) * (size_t)sp->n * (size_t)sp->n);
+        for (int col = 0; col < sp->n; ++col)
+            for (int k = sp->colptr[col]; k < sp->colptr[col + 1]; ++k)
+                dense[(size_t)col * (size_t)sp->n + (size_t)sp->rowind[k]] = values[k];
+    }
+    c->seconds += hx_seconds() - start;
+    return status == 0 ? 0 : -1;
 }
 
 static int projection(double t, N_Vector ycur, N_Vector corr, double eps, N_Vector err,
@@ -88,25 +170,57 @@ static void collect_stats(void *solver, hx_integrator_stats *st)
     st->last_step = last;
 }
 
+static int uses_klu(const hx_ode *o, hx_linear_solver choice)
+{
+    if (o->sparsity == NULL)
+        return 0;
+    return choice == HX_LINEAR_KLU || (choice == HX_LINEAR_AUTO && o->n >= HX_KLU_FROM);
+}
+
+static void close_context(bdf_context *c)
+{
+    hx_column_groups_free(&c->groups);
+    free(c->values);
+    free(c->increment);
+    hx_sundials_close(&c->s);
+}
+
 hx_status hx_integrate_bdf(hx_integration *r, double t0, double *y)
 {
     const hx_ode *o = r->ode;
     const hx_integrator_options *opt = r->opt;
-    hx_sundials s;
-    if (hx_sundials_open(&s, r, y) != 0)
+    const hx_sparsity *sp = o->sparsity;
+    bdf_context c;
+    memset(&c, 0, sizeof c);
+    if (hx_sundials_open(&c.s, r, y) != 0)
         return HX_INTEGRATION_FAILED;
-    void *solver = CVodeCreate(CV_BDF, s.context);
-    SUNMatrix A = SUNDenseMatrix(o->n, o->n, s.context);
-    SUNLinearSolver ls = A != NULL ? SUNLinSol_Dense(s.y, A, s.context) : NULL;
+    c.sparse = uses_klu(o, opt->linear_solver);
+    const int ours = sp != NULL && (opt->jacobian == HX_JACOBIAN_FD || o->jacobian != NULL);
+    const int grouped = sp != NULL && opt->jacobian == HX_JACOBIAN_FD;
+    if (sp != NULL) {
+        c.values = malloc(sizeof(double) * ((size_t)sp->nnz + 1));
+        c.increment = malloc(sizeof(double) * 3 * ((size_t)o->n + 1));
+        c.work = c.increment + o->n + 1;
+        if (c.values == NULL || c.increment == NULL ||
+            (grouped && hx_column_groups_build(&c.groups, sp) != 0)) {
+            close_context(&c);
+            return HX_INTEGRATION_FAILED;
+        }
+    }
+    void *solver = c.solver = CVodeCreate(CV_BDF, c.s.context);
+    SUNMatrix A = c.sparse ? SUNSparseMatrix(o->n, o->n, sp->nnz, CSC_MAT, c.s.context)
+                           : SUNDenseMatrix(o->n, o->n, c.s.context);
+    SUNLinearSolver ls = A == NULL ? NULL
+                         : c.sparse ? SUNLinSol_KLU(c.s.y, A, c.s.context)
+                                    : SUNLinSol_Dense(c.s.y, A, c.s.context);
     int ok = solver != NULL && ls != NULL;
-    ok = ok && CVodeInit(solver, hx_sundials_rhs, t0, s.y) == CV_SUCCESS;
-    ok = ok && CVodeSetErrHandlerFn(solver, hx_sundials_message, &s) == CV_SUCCESS;
-    ok = ok && CVodeSetUserData(solver, &s) == CV_SUCCESS;
+    ok = ok && CVodeInit(solver, hx_sundials_rhs, t0, c.s.y) == CV_SUCCESS;
+    ok = ok && CVodeSetErrHandlerFn(solver, hx_sundials_message, &c.s) == CV_SUCCESS;
+    ok = ok && CVodeSetUserData(solver, &c) == CV_SUCCESS;
     ok = ok && CVodeSStolerances(solver, opt->rtol, opt->atol) == CV_SUCCESS;
     ok = ok && CVodeSetLinearSolver(solver, ls, A) == CV_SUCCESS;
-    /* fd: NULL keeps CVODE's own difference quotients of the whole right-hand side */
-    ok = ok && CVodeSetJacFn(solver, opt->jacobian == HX_JACOBIAN_ANALYTIC && o->jacobian != NULL
-                                         ? newton_jacobian : NULL) == CV_SUCCESS;
+    /* NULL: CVODE's own difference quotients, column by column (no sparsity) */
+    ok = ok && CVodeSetJacFn(solver, ours ? newton_jacobian : NULL) == CV_SUCCESS;
     ok = ok && CVodeSetStopTime(solver, opt->t_end) == CV_SUCCESS;
     ok = ok && CVodeSetMaxNumSteps(solver, opt->max_steps > 0 ? opt->max_steps : LONG_MAX / 2) ==
                    CV_SUCCESS;
@@ -127,14 +241,21 @@ hx_status hx_integrate_bdf(hx_integration *r, double t0, double *y)
              CVodeSetProjErrEst(solver, SUNFALSE) == CV_SUCCESS;
     hx_status status = HX_INTEGRATION_FAILED;
     if (ok)
-        status = hx_sundials_drive(&s, solver, advance, status_of, steps_of);
+        status = hx_sundials_drive(&c.s, solver, advance, status_of, steps_of);
     if (solver != NULL)
         collect_stats(solver, r->stats);
+    hx_integrator_stats *st = r->stats;
+    st->linear_solver = c.sparse ? HX_LINEAR_KLU : HX_LINEAR_DENSE;
+    st->nonzeros = c.sparse ? sp->nnz : (long)o->n * o->n;
+    st->column_groups = c.groups.count;
+    st->jacobian_seconds = c.seconds;
+    if (ours)
+        st->fd_jacobian_evaluations = c.fd_evaluations;
     CVodeFree(&solver);
     if (ls != NULL)
         SUNLinSolFree(ls);
     if (A != NULL)
         SUNMatDestroy(A);
-    hx_sundials_close(&s);
+    close_context(&c);
     return status;
 }

@@ -57,6 +57,26 @@ int hx_jacobian_parse(const char *name, hx_jacobian *jacobian)
     return 0;
 }
 
+int hx_linear_solver_parse(const char *name, hx_linear_solver *solver)
+{
+    for (int k = HX_LINEAR_AUTO; k <= HX_LINEAR_KLU; ++k)
+        if (strcmp(name, hx_linear_solver_name((hx_linear_solver)k)) == 0) {
+            *solver = (hx_linear_solver)k;
+            return 0;
+        }
+    return -1;
+}
+
+const char *hx_linear_solver_name(hx_linear_solver solver)
+{
+    switch (solver) {
+    case HX_LINEAR_AUTO: return "auto";
+    case HX_LINEAR_DENSE: return "dense";
+    case HX_LINEAR_KLU: return "klu";
+    }
+    return "?";
+}
+
 const char *hx_status_text(hx_status status)
 {
     switch (status) {

@@ -14,22 +14,31 @@
 #ifndef HX_INTEGRATOR_H
 #define HX_INTEGRATOR_H
 
+#include "sim/ode/sparsity.h"
+
 typedef int hx_rhs_fn(void *ctx, double t, const double *y, double *ydot);
 /* Returns 0, 1 when it changed the state (DOPRI5 then re-evaluates f), or -1. */
 typedef int hx_project_fn(void *ctx, double t, double *y);
 typedef void hx_advance_fn(void *ctx, double *y, double h);
-/* The Newton matrix's J = df/dy at (t, y), column-major n x n; 0 or -1. */
-typedef int hx_jacobian_fn(void *ctx, double t, const double *y, double *J);
+/* The Newton matrix's J = df/dy at (t, y), given fy = f(t, y) as the
+ * integrator has it: its values in the order of the ode's sparsity (or,
+ * without one, column-major n x n); 0 or -1. */
+typedef int hx_jacobian_fn(void *ctx, double t, const double *y, const double *fy,
+                           double *values);
 /* Returns 0 to go on, non-zero to stop the integration. */
 typedef int hx_output_fn(void *ctx, double t, const double *y);
 
 typedef struct hx_ode {
     int n, nq, nu;
+    int quadratures;             /* the last ones of y: nothing depends on them; the
+                                  * Newton matrix leaves their rows out */
     hx_rhs_fn *rhs;
     hx_project_fn *project;
     hx_advance_fn *advance;
     void *ctx;
-    hx_jacobian_fn *jacobian; /* BDF's analytic Newton matrix (NULL: differences) */
+    hx_jacobian_fn *jacobian;    /* BDF's analytic Newton matrix (NULL: differences) */
+    const hx_sparsity *sparsity; /* J's nonzeros (NULL: dense): KLU, and differences by
+                                  * column groups */
 } hx_ode;
 
 typedef enum hx_method {
@@ -44,9 +53,15 @@ typedef enum hx_method {
 #define HX_METHOD_COUNT 6
 
 /* Where BDF's Newton matrix comes from: the ode's jacobian (the elements' own
- * partials), or CVODE's difference quotients of the whole right-hand side
- * (what a user gets without partials). */
+ * partials), or differences of the right-hand side (what a user gets without
+ * partials): by column groups on the ode's sparsity (column_groups.h), or
+ * CVODE's own column by column when there is none. */
 typedef enum hx_jacobian { HX_JACOBIAN_ANALYTIC, HX_JACOBIAN_FD } hx_jacobian;
+
+/* BDF's linear solver for the Newton systems: dense LU (SUNDIALS), or sparse
+ * LU (SuiteSparse KLU through SUNDIALS) on the ode's sparsity; auto takes KLU
+ * from HX_KLU_FROM states on (bdf.c says why). */
+typedef enum hx_linear_solver { HX_LINEAR_AUTO, HX_LINEAR_DENSE, HX_LINEAR_KLU } hx_linear_solver;
 
 typedef struct hx_integrator_options {
     hx_method method;
@@ -57,6 +72,7 @@ typedef struct hx_integrator_options {
     double min_step;        /* BDF: smallest step (0: none; = max_step: fixed steps) */
     int max_order;          /* BDF: highest order, 1 to 5 (0: 5) */
     hx_jacobian jacobian;   /* BDF's Newton matrix */
+    hx_linear_solver linear_solver;
     long max_steps;         /* 0: no limit */
     double output_interval; /* 0: output after every step */
     hx_output_fn *output;   /* may be NULL */
@@ -82,9 +98,12 @@ typedef struct hx_integrator_stats {
      * CVODE's difference-quotient Jacobians included) */
     long newton_iterations, jacobians;
     long error_test_failures, convergence_failures;
-    long fd_jacobian_evaluations; /* of evaluations, inside CVODE's difference quotients */
-    long frozen_evaluations;  /* harness-only evaluations of the analytic Newton matrix */
+    long fd_jacobian_evaluations; /* of evaluations, inside the difference quotients */
     long partial_calls;       /* element calls for the analytic Newton matrix's partials */
+    double jacobian_seconds;  /* wall time in building Newton matrices */
+    hx_linear_solver linear_solver; /* the one BDF used: dense or KLU */
+    long nonzeros;            /* of the Newton matrix (n * n when dense) */
+    int column_groups;        /* differences by column groups: their number */
     int last_order;
     char solver_message[256]; /* the SUNDIALS solver's last error, if any */
 } hx_integrator_stats;
@@ -99,5 +118,7 @@ const char *hx_status_text(hx_status status);
 /* Chooses its own steps (tolerances) rather than taking fixed ones. */
 int hx_method_adaptive(hx_method method);
 int hx_jacobian_parse(const char *name, hx_jacobian *jacobian);
+int hx_linear_solver_parse(const char *name, hx_linear_solver *solver);
+const char *hx_linear_solver_name(hx_linear_solver solver);
 
 #endif

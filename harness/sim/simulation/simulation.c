@@ -23,7 +23,7 @@ typedef struct run_context {
     const hx_simulation_options *opt;
     hx_simulation_result *result;
     double started, last_progress;
-    hx_newton_matrix *newton; /* BDF with analytic partials */
+    hx_newton_matrix *newton; /* BDF: its sparsity, and with analytic partials J */
 } run_context;
 
 static int rhs(void *ctx, double t, const double *y, double *ydot)
@@ -44,9 +44,10 @@ static void advance(void *ctx, double *y, double h)
     hx_bodies_advance_positions(((run_context *)ctx)->d, y, h);
 }
 
-static int jacobian(void *ctx, double t, const double *y, double *J)
+static int jacobian(void *ctx, double t, const double *y, const double *fy, double *values)
 {
-    return hx_newton_matrix_build(((run_context *)ctx)->newton, t, y, J);
+    (void)fy; /* the dynamics kept what it found at (t, y) */
+    return hx_newton_matrix_build(((run_context *)ctx)->newton, t, y, values);
 }
 
 static int output_work(run_context *rc, double t, const double *y);
@@ -93,6 +94,7 @@ int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
                 hx_simulation_result *result)
 {
     memset(result, 0, sizeof *result);
+    result->n = d->n;
     double *y = malloc(sizeof(double) * (size_t)d->n);
     if (y == NULL) {
         snprintf(result->message, sizeof result->message, "out of memory");
@@ -109,9 +111,9 @@ int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
     result->energy_scale = fmax(fabs(result->energy0.total), fabs(result->energy0.kinetic));
     run_context rc = {d, opt, result, hx_seconds(), hx_seconds(), NULL};
     hx_newton_matrix newton;
-    const int analytic = opt->integration.method == HX_METHOD_BDF &&
-                         opt->integration.jacobian == HX_JACOBIAN_ANALYTIC;
-    if (analytic) {
+    const int bdf = opt->integration.method == HX_METHOD_BDF;
+    const int analytic = bdf && opt->integration.jacobian == HX_JACOBIAN_ANALYTIC;
+    if (bdf) {
         hx_message msg;
         if (hx_newton_matrix_init(&newton, d, &msg) != 0) {
             snprintf(result->message, sizeof result->message, "%s", msg.text);
@@ -127,16 +129,20 @@ int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
     }
     if (opt->observer != NULL)
         opt->observer(opt->observer_ctx, d, 0.0, y);
-    hx_ode ode = {d->n, d->nq, d->nu, rhs, project, advance, &rc, analytic ? jacobian : NULL};
+    hx_ode ode = {d->n, d->nq, d->nu, 2 /* the work accumulators */, rhs, project, advance, &rc, analytic ? jacobian : NULL,
+                  bdf ? &newton.pattern : NULL};
     hx_integrator_options io = opt->integration;
     io.output = output;
     const double start = hx_seconds();
     result->status = hx_integrate(&ode, 0.0, y, &io, &result->stats);
     result->seconds = hx_seconds() - start;
-    if (analytic) {
-        result->stats.frozen_evaluations = newton.frozen_evaluations;
+    if (bdf) {
         result->stats.partial_calls = newton.partial_calls;
-        hx_newton_matrix_describe(&newton, result->newton_matrix, sizeof result->newton_matrix);
+        result->stats.evaluations += newton.evaluations;
+        result->newton_outside = newton.outside;
+        if (analytic)
+            hx_newton_matrix_describe(&newton, result->newton_matrix,
+                                      sizeof result->newton_matrix);
         hx_newton_matrix_free(&newton);
     }
     if (opt->progress && result->seconds >= 1.0)
@@ -167,12 +173,19 @@ static void bdf_summary(FILE *f, const hx_simulation_options *opt, const hx_simu
             st->newton_iterations, (double)st->newton_iterations / steps, st->jacobians,
             st->jacobians > 0 ? steps / (double)st->jacobians : 0.0, st->error_test_failures,
             st->convergence_failures);
+    fprintf(f, "  linear solver: %s (%s; %ld nonzeros of %d x %d); Newton matrices took %.3g s\n",
+            st->linear_solver == HX_LINEAR_KLU ? "KLU, sparse LU" : "dense LU",
+            opt->integration.linear_solver != HX_LINEAR_AUTO ? "as asked"
+            : st->linear_solver == HX_LINEAR_KLU ? "auto: a model this size"
+                                                 : "auto: a model this small",
+            st->nonzeros, r->n, r->n, st->jacobian_seconds);
     if (opt->integration.jacobian == HX_JACOBIAN_FD)
-        fprintf(f, "  Newton matrix by CVODE's differences of the whole right-hand side: %ld of the"
-                " %ld right-hand sides\n", st->fd_jacobian_evaluations, st->evaluations);
+        fprintf(f, "  Newton matrix by differences of the right-hand side in %d column groups: %ld"
+                " of the %ld right-hand sides\n", st->column_groups, st->fd_jacobian_evaluations,
+                st->evaluations);
     else
-        fprintf(f, "  %s\n  its cost: %ld frozen right-hand sides (harness only), %ld element"
-                " calls\n", r->newton_matrix, st->frozen_evaluations, st->partial_calls);
+        fprintf(f, "  %s\n  its cost: %ld element calls for partials\n", r->newton_matrix,
+                st->partial_calls);
 }
 
 void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_options *opt,

@@ -39,6 +39,8 @@ typedef struct hx_simulation_result {
     double dissipated;        /* energy the force elements took out by the end */
     double max_phi, max_phidot;
     char newton_matrix[1024]; /* BDF with analytic partials: where they came from */
+    long newton_outside;      /* entries the Newton matrix found outside its sparsity (0) */
+    int n;                    /* the state's size */
     char message[1024];
 } hx_simulation_result;
 

@@ -211,7 +211,7 @@ static void measure_point(hx_dynamics *d, const reference_grid *g, const hx_wp_o
     p->newton_iterations = result.stats.newton_iterations;
     p->jacobians = result.stats.jacobians;
     p->fd_evaluations = result.stats.fd_jacobian_evaluations;
-    p->frozen_evaluations = result.stats.frozen_evaluations;
+    p->jacobian_seconds = result.stats.jacobian_seconds;
     p->partial_calls = result.stats.partial_calls;
     p->end_error = ok ? obs.end_error : INFINITY;
     p->max_error = ok ? obs.max_error : INFINITY;
@@ -414,7 +414,7 @@ void hx_wp_print(FILE *f, const hx_wp_result *r)
             " state\n", r->restricted ? "slow outputs (the bodies named by --outputs)" : "states");
     fprintf(f, "  %-17s %-9s %9s %11s %10s %10s %10s %10s  %s\n", "method", "step/rtol", "steps",
             "evaluations", "run time s", "end error", "max error", "all states",
-            "Newton it./step, Jacobians (right-hand sides in them | frozen, element calls)");
+            "Newton it./step, Jacobians (right-hand sides in them | their time, element calls)");
     for (int k = 0; k < r->npoints; ++k) {
         const hx_wp_point *p = &r->point[k];
         fprintf(f, "  %-17s %-9.3g %9ld %11ld %10.3g %10.3g %10.3g %10.3g", hx_wp_series_name(p->series),
@@ -426,7 +426,7 @@ void hx_wp_print(FILE *f, const hx_wp_result *r)
             if (p->series == HX_WP_BDF_FD)
                 fprintf(f, " (%ld)", p->fd_evaluations);
             else
-                fprintf(f, " (%ld, %ld)", p->frozen_evaluations, p->partial_calls);
+                fprintf(f, " (%.2g s, %ld)", p->jacobian_seconds, p->partial_calls);
         }
         fprintf(f, "%s\n", p->status == HX_INTEGRATION_OK ? "" : "  (failed or unstable)");
     }
@@ -440,16 +440,16 @@ int hx_wp_write(const char *prefix, const char *title, const hx_wp_result *r)
     if (f == NULL)
         return -1;
     fprintf(f, "method,setting,steps,evaluations,seconds,end_error,max_error,status,all_error,"
-               "newton_iterations,jacobians,fd_evaluations,frozen_evaluations,partial_calls\n");
+               "newton_iterations,jacobians,fd_evaluations,jacobian_seconds,partial_calls\n");
     int present[HX_WP_SERIES] = {0};
     for (int k = 0; k < r->npoints; ++k) {
         const hx_wp_point *p = &r->point[k];
         present[p->series] = 1;
-        fprintf(f, "%s,%.6g,%ld,%ld,%.6g,%.6g,%.6g,%s,%.6g,%ld,%ld,%ld,%ld,%ld\n",
+        fprintf(f, "%s,%.6g,%ld,%ld,%.6g,%.6g,%.6g,%s,%.6g,%ld,%ld,%ld,%.6g,%ld\n",
                 hx_wp_series_name(p->series), p->setting, p->steps, p->evaluations, p->seconds,
                 p->end_error, p->max_error, p->status == HX_INTEGRATION_OK ? "ok" : "unstable",
                 p->all_error, p->newton_iterations, p->jacobians, p->fd_evaluations,
-                p->frozen_evaluations, p->partial_calls);
+                p->jacobian_seconds, p->partial_calls);
     }
     fclose(f);
     /* one series per method: end-point error (solid) and largest error (dashed) */

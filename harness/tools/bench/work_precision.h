@@ -56,7 +56,8 @@ typedef struct hx_wp_point {
     double seconds;
     long evaluations, steps;
     /* BDF: Newton iterations, Jacobians, what they cost */
-    long newton_iterations, jacobians, fd_evaluations, frozen_evaluations, partial_calls;
+    long newton_iterations, jacobians, fd_evaluations, partial_calls;
+    double jacobian_seconds;
     hx_status status;
 } hx_wp_point;
 

@@ -64,8 +64,9 @@ static int rates(void *ctx, double t, const double *x, double *xdot)
 }
 
 /* d xdot/dx for BDF's Newton matrix: YFOXX, or central differences. */
-static int rate_jacobian(void *ctx, double t, const double *x, double *J)
+static int rate_jacobian(void *ctx, double t, const double *x, const double *fx, double *J)
 {
+    (void)fx;
     state_rig *sr = ctx;
     const int ns = sr->f->nstate;
     if (sr->b->state_partial[0] != NULL) {
@@ -125,7 +126,7 @@ static int row(void *ctx, double t, const double *x)
 static int integrate_states(state_rig *sr, double *x)
 {
     hx_rig *r = sr->r;
-    hx_ode ode = {sr->f->nstate, 0, 0, rates, NULL, NULL, sr, rate_jacobian};
+    hx_ode ode = {sr->f->nstate, 0, 0, 0, rates, NULL, NULL, sr, rate_jacobian, NULL};
     hx_integrator_options opt;
     hx_integrator_defaults(&opt);
     opt.method = HX_METHOD_BDF;

@@ -1,0 +1,62 @@
+/*
+ * The parts of the Newton matrix's assembly (newton_matrix.h), for its own
+ * files only: the blocks' builders and the one way they add into J.
+ */
+#ifndef HX_SIM_NEWTON_NEWTON_PARTS_H
+#define HX_SIM_NEWTON_NEWTON_PARTS_H
+
+#include "sim/newton/body_motion.h"
+#include "sim/newton/newton_matrix.h"
+
+/* J[row0 .. row0 + count - 1, col] += v (count rows of one body or element). */
+void hx_newton_add(hx_newton_matrix *nm, int row0, int count, int col, const double *v);
+
+/* The y columns of body b (positions, then velocities); returns their count
+ * (0 on ground, 2 jointed, 13 free). */
+int hx_newton_body_columns(const hx_dynamics *d, int b, int columns[13]);
+
+/* A change of the loads on body b (dF, and dT about its centre, world axes)
+ * per unit of column col: into the rows of b's accelerations. */
+void hx_newton_body_load(hx_newton_matrix *nm, int b, int col, const double dF[3],
+                         const double dT[3]);
+
+/* The probe state: body b moved to its frame at y (its tracked markers with
+ * it), and back to the state of the build. */
+void hx_newton_probe_move(hx_newton_matrix *nm, int b, const double *y);
+void hx_newton_probe_restore(hx_newton_matrix *nm, int b);
+
+/* The central-difference step of column c. */
+double hx_newton_step(const double *y, int c);
+
+/* A force that outputs (6, in axes R_A turning with body ba) put on I's body
+ * bi at I's point and, reversed, on bj: the change that column col (of body
+ * b, motion mo; b = -1 for none) and a change dout of the outputs make, into
+ * J. F, T: the force and couple at the build's state, world axes. */
+typedef struct hx_applied_force {
+    int bi, bj, ba;
+    const hx_frame *I;     /* the application point's marker */
+    const double *R_A;     /* the outputs' axes */
+    double F[3], T[3];
+} hx_applied_force;
+void hx_newton_applied_force(hx_newton_matrix *nm, const hx_applied_force *a, int col, int b,
+                             const hx_motion *mo, const double dout[6]);
+
+/* The blocks: 0, or -1 (d->message). */
+void hx_body_blocks(hx_newton_matrix *nm, const double *y);
+int hx_element_blocks_init(hx_newton_matrix *nm, hx_message *msg);
+int hx_element_blocks(hx_newton_matrix *nm, double t, const double *y);
+int hx_load_blocks(hx_newton_matrix *nm, double t, const double *y);
+int hx_state_blocks_init(hx_newton_matrix *nm, hx_message *msg);
+void hx_state_blocks_free(hx_newton_matrix *nm);
+int hx_state_blocks(hx_newton_matrix *nm, double t, const double *y);
+void hx_state_blocks_describe(const hx_newton_matrix *nm, char *text, size_t size);
+int hx_coupler_blocks(hx_newton_matrix *nm, double t, const double *y);
+
+/* The pattern from the model's structure (pattern.c); 0 or -1. */
+int hx_newton_pattern(hx_newton_matrix *nm);
+
+/* The bodies (non-ground, distinct) Force_StateEqn k measures its inputs on;
+ * returns their count, at most max. */
+int hx_state_input_bodies(const hx_dynamics *d, int k, int *bodies, int max);
+
+#endif

@@ -1,0 +1,165 @@
+/*
+ * Where the Newton matrix can be nonzero (newton_matrix.h), from the model's
+ * structure: a body's rows depend on its own columns and on those of every
+ * body an element, a load or a Force_StateEqn joins it to (and on that
+ * element's states); a Force_StateEqn's rows on its states and on the bodies
+ * its inputs measure; the coupled velocities' rows on everything any of
+ * them depends on (the couplers mix them); the work accumulators' rows on
+ * nothing (newton_matrix.h). The diagonal is always in.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim/dynamics/state_elements.h"
+#include "sim/newton/newton_parts.h"
+
+typedef struct pairs {
+    int *rows, *cols;
+    long count, room;
+    int failed;
+} pairs;
+
+static void add(pairs *p, int row, int col)
+{
+    if (p->count == p->room) {
+        const long room = p->room ? 2 * p->room : 1024;
+        int *r = realloc(p->rows, sizeof(int) * (size_t)room);
+        if (r != NULL)
+            p->rows = r;
+        int *c = realloc(p->cols, sizeof(int) * (size_t)room);
+        if (c != NULL)
+            p->cols = c;
+        if (r == NULL || c == NULL) {
+            p->failed = 1;
+            return;
+        }
+        p->room = room;
+    }
+    p->rows[p->count] = row;
+    p->cols[p->count++] = col;
+}
+
+/* The rows of body b's velocities (or all its rows) by the columns of body c. */
+static void body_by_body(pairs *p, const hx_dynamics *d, int b, int c, int all_rows)
+{
+    if (b < 0 || c < 0 || d->dof[b].kind == HX_DOF_GROUND)
+        return;
+    int rows[13], cols[13];
+    const int nr = hx_newton_body_columns(d, b, rows), nc = hx_newton_body_columns(d, c, cols);
+    const int first = all_rows ? 0 : nr - (d->dof[b].kind == HX_DOF_FREE ? 6 : 1);
+    for (int i = first; i < nr; ++i)
+        for (int j = 0; j < nc; ++j)
+            add(p, rows[i], cols[j]);
+}
+
+/* Every body of `rows` (velocities) by every body of `cols`. */
+static void bodies_by_bodies(pairs *p, const hx_dynamics *d, const int *rows, int nr,
+                             const int *cols, int nc)
+{
+    for (int i = 0; i < nr; ++i)
+        for (int j = 0; j < nc; ++j)
+            body_by_body(p, d, rows[i], cols[j], 0);
+}
+
+static int body_of(const hx_model *m, int marker)
+{
+    return marker >= 0 ? m->markers[marker].body : -1;
+}
+
+static void state_element(pairs *p, const hx_dynamics *d, int k)
+{
+    const hx_model *m = d->m;
+    const hx_state_eqn *f = &m->state_eqns[k];
+    const int x0 = d->stateful->offset[k], ns = f->nstate;
+    int measured[32];
+    const int nmeasured = hx_state_input_bodies(d, k, measured, 32);
+    const int out[2] = {body_of(m, f->i_marker), body_of(m, f->j_marker)};
+    int geometry[35];
+    memcpy(geometry, measured, sizeof(int) * (size_t)nmeasured);
+    geometry[nmeasured] = out[0];
+    geometry[nmeasured + 1] = out[1];
+    geometry[nmeasured + 2] = body_of(m, f->ref_marker);
+    for (int i = 0; i < ns; ++i) {
+        for (int j = 0; j < ns; ++j)
+            add(p, x0 + i, x0 + j);
+        for (int l = 0; l < nmeasured; ++l) {
+            int cols[13];
+            const int nc = hx_newton_body_columns(d, measured[l], cols);
+            for (int j = 0; j < nc; ++j)
+                add(p, x0 + i, cols[j]);
+        }
+    }
+    bodies_by_bodies(p, d, out, 2, geometry, nmeasured + 3);
+    for (int s = 0; s < 2; ++s) {
+        if (out[s] < 0 || d->dof[out[s]].kind == HX_DOF_GROUND)
+            continue;
+        int rows[13];
+        const int nr = hx_newton_body_columns(d, out[s], rows);
+        const int first = nr - (d->dof[out[s]].kind == HX_DOF_FREE ? 6 : 1);
+        for (int i = first; i < nr; ++i)
+            for (int j = 0; j < ns; ++j)
+                add(p, rows[i], x0 + j);
+    }
+}
+
+/* The coupled velocities' rows: each on every column any of them has. */
+static void coupled_rows(pairs *p, const hx_newton_matrix *nm)
+{
+    const hx_dynamics *d = nm->d;
+    if (nm->ncoupled == 0)
+        return;
+    unsigned char *is_row = calloc((size_t)nm->n, 1), *is_col = calloc((size_t)nm->n, 1);
+    if (is_row == NULL || is_col == NULL) {
+        free(is_row), free(is_col);
+        p->failed = 1;
+        return;
+    }
+    for (int i = 0; i < nm->ncoupled; ++i)
+        is_row[d->nq + nm->coupled[i]] = 1;
+    const long before = p->count;
+    for (long k = 0; k < before; ++k)
+        if (is_row[p->rows[k]])
+            is_col[p->cols[k]] = 1;
+    for (int i = 0; i < nm->ncoupled; ++i)
+        is_col[d->nq + nm->coupled[i]] = 1;
+    for (int b = 0; b < d->m->nbodies; ++b) /* the coupled joints' coordinates */
+        for (int i = 0; i < nm->ncoupled; ++i)
+            if (d->dof[b].kind != HX_DOF_FREE && d->dof[b].kind != HX_DOF_GROUND &&
+                d->dof[b].u == nm->coupled[i])
+                is_col[d->dof[b].q] = 1;
+    for (int c = 0; c < nm->n; ++c)
+        if (is_col[c])
+            for (int i = 0; i < nm->ncoupled; ++i)
+                add(p, d->nq + nm->coupled[i], c);
+    free(is_row), free(is_col);
+}
+
+int hx_newton_pattern(hx_newton_matrix *nm)
+{
+    const hx_dynamics *d = nm->d;
+    const hx_model *m = d->m;
+    pairs p = {0};
+    for (int b = 0; b < m->nbodies; ++b)
+        body_by_body(&p, d, b, b, 1);
+    for (int k = 0; k < m->nforces; ++k) {
+        const hx_force *f = &m->forces[k];
+        const int axes = f->interface == HX_FORCE_GFOSUB ? f->ref_marker : f->j_marker;
+        const int rows[2] = {body_of(m, f->i_marker), body_of(m, f->j_marker)};
+        const int cols[3] = {rows[0], rows[1], body_of(m, axes)};
+        bodies_by_bodies(&p, d, rows, 2, cols, 3);
+    }
+    for (int k = 0; k < m->nloads; ++k) {
+        const hx_load *l = &m->loads[k];
+        const int other = l->kind == HX_LOAD_VECTOR ? l->ref_marker : l->j_marker;
+        const int bodies[2] = {body_of(m, l->i_marker), body_of(m, other)};
+        const int reacted = l->kind != HX_LOAD_VECTOR && !l->action_only;
+        bodies_by_bodies(&p, d, bodies, reacted ? 2 : 1, bodies, 2);
+    }
+    for (int k = 0; k < m->nstate_eqns; ++k)
+        state_element(&p, d, k);
+    coupled_rows(&p, nm);
+    int status = p.failed ? -1 : hx_sparsity_from_pairs(&nm->pattern, nm->n, p.rows, p.cols, p.count);
+    free(p.rows);
+    free(p.cols);
+    return status;
+}
