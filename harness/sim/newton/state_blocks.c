@@ -34,7 +34,6 @@ struct hx_state_blocks {
     unsigned char exported[4];    /* the library's partial routine r was used */
     unsigned char differenced[4]; /* routine r was differenced for some element */
 };
-typedef struct hx_state_blocks state_blocks;
 
 int hx_state_input_bodies(const hx_dynamics *d, int k, int *bodies, int max)
 {
@@ -61,7 +60,7 @@ int hx_state_input_bodies(const hx_dynamics *d, int k, int *bodies, int max)
 int hx_state_blocks_init(hx_newton_matrix *nm, hx_message *msg)
 {
     const hx_model *m = nm->d->m;
-    state_blocks *sb = nm->states = calloc(1, sizeof *sb);
+    struct hx_state_blocks *sb = nm->states = calloc(1, sizeof *sb);
     if (sb == NULL)
         return hx_fail(msg, "out of memory");
     sb->block = calloc((size_t)m->nstate_eqns + 1, sizeof *sb->block);
@@ -88,7 +87,7 @@ int hx_state_blocks_init(hx_newton_matrix *nm, hx_message *msg)
 
 void hx_state_blocks_free(hx_newton_matrix *nm)
 {
-    state_blocks *sb = nm->states;
+    struct hx_state_blocks *sb = nm->states;
     if (sb == NULL)
         return;
     free(sb->block);
@@ -103,7 +102,7 @@ void hx_state_blocks_free(hx_newton_matrix *nm)
 static int library_partials(hx_newton_matrix *nm, int k, double *blocks[4], int which[4])
 {
     hx_dynamics *d = nm->d;
-    state_blocks *sb = nm->states;
+    struct hx_state_blocks *sb = nm->states;
     const hx_state_eqn *f = &d->m->state_eqns[k];
     hx_binding *b = d->stateful->binding[k];
     const int size[4] = {f->nstate * f->nstate, f->nstate * f->ninput, 6 * f->nstate,
@@ -141,7 +140,7 @@ static int differenced_partials(hx_newton_matrix *nm, int k, double *blocks[4],
                                 const int which[4])
 {
     hx_dynamics *d = nm->d;
-    state_blocks *sb = nm->states;
+    struct hx_state_blocks *sb = nm->states;
     const hx_state_eqn *f = &d->m->state_eqns[k];
     const int ns = f->nstate, ni = f->ninput;
     for (int group = 0; group < 2; ++group) {
@@ -172,7 +171,7 @@ static int differenced_partials(hx_newton_matrix *nm, int k, double *blocks[4],
 /* dU/dy along column c of body b: differences of the harness's measures. */
 static void input_slope(hx_newton_matrix *nm, int k, int b, int c)
 {
-    state_blocks *sb = nm->states;
+    struct hx_state_blocks *sb = nm->states;
     const hx_model *m = nm->d->m;
     const hx_state_eqn *f = &m->state_eqns[k];
     const double keep = nm->y[c], h = hx_newton_step(nm->y, c);
@@ -212,7 +211,7 @@ static void through(const double *Fb, const double *Gb, int ns, int nv, const do
 static int element_block(hx_newton_matrix *nm, int k, const double *y)
 {
     hx_dynamics *d = nm->d;
-    state_blocks *sb = nm->states;
+    struct hx_state_blocks *sb = nm->states;
     const hx_model *m = d->m;
     const hx_state_eqn *f = &m->state_eqns[k];
     const hx_state *s = &d->state;
@@ -289,7 +288,7 @@ int hx_state_blocks(hx_newton_matrix *nm, double t, const double *y)
 
 void hx_state_blocks_describe(const hx_newton_matrix *nm, char *text, size_t size)
 {
-    const state_blocks *sb = nm->states;
+    const struct hx_state_blocks *sb = nm->states;
     if (nm->d->m->nstate_eqns == 0)
         return;
     size_t len = strlen(text);

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 
 #include "base/clock.h"
 #include "sim/dynamics/bodies.h"
@@ -200,6 +201,9 @@ void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_op
             " output times\n", r->seconds, stepping,
             r->stats.evaluations ? 1e6 * stepping / (double)r->stats.evaluations : 0.0,
             r->output_seconds, r->outputs);
+    struct rusage usage;
+    if (getrusage(RUSAGE_SELF, &usage) == 0)
+        fprintf(f, "  peak memory %.1f MB (the whole process)\n", (double)usage.ru_maxrss / 1024.0);
     if (d->m->ncouplers > 0)
         fprintf(f, "  largest constraint residual |phi| %.3g, |dphi/dt| %.3g\n", r->max_phi,
                 r->max_phidot);
