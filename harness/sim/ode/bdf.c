@@ -25,11 +25,12 @@
 #include "sim/ode/column_groups.h"
 #include "sim/ode/sundials_common.h"
 
-/* Dense LU below this many states, KLU from it on. Measured on the bundled
- * models and on chains of bodies (scripts/scaling.sh): dense is the faster
- * below about a hundred states, where its O(n^3) is still small and KLU's
- * bookkeeping is not. */
-#define HX_KLU_FROM 100
+/* Dense LU below this many states, KLU from it on. Measured (median of three
+ * BDF runs, rtol 1e-5): KLU is already faster at 41 states (stiff_powertrain
+ * 0.015 s against 0.027 s) and 28 (a chain of 2 bodies, 0.020 s against
+ * 0.036 s); on one body (15 states) the two are level (bench_bushing 0.023 s
+ * against 0.024 s): dense stays for single bodies. */
+#define HX_KLU_FROM 16
 
 /* CVODE's own rule for a difference increment (its dense difference-quotient
  * Jacobian): the smallest increment in weighted norm */
