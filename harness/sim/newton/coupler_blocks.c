@@ -6,7 +6,6 @@
  * the free accelerations held, by central differences on the coupled
  * joints' own columns (COUSUB, COUXX and COUXX2 are called there).
  */
-#include <stdlib.h>
 #include <string.h>
 
 #include "sim/dynamics/constraints.h"
@@ -58,16 +57,10 @@ int hx_coupler_blocks(hx_newton_matrix *nm, double t, const double *y)
     if (k == 0)
         return 0;
     double *v = nm->coupler_work, *w = v + k;
-    int *at = malloc(sizeof(int) * (size_t)k);
-    if (at == NULL)
-        return hx_dynamics_fail(d, "out of memory");
-    if (hx_constraints_projector(d, t, y, nm->coupled, k, w + k, nm->projector) != 0) {
-        free(at);
+    if (hx_constraints_projector(d, t, y, nm->coupled, k, w + k, nm->projector) != 0)
         return -1;
-    }
     for (int c = 0; c < nm->n; ++c)
-        project_column(nm, c, v, w, at);
-    free(at);
+        project_column(nm, c, v, w, nm->coupled_at);
     /* the stage's own dependence on the coupled joints' coordinates and rates */
     double *accel = nm->f_plus, *plus = nm->f_minus, *minus = plus + k;
     for (int b = 0; b < d->m->nbodies; ++b) {

@@ -146,7 +146,8 @@ int hx_newton_matrix_init(hx_newton_matrix *nm, hx_dynamics *d, hx_message *msg)
         const size_t k = (size_t)nm->ncoupled;
         nm->projector = calloc(k * k + 2 * k + (size_t)nc * ((size_t)nc + 1) + 1, sizeof(double));
         nm->coupler_work = nm->projector + k * k;
-        ok = nm->projector != NULL;
+        nm->coupled_at = calloc(k + 1, sizeof(int));
+        ok = nm->projector != NULL && nm->coupled_at != NULL;
     }
     if (!ok || hx_element_blocks_init(nm, msg) != 0 || hx_state_blocks_init(nm, msg) != 0 ||
         hx_newton_pattern(nm) != 0) {
@@ -167,6 +168,7 @@ void hx_newton_matrix_free(hx_newton_matrix *nm)
     free(nm->body_marker_start);
     hx_state_blocks_free(nm);
     free(nm->coupled);
+    free(nm->coupled_at);
     free(nm->projector);
     free(nm->y);
     hx_messages_destroy(&nm->twin_messages);

@@ -60,6 +60,7 @@ typedef struct hx_newton_matrix {
     /* couplers (coupler_blocks.c) */
     int ncoupled;               /* coupled velocities */
     int *coupled;               /* their indices into u */
+    int *coupled_at;            /* scratch: where their rows sit in one column */
     double *projector, *coupler_work; /* P (ncoupled^2); gathered rows; the solve's */
     double *y, *f_plus, *f_minus;     /* scratch: n each */
     hx_messages twin_messages;  /* the twins' own messages, apart from the session's */
