@@ -263,6 +263,8 @@ static void state_block_errors_name_the_block(void **state)
          {"Q0 = 2", "[RUBBER_DAMPING_FX]", "set it to 1"}},
         {"[RUBBER_DAMPING_FX]\nNPRELOADS = 1\n(PRELOAD_1)\nR = 0\nK0 = 1\nC0 = 1\n",
          {"line 16", "[RUBBER_DAMPING_FX]", "R (or RMIN) > 0"}},
+        {"[RUBBER_DAMPING_FX]\nNPRELOADS = 1\n(PRELOAD_1)\nR = -5\nK0 = 1\nC0 = 1\n",
+         {"[RUBBER_DAMPING_FX]", "got R -5,", "RMIN 0"}},
         {"[RUBBER_DAMPING_FX]\nNPRELOADS = 1\n(PRELOAD_1)\nPRELOAD = 100\nR = 3\nK0 = 1\nC0 = 1\n",
          {"PRELOAD = 100", "multiple-preload", "set"}},
     };

@@ -107,27 +107,29 @@ static void the_partial_routines_are_the_jacobian(void **state)
     (void)state;
     entries e;
     open_entries(&e);
-    int id = 3, npar = 2, flag = 0, nstate = 4, ninput = 12, noutpt = 6; /* bristles, x mount */
-    double par[2] = {1, 2}, t = 0.0, x[4] = {0.001, -0.002, 0.0015, 0.01};
-    double xdot[4], y[6], m[4][6 * 12];
+    /* bristles, the x mount, the z mount's node (s, sdot): inertial in series with friction */
+    enum { NS = 6 };
+    int id = 3, npar = 2, flag = 0, nstate = NS, ninput = 12, noutpt = 6;
+    double par[2] = {1, 2}, t = 0.0, x[NS] = {0.001, -0.002, 0.0015, 0.01, 0.002, -0.3};
+    double xdot[NS], y[6], m[4][NS * (NS + 12)];
     e.yfosub(&id, &t, par, &npar, &flag, &flag, &nstate, x, &ninput, (double *)u0, &noutpt, xdot, y);
     assert_int_equal(e.host.messages.errors, 0);
     for (int k = 0; k < 4; ++k)
         e.partial[k](&id, &t, par, &npar, &flag, &nstate, x, &ninput, (double *)u0, &noutpt, m[k]);
     double worst = 0.0;
-    for (int j = 0; j < 4 + 12; ++j) {
-        double xp[4], xm[4], up[12], um[12], dp[4], dm[4], yp[6], ym[6];
+    for (int j = 0; j < NS + 12; ++j) {
+        double xp[NS], xm[NS], up[12], um[12], dp[NS], dm[NS], yp[6], ym[6];
         memcpy(xp, x, sizeof x), memcpy(xm, x, sizeof x);
         memcpy(up, u0, sizeof up), memcpy(um, u0, sizeof um);
-        double *a = j < 4 ? &xp[j] : &up[j - 4], *b = j < 4 ? &xm[j] : &um[j - 4];
+        double *a = j < NS ? &xp[j] : &up[j - NS], *b = j < NS ? &xm[j] : &um[j - NS];
         const double h = 1e-6 * fmax(1e-3, fabs(*a));
         *a += h, *b -= h;
         e.yfosub(&id, &t, par, &npar, &flag, &flag, &nstate, xp, &ninput, up, &noutpt, dp, yp);
         e.yfosub(&id, &t, par, &npar, &flag, &flag, &nstate, xm, &ninput, um, &noutpt, dm, ym);
-        for (int i = 0; i < 10; ++i) {
-            const double fd = i < 4 ? (dp[i] - dm[i]) / (2 * h) : (yp[i - 4] - ym[i - 4]) / (2 * h);
-            const double exact = i < 4 ? (j < 4 ? m[0][i + 4 * j] : m[1][i + 4 * (j - 4)])
-                                       : (j < 4 ? m[2][i - 4 + 6 * j] : m[3][i - 4 + 6 * (j - 4)]);
+        for (int i = 0; i < NS + 6; ++i) {
+            const double fd = i < NS ? (dp[i] - dm[i]) / (2 * h) : (yp[i - NS] - ym[i - NS]) / (2 * h);
+            const double exact = i < NS ? (j < NS ? m[0][i + NS * j] : m[1][i + NS * (j - NS)])
+                                        : (j < NS ? m[2][i - NS + 6 * j] : m[3][i - NS + 6 * (j - NS)]);
             worst = fmax(worst, fabs(exact - fd) / fmax(1.0, fabs(fd)));
         }
     }
@@ -166,14 +168,15 @@ static void errors_name_what_was_expected(void **state)
     open_entries(&e);
     double with_states[2] = {1, 2}, limits_code[2] = {2, 1}, vector[2] = {1, 3};
     expect_refusal(&e, 10, with_states, 2, 3, 12, u0,
-                   (const char *const[]){"YFOSUB element 10", "4 states (friction 3, damped mounts 1",
+                   (const char *const[]){"YFOSUB element 10",
+                                         "6 states (friction 3, balanced mounts 1, inertial mounts 2 x 1",
                                          "nstate 3"});
-    expect_refusal(&e, 11, with_states, 2, 4, 6, u0,
+    expect_refusal(&e, 11, with_states, 2, 6, 6, u0,
                    (const char *const[]){"12 inputs (DX DY DZ AX AY AZ", "ninput 6", "U array"});
     double bad[12];
     memcpy(bad, u0, sizeof bad);
     bad[7] = NAN;
-    expect_refusal(&e, 12, with_states, 2, 4, 12, bad,
+    expect_refusal(&e, 12, with_states, 2, 6, 12, bad,
                    (const char *const[]){"YFOSUB element 12", "not finite", "outputs are zero"});
     expect_refusal(&e, 13, limits_code, 2, 0, 12, u0,
                    (const char *const[]){"element code 2", "only the bushing", "code 1"});

@@ -4,11 +4,14 @@
  * Two layers. The law: the force on I, the bristle rates and the rubber
  * filters' rates as functions of what the bushing sees (q, qdot), the
  * bristles z and the filters x, with its Jacobian. The mounts: q = d - s,
- * qdot = v - sdot, where sdot (damped mounts) and s (undamped ones) are the
- * unknowns w of the series balance G(w) = K s + C sdot + F = 0, solved by
+ * qdot = v - sdot, where sdot (balanced mounts) and s (following ones) are
+ * the unknowns w of the series balance G(w) = K s + C sdot + F = 0, solved by
  * Newton's method on the law's Jacobian; the partials with respect to the
  * inputs p = (d, v, x) follow from the implicit function theorem,
- * dw/dp = -(dG/dw)^-1 dG/dp.
+ * dw/dp = -(dG/dw)^-1 dG/dp. An inertial mount's s and sdot are states, so
+ * its sddot is explicit. The balance is monotone in w (dG/dw is the mounts'
+ * and the bushing's damping, or the springs', none of them friction's), so
+ * its root is one.
  */
 #include "usrsub/core/bushing_states.h"
 
@@ -27,19 +30,28 @@ typedef struct law_value {
     double J[MAX_ROWS * MAX_COLS]; /* [row + MAX_ROWS col] */
 } law_value;
 
+/* The direction's own force has a rate term: a damper a series spring caps. */
+static int rate_dependent(const usrsub_bushing_direction *d)
+{
+    return d->active && ((d->damped && d->c > 0.0) || (d->rubber && d->rubber_c > 0.0));
+}
+
 void usrsub_bushing_state_layout(const usrsub_bushing *b, usrsub_state_layout *l)
 {
     memset(l, 0, sizeof *l);
     l->friction = b->friction.active ? 3 : 0;
     for (int k = 0; k < 6; ++k) {
-        if (b->dir[k].mount && b->dir[k].mount_c > 0.0)
+        const usrsub_bushing_direction *d = &b->dir[k];
+        if (d->mount && k >= 3 && b->friction.active)
+            l->inertial[l->ninertial++] = k;
+        else if (d->mount && (d->mount_c > 0.0 || rate_dependent(d)))
             l->mount[l->nmount++] = k;
-        else if (b->dir[k].mount)
+        else if (d->mount)
             l->follow[l->nfollow++] = k;
-        if (b->dir[k].rubber)
+        if (d->rubber)
             l->rubber[l->nrubber++] = k;
     }
-    l->n = l->friction + l->nmount + l->nrubber;
+    l->n = l->friction + l->nmount + 2 * l->ninertial + l->nrubber;
 }
 
 static void law(const usrsub_bushing *b, const usrsub_mount_limits *limits,
@@ -130,8 +142,8 @@ static int solve(int n, double *A, double *B, int m)
     return 0;
 }
 
-/* The mounts' unknowns: w[a] is sdot of damped mount a, w[nmount + b] is s of
- * undamped mount b; dir[] their directions. */
+/* The mounts' unknowns: w[a] is sdot of balanced mount a, w[nmount + b] is s
+ * of following mount b; dir[] their directions; damped[] marks an sdot. */
 typedef struct mount_unknowns {
     int n, dir[6];
     int damped[6];
@@ -181,7 +193,7 @@ typedef struct balance_problem {
     const usrsub_mount_limits *limits;
     const usrsub_state_layout *l;
     mount_unknowns m;
-    const double *u, *z, *sm, *xr;
+    const double *u, *z, *sm, *si, *xr; /* si: the inertial mounts' (s, sdot) pairs */
 } balance_problem;
 
 static void balance_at(const balance_problem *bp, const double *w, balance_point *pt)
@@ -191,6 +203,8 @@ static void balance_at(const balance_problem *bp, const double *w, balance_point
     memset(pt->sd, 0, sizeof pt->sd);
     for (int a = 0; a < l->nmount; ++a)
         pt->s[l->mount[a]] = bp->sm[a];
+    for (int a = 0; a < l->ninertial; ++a)
+        pt->s[l->inertial[a]] = bp->si[2 * a], pt->sd[l->inertial[a]] = bp->si[2 * a + 1];
     for (int i = 0; i < bp->m.n; ++i)
         (bp->m.damped[i] ? pt->sd : pt->s)[bp->m.dir[i]] = w[i];
     for (int k = 0; k < 6; ++k)
@@ -254,8 +268,8 @@ static int newton(const balance_problem *bp, double *w, balance_point *pt)
 /* Unknown i alone, the others held: its own row rises with it without bound
  * (the mount's and the bushing's dampers for a rate, the springs for a
  * deflection), so a root is bracketed by stepping out and found by the
- * Illinois form of regula falsi. Friction can fold a row where Newton's
- * method from the wrong side stalls; this cannot. */
+ * Illinois form of regula falsi. A limit's contact can bend a row so that
+ * Newton's method from the far side stalls; this cannot. */
 static void one_unknown(const balance_problem *bp, int i, double *w, balance_point *pt)
 {
     double a = w[i], fa = pt->G[i];
@@ -320,8 +334,10 @@ int usrsub_bushing_states_eval(const usrsub_bushing *b, const usrsub_mount_limit
                                const double *x, double *xdot, double y[6],
                                usrsub_state_partials *partials, usrsub_message *msg)
 {
-    balance_problem bp = {b, limits, l, {0, {0}, {0}}, u, x, x + l->friction,
-                          x + l->friction + l->nmount};
+    const int inertial_at = l->friction + l->nmount;
+    const int rubber_at = inertial_at + 2 * l->ninertial;
+    balance_problem bp = {b, limits, l, {0, {0}, {0}}, u, x, x + l->friction, x + inertial_at,
+                          x + rubber_at};
     mount_unknowns *mu = &bp.m;
     for (int a = 0; a < l->nmount; ++a)
         mu->dir[mu->n] = l->mount[a], mu->damped[mu->n++] = 1;
@@ -330,7 +346,7 @@ int usrsub_bushing_states_eval(const usrsub_bushing *b, const usrsub_mount_limit
     const mount_unknowns *m = &bp.m;
     /* the balance K s + C sdot + F = 0 of each mount, to rounding, or to
      * within 1e-8 of its terms where rounding in the law (a mount far stiffer
-     * than its damping, friction's large terms) keeps it from falling further */
+     * than its damping, a limit's large terms) keeps it from falling further */
     double w[6] = {0, 0, 0, 0, 0, 0};
     balance_point pt;
     balance_at(&bp, w, &pt);
@@ -347,12 +363,26 @@ int usrsub_bushing_states_eval(const usrsub_bushing *b, const usrsub_mount_limit
     }
     const law_value *v = &pt.v;
     memcpy(y, v->F, sizeof v->F);
+    /* a balanced mount's direction carries the mount's force, equal to the
+     * law's at the root but free of the solve's rounding (with C = 0 it is
+     * -K s exactly, as its partials say) */
+    for (int a = 0; a < l->nmount; ++a) {
+        const usrsub_bushing_direction *d = &b->dir[l->mount[a]];
+        y[l->mount[a]] = -(d->mount_k * x[l->friction + a] + d->mount_c * w[a]);
+    }
     for (int i = 0; i < l->friction; ++i)
         xdot[i] = v->zdot[i];
     for (int a = 0; a < l->nmount; ++a)
         xdot[l->friction + a] = w[a];
+    for (int a = 0; a < l->ninertial; ++a) {
+        const usrsub_bushing_direction *d = &b->dir[l->inertial[a]];
+        const double s = x[inertial_at + 2 * a], sd = x[inertial_at + 2 * a + 1];
+        xdot[inertial_at + 2 * a] = sd;
+        xdot[inertial_at + 2 * a + 1] =
+            -(d->mount_k * s + d->mount_c * sd + v->F[l->inertial[a]]) / d->mount_inertia;
+    }
     for (int r = 0; r < l->nrubber; ++r)
-        xdot[l->friction + l->nmount + r] = v->xdot[r];
+        xdot[rubber_at + r] = v->xdot[r];
     if (partials == NULL)
         return 0;
 
@@ -368,10 +398,13 @@ int usrsub_bushing_states_eval(const usrsub_bushing *b, const usrsub_mount_limit
             col = COL_QD + p - 6;
         else if (p - 12 < l->friction)
             col = COL_Z + p - 12;
-        else if (p - 12 < l->friction + l->nmount)
+        else if (p - 12 < inertial_at)
             col = COL_Q + l->mount[p - 12 - l->friction], sign = -1.0;
+        else if (p - 12 < rubber_at) /* an inertial pair: s enters q, sdot qdot */
+            col = ((p - 12 - inertial_at) % 2 ? COL_QD : COL_Q) +
+                  l->inertial[(p - 12 - inertial_at) / 2], sign = -1.0;
         else
-            col = COL_X + p - 12 - l->friction - l->nmount;
+            col = COL_X + p - 12 - rubber_at;
         for (int r = 0; r < MAX_ROWS; ++r)
             Dp[r + MAX_ROWS * p] = sign * v->J[r + MAX_ROWS * col];
     }
@@ -414,8 +447,16 @@ int usrsub_bushing_states_eval(const usrsub_bushing *b, const usrsub_mount_limit
             col[i] = total[ROW_Z + i + MAX_ROWS * p];
         for (int a = 0; a < l->nmount; ++a)
             col[l->friction + a] = dwdp[a + m->n * p];
+        for (int a = 0; a < l->ninertial; ++a) {
+            const int k = l->inertial[a], at = 12 + inertial_at + 2 * a;
+            const usrsub_bushing_direction *d = &b->dir[k];
+            const double own = (p == at ? d->mount_k : 0.0) + (p == at + 1 ? d->mount_c : 0.0);
+            col[inertial_at + 2 * a] = p == at + 1;
+            col[inertial_at + 2 * a + 1] =
+                -(own + total[ROW_F + k + MAX_ROWS * p]) / d->mount_inertia;
+        }
         for (int r = 0; r < l->nrubber; ++r)
-            col[l->friction + l->nmount + r] = total[ROW_X + r + MAX_ROWS * p];
+            col[rubber_at + r] = total[ROW_X + r + MAX_ROWS * p];
         for (int i = 0; i < n; ++i) {
             if (p < 12)
                 partials->dxdot_du[i + n * p] = col[i];

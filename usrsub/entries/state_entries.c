@@ -54,11 +54,12 @@ static const force_model *checked_model(const state_call *c)
     if (nstate != l->n || ninput != INPUTS || noutpt != OUTPUTS ||
         (l->n > 0 && c->states == NULL) || c->input == NULL) {
         entry_report_error(c->routine, *c->id, "sizes", "the bushing has %d states (friction %d,"
-                           " damped mounts %d, rubber filters %d), 12 inputs (DX DY DZ AX AY AZ"
+                           " balanced mounts %d, inertial mounts 2 x %d, rubber filters %d), 12"
+                           " inputs (DX DY DZ AX AY AZ"
                            " of I relative to J, then VX VY VZ WX WY WZ) and 6 outputs; the host"
                            " passed nstate %d, ninput %d, noutpt %d%s: set num_state and the U"
                            " array to match; the outputs are zero", l->n, l->friction,
-                           l->nmount, l->nrubber, nstate, ninput, noutpt,
+                           l->nmount, l->ninertial, l->nrubber, nstate, ninput, noutpt,
                            c->input == NULL || (l->n > 0 && c->states == NULL)
                                ? " and no states or inputs" : "");
         return NULL;

@@ -379,6 +379,12 @@ static int read_friction(reader *r, usrsub_bushing *b, const usrsub_teim_block *
     return 0;
 }
 
+/* The node between a rotational mount and a bushing with friction carries an
+ * inertia (docs/interface.md §3.8): the mount's K over this frequency squared,
+ * in rad/s, so that the node's mode lies above the bands a vehicle model
+ * resolves, whatever the file's units. */
+#define MOUNT_NODE_FREQUENCY 1e4
+
 /* [MOUNT_STIFFNESS] { direction K C }: a series spring and damper per direction. */
 static int read_mount(reader *r, usrsub_bushing *b, const usrsub_teim_block *blk)
 {
@@ -413,6 +419,8 @@ static int read_mount(reader *r, usrsub_bushing *b, const usrsub_teim_block *blk
         b->dir[k].mount = 1;
         b->dir[k].mount_k = K * ff / fd;
         b->dir[k].mount_c = C * ff * r->units.time / fd;
+        const double node = MOUNT_NODE_FREQUENCY * r->units.model_time_seconds;
+        b->dir[k].mount_inertia = b->dir[k].mount_k / (node * node);
     }
     return 0;
 }
@@ -450,11 +458,12 @@ static int read_rubber(reader *r, usrsub_bushing_direction *dir, int k, int line
                            " weighs nothing without the (unpublished) multiple-preload rule; set"
                            " it to 0", r->f->path, usrsub_teim_find_entry(b, "PRELOAD")->line,
                            preload, b->name);
-    R = fmax(R, rmin);
-    if (!(R > 0.0) || dir->rubber_k < 0.0 || dir->rubber_c < 0.0)
+    /* the message gives the file's own R and RMIN, not their maximum */
+    if (!(fmax(R, rmin) > 0.0) || dir->rubber_k < 0.0 || dir->rubber_c < 0.0)
         return usrsub_fail(r->msg, "'%s' line %d: [%s] needs R (or RMIN) > 0, K0 >= 0 and C0 >= 0"
-                           " (got R %g, K0 %g, C0 %g)", r->f->path, b->line, b->name, R,
-                           dir->rubber_k, dir->rubber_c);
+                           " (got R %g, RMIN %g, K0 %g, C0 %g)", r->f->path, b->line, b->name,
+                           R, rmin, dir->rubber_k, dir->rubber_c);
+    R = fmax(R, rmin);
     const double ff = usrsub_direction_force_factor(&r->units, k);
     const double fd = usrsub_direction_displacement_factor(&r->units, k);
     dir->rubber = 1;

@@ -12,6 +12,7 @@ int usrsub_property_units(const usrsub_teim_file *f, const double *model_scales,
 {
     factors->length = factors->force = factors->mass = factors->time = factors->angle = 1.0;
     factors->converted = 0;
+    factors->model_time_seconds = model_scales != NULL ? model_scales[USRSUB_UNIT_TIME] : 1.0;
     *has_notice = 0;
     const usrsub_teim_block *units = usrsub_teim_find_block(f, "UNITS");
     static const struct {

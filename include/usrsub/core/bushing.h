@@ -52,6 +52,7 @@ typedef struct usrsub_bushing_direction {
     double rubber_r, rubber_k, rubber_c;
     int mount;
     double mount_k, mount_c;
+    double mount_inertia; /* of the node between mount and bushing: K / (1e4 rad/s)^2 */
 } usrsub_bushing_direction;
 
 typedef struct usrsub_bushing {

@@ -4,12 +4,21 @@
  *   u = (d, v): the deformation and its rate, I relative to J in J axes, as
  *       FIESUB receives them (x y z ax ay az, then the six rates);
  *   y = the force and torque on I in J axes;
- *   x = [ z (3, friction's bristles) | s_k (a mount with damping, per
- *       direction FX..TZ) | x_k (a rubber filter, per direction FX..TZ) ].
- * The bushing and the limits see q = d - s and qdot = v - sdot. A mount with
- * damping: K s + C sdot = -y (the series balance, solved for sdot); a mount
- * without damping has no state: K s = -y at the rate v (it follows the force
- * at once). The rubber filter: xdot_k = H qdot_k - R x_k, adding
+ *   x = [ z (3, friction's bristles) | s_k (a balanced mount, per direction
+ *       FX..TZ) | s_k, sdot_k (a mount with a node inertia, per direction
+ *       TX..TZ) | x_k (a rubber filter, per direction FX..TZ) ].
+ * The bushing and the limits see q = d - s and qdot = v - sdot. Three kinds
+ * of mount, chosen by the file (docs/interface.md §3.8):
+ *   balanced: K s + C sdot = -y, solved for sdot; a mount with damping C > 0,
+ *       or without (C = 0) in a direction whose own force depends on its rate
+ *       (constant or rubber damping): a series spring that caps the damper;
+ *   inertial: J sddot = -(K s + C sdot + y_k), a rotational mount in series
+ *       with friction, whose torque can fall with the slip rate faster than
+ *       the mount's damping rises, so that the balance would have several
+ *       roots; J = K / (1e4 rad/s)^2 makes the answer one;
+ *   following: K s = -y with C = 0 in a direction without rate terms; no
+ *       state (s follows the force at once).
+ * The rubber filter: xdot_k = H qdot_k - R x_k, adding
  * -V (K x_k + C xdot_k). Friction adds its torque (lugre_friction.h) with the
  * bushing's translational force (with the limits) as the normal force and
  * qdot's rotations as the slip rate. With no state active, y is exactly the
@@ -26,15 +35,16 @@
 extern "C" {
 #endif
 
-#define USRSUB_MAX_STATES 15
+#define USRSUB_MAX_STATES 18
 
 /* Where each state sits in x. */
 typedef struct usrsub_state_layout {
-    int n;                  /* states in all */
-    int friction;           /* 3 bristle states from x[0], or 0 when none */
-    int nmount, mount[6];   /* directions of the mounts with damping (states) */
-    int nfollow, follow[6]; /* directions of the mounts without (no state) */
-    int nrubber, rubber[6]; /* directions with a rubber filter */
+    int n;                      /* states in all */
+    int friction;               /* 3 bristle states from x[0], or 0 when none */
+    int nmount, mount[6];       /* directions of the balanced mounts (one state each) */
+    int ninertial, inertial[3]; /* directions of the inertial mounts (two states each) */
+    int nfollow, follow[6];     /* directions of the following mounts (no state) */
+    int nrubber, rubber[6];     /* directions with a rubber filter */
 } usrsub_state_layout;
 
 void usrsub_bushing_state_layout(const usrsub_bushing *b, usrsub_state_layout *layout);

@@ -14,8 +14,10 @@
  * mu has a part along F_N, so the switch is a jump: the blend keeps the torque
  * (and a series mount's balance through it) continuous. The bristle damping
  * fades with the slip, as is usual for LuGre, so that the friction never
- * pushes along the slip. Torques only; partials exact where the law is smooth
- * (|w| = 0, F_N = 0 and mu = 0 take the one-sided value of their kinks).
+ * pushes along the slip. Torques only; partials exact where the law is smooth;
+ * at the kinks |w| = 0, F_N = 0 and |mu| = 0 they drop the terms through the
+ * kink's unit vector (w/|w|, F_N/|F_N|, mu/|mu|): at |w| = 0 this is the
+ * mean of the one-sided slopes along any line through rest.
  */
 #ifndef USRSUB_LUGRE_FRICTION_H
 #define USRSUB_LUGRE_FRICTION_H

@@ -16,6 +16,7 @@ extern "C" {
 typedef struct usrsub_unit_factors {
     /* file unit / model unit, per base quantity */
     double length, force, mass, time, angle;
+    double model_time_seconds; /* the model's time unit in s (1 when it declares none) */
     int converted; /* 0: values used as they are */
 } usrsub_unit_factors;
 
