@@ -9,6 +9,7 @@
 #include <strings.h>
 
 #include "host/call.h"
+#include "host/utilities.h"
 #include "model/units.h"
 #include "usrsub/solver_abi.h"
 
@@ -112,6 +113,45 @@ void c_gtunts(int *exists, double *scales, char *units)
         if (units != NULL)
             memcpy(units + 3 * k, hx_unit_abbreviation(order[k], m->unit_scales[order[k]]), 3);
     }
+}
+
+/* ---- data access (docs/interface.md §5.2) -------------------------------------------- */
+
+void c_gtaray(int id, double *array, int *number, int *istat)
+{
+    const hx_model *m = bound != NULL ? bound->model : NULL;
+    const int k = m != NULL ? hx_model_array(m, id) : -1;
+    if (k < 0 || m->arrays[k].type != HX_ARRAY_IC || array == NULL || number == NULL) {
+        hx_utility_refused(HX_UTILITY_GTARAY, "id %d, which names no Reference_Array of type IC"
+                           " (the arrays whose numbers the model holds)", id);
+        if (istat != NULL)
+            *istat = 1;
+        return;
+    }
+    const hx_array *a = &m->arrays[k];
+    /* as with c_gtstrg: a positive count in is the room the caller has */
+    const int room = *number > 0 && *number < a->count ? *number : a->count;
+    memcpy(array, a->numbers, sizeof(double) * (size_t)room);
+    *number = room;
+    if (istat != NULL)
+        *istat = room < a->count; /* 1: truncated */
+}
+
+void c_getstm(double *time)
+{
+    *time = bound != NULL && bound->state != NULL ? bound->state->time : 0.0;
+}
+
+void c_timget(double *time)
+{
+    /* the time of the last converged step: the harness calls an element at
+     * states it has accepted or is trying, and answers the call's own time */
+    c_getstm(time);
+}
+
+void c_getinm(int *value)
+{
+    *value = 0; /* not interactive: the harness runs from its command line */
 }
 
 /* ---- state queries ------------------------------------------------------------------- */

@@ -214,6 +214,8 @@ void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_stat
     call->may_query = b->kind == HX_BIND_GFOSUB;
     call->reported_undeclared = &b->reported_undeclared;
     call->reported_refused = &b->reported_refused;
+    call->reported_unoffered = &b->reported_unoffered;
+    call->reported_misused = &b->reported_misused;
 }
 
 /* Bytes in use in the C library's allocator (mallinfo2: small blocks and

@@ -66,6 +66,7 @@ typedef struct hx_binding {
     long setup_bytes;
     /* what the host has reported of this element: each read once */
     hx_noted_queries reported_undeclared, reported_refused;
+    unsigned long long reported_unoffered, reported_misused; /* host/utilities.h bits */
     const hx_model *model;
     hx_messages *messages;
     hx_call_log *log;    /* NULL: calls are not logged */

@@ -46,6 +46,11 @@ typedef struct hx_call {
     /* what earlier calls of the element already reported (kept by its binding;
      * NULL: each call reports on its own), so that a read is reported once */
     hx_noted_queries *reported_undeclared, *reported_refused;
+    /* utilities (host/utilities.h, one bit each) the call asked that the host
+     * does not offer, or called with arguments it refused; and the element's
+     * record of those already reported (NULL: each call reports on its own) */
+    unsigned long long unoffered, misused;
+    unsigned long long *reported_unoffered, *reported_misused;
     unsigned used;             /* bit k: declared query k was asked */
     int next_declared;         /* where the look-up starts: libraries ask in order */
     int perturb_query;         /* -1, or the declared query whose answer is shifted */

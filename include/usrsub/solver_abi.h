@@ -111,6 +111,55 @@ void c_gtstrg(int id, char *string, int *nchars, int *istat);
  * code reads (docs/interface.md §1, docs/sources.md). */
 void c_gtunts(int *exists, double *scales, char *units);
 
+/* The other utilities of the Adams-compatible C interface (docs/interface.md
+ * §5.2): scalars by value, results through pointers; iord is the order of the
+ * derivative asked for (0, 1, 2). */
+void c_rcnvrt(const char *sys1, const double *coord1, const char *sys2, double *coord2,
+              int *istat);
+void c_tcnvrt(const char *sys1, const double *coord1, const char *sys2, double *coord2,
+              int *istat);
+void c_step(double x, double x0, double h0, double x1, double h1, int iord, double *value,
+            int *errflg);
+void c_step5(double x, double x0, double h0, double x1, double h1, int iord, double *value,
+             int *errflg);
+void c_havsin(double x, double x0, double h0, double x1, double h1, int iord, double *value,
+              int *errflg);
+/* vec: iord 0: the force; 1: its slopes in x and dxdt; 2: its second
+ * derivatives in (x, x), (x, dxdt), (dxdt, dxdt) */
+void c_impact(double x, double dxdt, double x1, double k, double e, double cmax, double d,
+              int iord, double *vec, int *errflg);
+void c_bistop(double x, double dxdt, double x1, double x2, double k, double e, double cmax,
+              double d, int iord, double *vec, int *errflg);
+void c_poly(double x, double x0, const double *par, int npar, int iord, double *value,
+            int *errflg);
+void c_cheby(double x, double x0, const double *par, int npar, int iord, double *value,
+             int *errflg);
+void c_forcos(double x, double x0, double w, const double *par, int npar, int iord,
+              double *value, int *errflg);
+void c_forsin(double x, double x0, double w, const double *par, int npar, int iord,
+              double *value, int *errflg);
+void c_shf(double x, double x0, double a, double w, double phi, double b, int iord,
+           double *value, int *errflg);
+void c_akispl(double xval, double zval, int id, int iord, double *array, int *errflg);
+void c_cubspl(double xval, double zval, int id, int iord, double *array, int *errflg);
+void c_quispl(double xval, double zval, int id, int iord, double *array, int *errflg);
+/* number: the capacity in, the count out */
+void c_gtaray(int id, double *array, int *number, int *istat);
+void c_getstm(double *time);
+void c_timget(double *time);
+void c_getinm(int *value);
+void c_getmod(int *mode);
+void c_getint(char *value);
+void c_getver(char *value);
+void c_syspar(const char *fnc, const int *ipar, int nsize, const double *partials, int npart,
+              int *errflg);
+void c_cusfnc(const char *fnc, const double *rpar, int nsize, double *state, int *errflg);
+void c_get_step_info(int *flag);
+void c_analys(const char *antype, const char *cid, double timbeg, double timend, int init,
+              int *istat);
+void c_datout(int *istat);
+void c_modify(const char *command, int *istat);
+
 enum usrsub_gtunts_scale {
     USRSUB_GTUNTS_TIME = 0,   /* second */
     USRSUB_GTUNTS_LENGTH = 1, /* metre */

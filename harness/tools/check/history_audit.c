@@ -165,6 +165,7 @@ typedef struct result {
     enum { RAN, STOPPED, SIGNALLED, EXITED } outcome;
     int code; /* the signal or the exit status */
     hx_noted_queries undeclared, refused;
+    unsigned long long unoffered, misused;
     char stop_message[HX_TEXT_MAX];
 } result;
 
@@ -185,6 +186,7 @@ static void run_history(probe *p, const history *h, result *r)
     r->outcome = stopped ? STOPPED : RAN;
     r->undeclared = b->reported_undeclared;
     r->refused = b->reported_refused;
+    r->unoffered = b->reported_unoffered, r->misused = b->reported_misused;
     if (stopped)
         snprintf(r->stop_message, sizeof r->stop_message, "%s", b->messages->stop_message);
 }
@@ -242,6 +244,7 @@ static void run_isolated(probe *p, const history *h, result *r, int *isolated)
         hx_binding *b = p->b; /* the next history starts from what this one noted */
         b->reported_undeclared = r->undeclared;
         b->reported_refused = r->refused;
+        b->reported_unoffered = r->unoffered, b->reported_misused = r->misused;
         if (r->outcome == STOPPED)
             hx_messages_adopt_stop(b->messages, r->stop_message);
     }

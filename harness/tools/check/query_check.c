@@ -3,6 +3,7 @@
  * host refused, fails it. */
 #include <stdio.h>
 
+#include "host/utilities.h"
 #include "tools/check/checks.h"
 
 int hx_check_queries(const hx_binding *b, FILE *out)
@@ -18,6 +19,17 @@ int hx_check_queries(const hx_binding *b, FILE *out)
     if (b->reported_refused.count > 0) {
         fprintf(out, "  %s %d: FAIL: asks queries the host refuses: %s\n", b->element, b->id,
                 hx_noted_text(&b->reported_refused, text, sizeof text));
+        ++failures;
+    }
+    if (b->reported_unoffered != 0) {
+        fprintf(out, "  %s %d: FAIL: needs %s, which this host does not offer (docs/interface.md"
+                " §5.2)\n", b->element, b->id,
+                hx_utilities_text(b->reported_unoffered, text, sizeof text));
+        ++failures;
+    }
+    if (b->reported_misused != 0) {
+        fprintf(out, "  %s %d: FAIL: calls %s with arguments the host refuses (see host: above)\n",
+                b->element, b->id, hx_utilities_text(b->reported_misused, text, sizeof text));
         ++failures;
     }
     return failures;
