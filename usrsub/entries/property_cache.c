@@ -3,11 +3,11 @@
 
 #include <errno.h>
 #include <limits.h>
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "mutex.h"
 #include "usrsub/readers/units.h"
 
 typedef struct property_entry {
@@ -21,7 +21,7 @@ typedef struct property_entry {
 } property_entry;
 
 static property_entry *entries;
-static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+static usrsub_mutex lock = USRSUB_MUTEX_INIT;
 
 static int same_units(const property_entry *e, const double *scales)
 {
@@ -37,23 +37,23 @@ const void *property_cache_get(const char *kind, const char *path, const double 
     char real[PATH_MAX];
     if (realpath(path, real) == NULL)
         return usrsub_fail(msg, "cannot open '%s': %s", path, strerror(errno)), NULL;
-    pthread_mutex_lock(&lock);
+    usrsub_mutex_lock(&lock);
     for (property_entry *e = entries; e != NULL; e = e->next)
         if (strcmp(e->kind, kind) == 0 && strcmp(e->path, real) == 0 && same_units(e, model_scales)) {
-            pthread_mutex_unlock(&lock);
+            usrsub_mutex_unlock(&lock);
             return e->property;
         }
     void *property = NULL;
     property_entry *e = calloc(1, sizeof *e);
     if (e == NULL || (e->path = strdup(real)) == NULL) {
         free(e);
-        pthread_mutex_unlock(&lock);
+        usrsub_mutex_unlock(&lock);
         return usrsub_fail(msg, "out of memory"), NULL;
     }
     if (read(real, model_scales, &property, report, msg) != 0) {
         free(e->path);
         free(e);
-        pthread_mutex_unlock(&lock);
+        usrsub_mutex_unlock(&lock);
         return NULL;
     }
     snprintf(e->kind, sizeof e->kind, "%s", kind);
@@ -64,23 +64,23 @@ const void *property_cache_get(const char *kind, const char *path, const double 
     e->release = release;
     e->next = entries;
     entries = e;
-    pthread_mutex_unlock(&lock);
+    usrsub_mutex_unlock(&lock);
     return property;
 }
 
 int property_cache_size(void)
 {
     int n = 0;
-    pthread_mutex_lock(&lock);
+    usrsub_mutex_lock(&lock);
     for (property_entry *e = entries; e != NULL; e = e->next)
         ++n;
-    pthread_mutex_unlock(&lock);
+    usrsub_mutex_unlock(&lock);
     return n;
 }
 
 void property_cache_clear(void)
 {
-    pthread_mutex_lock(&lock);
+    usrsub_mutex_lock(&lock);
     while (entries != NULL) {
         property_entry *next = entries->next;
         entries->release(entries->property);
@@ -88,7 +88,7 @@ void property_cache_clear(void)
         free(entries);
         entries = next;
     }
-    pthread_mutex_unlock(&lock);
+    usrsub_mutex_unlock(&lock);
 }
 
 __attribute__((destructor)) static void property_cache_unload(void)
