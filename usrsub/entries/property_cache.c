@@ -6,6 +6,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#ifdef _WIN32
+#include <io.h>
+#endif
 
 #include "mutex.h"
 #include "usrsub/readers/units.h"
@@ -30,12 +33,28 @@ static int same_units(const property_entry *e, const double *scales)
     return memcmp(e->units, scales, sizeof e->units) == 0;
 }
 
+/* The cache's key: the file's absolute path, so that two spellings of one file
+ * share one parse. realpath also resolves links and fails for a missing file.
+ * Windows has no realpath: _fullpath makes the path absolute and normal (drive,
+ * backslashes, no . or ..) and _access keeps the failure for a missing file
+ * (docs/windows.md). */
+static char *real_path(const char *path, char real[PATH_MAX])
+{
+#ifdef _WIN32
+    if (_fullpath(real, path, PATH_MAX) == NULL)
+        return NULL;
+    return _access(real, 0) == 0 ? real : NULL;
+#else
+    return realpath(path, real);
+#endif
+}
+
 const void *property_cache_get(const char *kind, const char *path, const double *model_scales,
                                property_read_fn *read, property_free_fn *release,
                                usrsub_read_report *report, usrsub_message *msg)
 {
     char real[PATH_MAX];
-    if (realpath(path, real) == NULL)
+    if (real_path(path, real) == NULL)
         return usrsub_fail(msg, "cannot open '%s': %s", path, strerror(errno)), NULL;
     usrsub_mutex_lock(&lock);
     for (property_entry *e = entries; e != NULL; e = e->next)
