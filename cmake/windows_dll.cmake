@@ -29,3 +29,9 @@ target_link_libraries(usrsub PRIVATE ${USRSUB_UTILITY_IMPORTS})
 # and Windows' own (tests/windows/check_dll.sh checks both lists).
 set_target_properties(usrsub PROPERTIES PREFIX "")
 target_link_options(usrsub PRIVATE -static-libgcc)
+
+# The test host and the stand-in utility DLL that scripts/windows.sh runs
+# under Wine (tests/windows/).
+if(USRSUB_TESTS)
+  add_subdirectory(tests/windows)
+endif()
