@@ -11,16 +11,22 @@
 #             libcmocka-dev              unit tests
 #             clang libclang-rt-14-dev   libFuzzer targets
 #             valgrind                   the unload/reload leak check
+#             gcc-mingw-w64-x86-64       usrsub.dll, cross-compiled
+#             wine64 wine                Wine, to run it (windows.sh)
+#   windows main, cmocka and the two above: usrsub.dll against the Linux
+#           library (windows.sh)
 #   fuzz    the libFuzzer build (fuzz.sh): the build's packages, clang and
 #           libclang-rt-14-dev
 # Without a purpose: test (everything). A package apt cannot install is named,
 # with the reason, and the script fails.
 set -euo pipefail
 
+windows_packages="gcc-mingw-w64-x86-64 wine64 wine"
 packages_of() {
   case "$1" in
     main) echo cmake gcc make libc6-dev libexpat1-dev libsundials-dev libsuitesparse-dev gnuplot-nox ;;
-    test) echo "$(packages_of main) libcmocka-dev clang libclang-rt-14-dev valgrind" ;;
+    test) echo "$(packages_of main) libcmocka-dev clang libclang-rt-14-dev valgrind $windows_packages" ;;
+    windows) echo "$(packages_of main) libcmocka-dev $windows_packages" ;;
     fuzz) echo cmake gcc make libc6-dev libexpat1-dev libsundials-dev libsuitesparse-dev clang libclang-rt-14-dev ;;
     *) return 1 ;;
   esac
@@ -31,7 +37,7 @@ purposes=("$@")
 packages=()
 for purpose in "${purposes[@]}"; do
   if ! list=$(packages_of "$purpose"); then
-    echo "setup: unknown purpose '$purpose' (main, test or fuzz)" >&2
+    echo "setup: unknown purpose '$purpose' (main, test, windows or fuzz)" >&2
     exit 2
   fi
   for p in $list; do

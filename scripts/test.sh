@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Sets up, then builds and runs every test: the normal build; the
+# Sets up, then builds and runs every test: the normal build; usrsub.dll
+# under Wine against the Linux library (scripts/windows.sh); the
 # AddressSanitizer + UndefinedBehaviorSanitizer build; the ThreadSanitizer
 # build; valgrind on unloading and reloading the
 # library; and a brief, reproducible run of each libFuzzer target (a fixed
@@ -13,6 +14,9 @@ echo "== build and test (RelWithDebInfo)"
 # tests on explicitly: example.sh and plots.sh configure build/ without them
 "$root/scripts/build.sh" build -DUSRSUB_TESTS=ON
 (cd "$root/build" && ctest --output-on-failure -j "$cores")
+
+echo "== Windows: usrsub.dll (mingw-w64) under Wine against libusrsub.so"
+"$root/scripts/windows.sh"
 
 echo "== build and test (AddressSanitizer + UndefinedBehaviorSanitizer)"
 "$root/scripts/build.sh" build-asan -DUSRSUB_SANITIZE=ON

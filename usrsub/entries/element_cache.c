@@ -1,14 +1,15 @@
 /* Lock-free look-up, locked set-up cache of elements (element_cache.h). */
 #include "element_cache.h"
 
-#include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "mutex.h"
+
 _Atomic(element_record *) element_cache_buckets[ELEMENT_CACHE_BUCKETS];
 static element_record *retired; /* superseded records, freed at unload */
-static pthread_mutex_t setup_lock = PTHREAD_MUTEX_INITIALIZER;
+static usrsub_mutex setup_lock = USRSUB_MUTEX_INIT;
 
 static int same_element(const element_record *r, const element_signature *sig)
 {
@@ -48,16 +49,16 @@ void *element_cache_get(const element_signature *sig, element_setup_fn *setup,
     if (r != NULL && element_cache_matches(r, sig))
         return r->model;
 
-    pthread_mutex_lock(&setup_lock);
+    usrsub_mutex_lock(&setup_lock);
     r = element_cache_record(sig->interface, sig->id); /* set up meanwhile? */
     if (r != NULL && element_cache_matches(r, sig)) {
-        pthread_mutex_unlock(&setup_lock);
+        usrsub_mutex_unlock(&setup_lock);
         return r->model;
     }
     const int npar = sig->npar > 0 ? sig->npar : 0;
     element_record *fresh = malloc(sizeof *fresh + sizeof(double) * (size_t)npar);
     if (fresh == NULL) {
-        pthread_mutex_unlock(&setup_lock);
+        usrsub_mutex_unlock(&setup_lock);
         *set_up_now = 1;
         report->notices.has_notice = 0;
         usrsub_fail(&report->error, "out of memory while setting up the element");
@@ -77,24 +78,24 @@ void *element_cache_get(const element_signature *sig, element_setup_fn *setup,
     retire_current(bucket, sig);
     atomic_store_explicit(&fresh->next, atomic_load(&element_cache_buckets[bucket]), memory_order_relaxed);
     atomic_store_explicit(&element_cache_buckets[bucket], fresh, memory_order_release);
-    pthread_mutex_unlock(&setup_lock);
+    usrsub_mutex_unlock(&setup_lock);
     return fresh->model;
 }
 
 int element_cache_size(void)
 {
     int count = 0;
-    pthread_mutex_lock(&setup_lock);
+    usrsub_mutex_lock(&setup_lock);
     for (unsigned b = 0; b < ELEMENT_CACHE_BUCKETS; ++b)
         for (element_record *r = atomic_load(&element_cache_buckets[b]); r != NULL; r = atomic_load(&r->next))
             ++count;
-    pthread_mutex_unlock(&setup_lock);
+    usrsub_mutex_unlock(&setup_lock);
     return count;
 }
 
 void element_cache_clear(void)
 {
-    pthread_mutex_lock(&setup_lock);
+    usrsub_mutex_lock(&setup_lock);
     for (unsigned b = 0; b < ELEMENT_CACHE_BUCKETS; ++b) {
         element_record *r = atomic_exchange(&element_cache_buckets[b], NULL);
         while (r != NULL) {
@@ -108,7 +109,7 @@ void element_cache_clear(void)
         free_record(retired);
         retired = next;
     }
-    pthread_mutex_unlock(&setup_lock);
+    usrsub_mutex_unlock(&setup_lock);
 }
 
 __attribute__((destructor)) static void element_cache_unload(void)

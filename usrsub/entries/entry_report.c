@@ -1,11 +1,11 @@
 /* Wording of the entries' messages (entry_report.h). */
 #include "entry_report.h"
 
-#include <pthread.h>
 #include <stdarg.h>
 #include <stdio.h>
 
 #include "host.h"
+#include "mutex.h"
 
 /* What has been reported during a call: (routine, element, kind), by the
  * addresses of the constant strings. Only error paths touch it. */
@@ -16,18 +16,18 @@ typedef struct reported_key {
 } reported_key;
 static reported_key reported[REPORTED_MAX];
 static int reported_count;
-static pthread_mutex_t reported_lock = PTHREAD_MUTEX_INITIALIZER;
+static usrsub_mutex reported_lock = USRSUB_MUTEX_INIT;
 
 /* 1 the first time a key is seen (and whenever the table is full). */
 static int first_report(const char *routine, int id, const char *kind)
 {
     int first = 1;
-    pthread_mutex_lock(&reported_lock);
+    usrsub_mutex_lock(&reported_lock);
     for (int k = 0; k < reported_count && first; ++k)
         first = !(reported[k].routine == routine && reported[k].id == id && reported[k].kind == kind);
     if (first && reported_count < REPORTED_MAX)
         reported[reported_count++] = (reported_key){routine, kind, id};
-    pthread_mutex_unlock(&reported_lock);
+    usrsub_mutex_unlock(&reported_lock);
     return first;
 }
 

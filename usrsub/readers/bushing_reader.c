@@ -11,9 +11,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 
 #include "usrsub/readers/bushing_reader.h"
+#include "usrsub/readers/case_compare.h"
 
 static const char *const direction_names[6] = {"FX", "FY", "FZ", "TX", "TY", "TZ"};
 
@@ -32,7 +32,7 @@ typedef struct reader {
 static int direction_of(const char *name)
 {
     for (int k = 0; k < 6; ++k)
-        if (strcasecmp(name, direction_names[k]) == 0)
+        if (usrsub_strcasecmp(name, direction_names[k]) == 0)
             return k;
     return -1;
 }
@@ -69,11 +69,11 @@ static int read_global(reader *r, usrsub_bushing *b)
     const usrsub_teim_block *g = usrsub_teim_find_block(r->f, "GLOBAL");
     const usrsub_teim_entry *c = usrsub_teim_find_entry(g, "COUPLING");
     if (c != NULL) {
-        if (strcasecmp(c->value, "UNCOUPLED") == 0 || strcasecmp(c->value, "NONE") == 0)
+        if (usrsub_strcasecmp(c->value, "UNCOUPLED") == 0 || usrsub_strcasecmp(c->value, "NONE") == 0)
             b->coupling = USRSUB_UNCOUPLED;
-        else if (strcasecmp(c->value, "CYLINDRICAL") == 0)
+        else if (usrsub_strcasecmp(c->value, "CYLINDRICAL") == 0)
             b->coupling = USRSUB_CYLINDRICAL;
-        else if (strcasecmp(c->value, "SPHERICAL") == 0)
+        else if (usrsub_strcasecmp(c->value, "SPHERICAL") == 0)
             b->coupling = USRSUB_SPHERICAL;
         else
             return usrsub_fail(r->msg, "'%s' line %d: COUPLING = '%s': expected UNCOUPLED,"
@@ -319,7 +319,7 @@ static int choice(reader *r, const usrsub_teim_block *b, const char *key,
     if (e == NULL)
         return fallback;
     for (int k = 0; k < count; ++k)
-        if (strcasecmp(e->value, choices[k]) == 0)
+        if (usrsub_strcasecmp(e->value, choices[k]) == 0)
             return k;
     return usrsub_fail(r->msg, "'%s' line %d: %s = '%s' in [%s]: expected '%s' or '%s'",
                        r->f->path, e->line, key, e->value, b->name, choices[0], choices[1]);

@@ -2,11 +2,11 @@
 #include "usrsub/readers/property_file.h"
 
 #include "usrsub/core/rotation.h"
+#include "usrsub/readers/case_compare.h"
 
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
-#include <strings.h>
 
 void usrsub_read_report_add(usrsub_read_report *report, const char *fmt, ...)
 {
@@ -29,7 +29,7 @@ static int check_file_type(const usrsub_teim_file *f, const char *file_type,
     if (type == NULL)
         return usrsub_fail(msg, "'%s': no [HEADER] block with FILE_TYPE = '%s'", f->path,
                            file_type);
-    if (strcasecmp(type->value, file_type) != 0)
+    if (usrsub_strcasecmp(type->value, file_type) != 0)
         return usrsub_fail(msg, "'%s' line %d: FILE_TYPE is '%s', expected '%s' (%s)", f->path,
                            type->line, type->value, file_type, description);
     return 0;
@@ -62,9 +62,9 @@ int usrsub_read_rotation_measure(const usrsub_teim_file *f, int *measure, usrsub
     *measure = USRSUB_PROJECTION_ANGLES;
     const usrsub_teim_entry *e =
         usrsub_teim_find_entry(usrsub_teim_find_block(f, "GLOBAL"), "ROTATION_MEASURE");
-    if (e == NULL || strcasecmp(e->value, "PROJECTION_ANGLES") == 0)
+    if (e == NULL || usrsub_strcasecmp(e->value, "PROJECTION_ANGLES") == 0)
         return 0;
-    if (strcasecmp(e->value, "ROTATION_VECTOR") == 0) {
+    if (usrsub_strcasecmp(e->value, "ROTATION_VECTOR") == 0) {
         *measure = USRSUB_ROTATION_VECTOR;
         return 0;
     }

@@ -2,7 +2,8 @@
 #include "usrsub/readers/units.h"
 
 #include <stddef.h>
-#include <strings.h>
+
+#include "usrsub/readers/case_compare.h"
 
 typedef struct unit_entry {
     const char *name;
@@ -65,7 +66,7 @@ int usrsub_unit_size(enum usrsub_unit_kind kind, const char *name, double *si)
     if (t == NULL || name == NULL)
         return -1;
     for (; t->name != NULL; ++t)
-        if (strcasecmp(t->name, name) == 0) {
+        if (usrsub_strcasecmp(t->name, name) == 0) {
             *si = t->si;
             return 0;
         }
