@@ -11,6 +11,7 @@
 #             libcmocka-dev              unit tests
 #             clang libclang-rt-14-dev   libFuzzer targets
 #             valgrind                   the unload/reload leak check
+#             gfortran                   Fortran user libraries the harness hosts
 #             gcc-mingw-w64-x86-64       usrsub.dll, cross-compiled
 #             wine64 wine                Wine, to run it (windows.sh)
 #   windows main, cmocka and the two above: usrsub.dll against the Linux
@@ -25,7 +26,7 @@ windows_packages="gcc-mingw-w64-x86-64 wine64 wine"
 packages_of() {
   case "$1" in
     main) echo cmake gcc make libc6-dev libexpat1-dev libsundials-dev libsuitesparse-dev gnuplot-nox ;;
-    test) echo "$(packages_of main) libcmocka-dev clang libclang-rt-14-dev valgrind $windows_packages" ;;
+    test) echo "$(packages_of main) libcmocka-dev clang libclang-rt-14-dev valgrind gfortran $windows_packages" ;;
     windows) echo "$(packages_of main) libcmocka-dev $windows_packages" ;;
     fuzz) echo cmake gcc make libc6-dev libexpat1-dev libsundials-dev libsuitesparse-dev clang libclang-rt-14-dev ;;
     *) return 1 ;;

@@ -141,6 +141,31 @@ static void a_crash_is_reported_and_survived(void **state)
            NULL);
 }
 
+static void libraries_using_the_utilities_pass(void **state)
+{
+    (void)state;
+    expect("utilities", 0, NEEDLES("1 passed, 0 failed"), NEEDLES("FAIL", "host:"));
+}
+
+static void a_fortran_library_loads_and_passes(void **state)
+{
+    (void)state;
+#ifdef TP_FORTRAN
+    expect("fortran", 0, NEEDLES("gfosub_", "1 passed, 0 failed"), NEEDLES("FAIL", "host:"));
+#else
+    skip(); /* no Fortran compiler at configure time (Debian: gfortran) */
+#endif
+}
+
+static void a_utility_not_offered_is_named(void **state)
+{
+    (void)state;
+    expect("unoffered", 1, NEEDLES("host: Force_Vector_TwoBody 1 (GFOSUB) needs c_akispl, which"
+                                   " this host does not offer",
+                                   "FAIL: needs c_akispl, which this host does not offer"),
+           NULL);
+}
+
 static void a_refused_query_is_reported(void **state)
 {
     (void)state;
@@ -181,6 +206,9 @@ int main(void)
         cmocka_unit_test(a_wrong_field_partial_is_named_by_row_and_column),
         cmocka_unit_test(a_crash_is_reported_and_survived),
         cmocka_unit_test(a_refused_query_is_reported),
+        cmocka_unit_test(libraries_using_the_utilities_pass),
+        cmocka_unit_test(a_fortran_library_loads_and_passes),
+        cmocka_unit_test(a_utility_not_offered_is_named),
         cmocka_unit_test(a_wrong_couxx_is_reported_as_couxx),
         cmocka_unit_test(a_wrong_couxx2_is_named_by_row_and_column),
     };
