@@ -138,6 +138,22 @@ static void newton_matrix_equals_differences_on_the_powertrain(void **state)
     close_model(&m);
 }
 
+/* A third party's FIESUB that fills dfddis only when dflag is set and never
+ * writes dfdvel (tests/third_party/tp_habits_field.c): the Newton matrix
+ * asks for them so, and equals the differences. */
+static void newton_matrix_asks_a_field_for_its_partials(void **state)
+{
+    (void)state;
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    model m;
+    open_model(&m, THIRD_PARTY_DIR "/tp_habits_field.xml");
+    double y[64];
+    hx_simulation_result r = simulate(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-8, 0.01, y);
+    assert_int_equal(r.status, HX_INTEGRATION_OK);
+    compare_jacobians(&m, 0.01, y, "tp_habits_field.xml at t = 0.01 s", HX_PARTIALS_FIESUB);
+    close_model(&m);
+}
+
 /* Every bundled model the harness simulates, at a state it reaches (0.05 s
  * of DOPRI5 from the start: loads on, elements deformed), and chains of
  * bodies from scripts/chain_model.sh: the assembled matrix equals the
@@ -590,6 +606,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(newton_matrix_equals_differences_on_the_powertrain),
         cmocka_unit_test(newton_matrix_equals_differences_on_every_model),
+        cmocka_unit_test(newton_matrix_asks_a_field_for_its_partials),
         cmocka_unit_test(differences_by_column_groups_equal_them_column_by_column),
         cmocka_unit_test(bdf_converges_at_its_order),
         cmocka_unit_test(a_wrong_partial_costs_newton_iterations_not_accuracy),

@@ -166,6 +166,18 @@ static void a_utility_not_offered_is_named(void **state)
            NULL);
 }
 
+static void host_habits_are_those_of_a_solver(void **state)
+{
+    (void)state;
+    /* outputs zeroed before each call; NaN in the dependency pass a warning */
+    expect("habits", 0, NEEDLES("note: GFOSUB never writes output 5 of its call",
+                                "returned a non-finite output in its dependency pass",
+                                "a warning only", "1 passed, 0 failed"),
+           NEEDLES("FAIL"));
+    /* partials asked for with dflag set, dfdvel zeroed first */
+    expect("habits_field", 0, NEEDLES("1 passed, 0 failed"), NEEDLES("FAIL", "never writes"));
+}
+
 static void a_refused_query_is_reported(void **state)
 {
     (void)state;
@@ -209,6 +221,7 @@ int main(void)
         cmocka_unit_test(libraries_using_the_utilities_pass),
         cmocka_unit_test(a_fortran_library_loads_and_passes),
         cmocka_unit_test(a_utility_not_offered_is_named),
+        cmocka_unit_test(host_habits_are_those_of_a_solver),
         cmocka_unit_test(a_wrong_couxx_is_reported_as_couxx),
         cmocka_unit_test(a_wrong_couxx2_is_named_by_row_and_column),
     };

@@ -8,6 +8,7 @@
 #include <getopt.h>
 #include <libgen.h>
 #include <signal.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,11 +41,11 @@ static void usage(FILE *f)
                "when one fails, 3 when one stops the run through c_errmes.\n");
 }
 
-/* One evaluation at the model's initial state: its outputs, finite or not. */
-static int evaluate(hx_session *s, hx_binding *b, char *outputs, size_t size)
+/* One call of the element at the model's initial state into out (room for
+ * 1 + 3 + 9 values, or a state equation's nstate + 6): the number of
+ * outputs, or -1 when memory ran out. */
+static int call_once(hx_session *s, hx_binding *b, double *out)
 {
-    double out[81] = {0};
-    int nout;
     if (b->kind == HX_BIND_COUPLER) {
         const hx_coupler *c = &s->model->couplers[b->index];
         double disp[3];
@@ -54,33 +55,61 @@ static int evaluate(hx_session *s, hx_binding *b, char *outputs, size_t size)
         hx_call_coupler(b, 0, &s->state, disp, n, 0, out, NULL);
         hx_call_coupler(b, 1, &s->state, disp, n, 0, out + 1, NULL);
         hx_call_coupler(b, 2, &s->state, disp, n, 0, out + 1 + n, NULL);
-        nout = 1 + n + n * n;
-    } else if (b->kind == HX_BIND_GFOSUB) {
+        return 1 + n + n * n;
+    }
+    if (b->kind == HX_BIND_GFOSUB) {
         hx_call_gfosub(b, &s->state, 0, 0, out, NULL);
-        nout = 6;
-    } else if (b->kind == HX_BIND_YFOSUB) {
+        return 6;
+    }
+    if (b->kind == HX_BIND_YFOSUB) {
         /* its rates and outputs at its initial states and the inputs there */
         const hx_state_eqn *f = &s->model->state_eqns[b->index];
-        double *work = calloc((size_t)(2 * f->nstate + f->ninput + 6), sizeof(double));
+        double *work = calloc((size_t)(f->nstate + f->ninput), sizeof(double));
         if (work == NULL)
-            return 0;
+            return -1;
         memcpy(work, f->initial, sizeof(double) * (size_t)f->nstate);
         hx_state_eqn_inputs(&s->state, b->index, work + f->nstate);
-        double *rates = work + f->nstate + f->ninput;
-        hx_call_yfosub(b, &s->state, work, work + f->nstate, 0, 0, rates, rates + f->nstate, NULL);
-        nout = f->nstate + 6;
-        hx_format_values(outputs, size, rates, nout, 6);
-        const int finite = hx_all_finite(rates, nout);
+        hx_call_yfosub(b, &s->state, work, work + f->nstate, 0, 0, out, out + f->nstate, NULL);
         free(work);
-        return finite;
-    } else {
-        double disp[6], velo[6], dfd[36], dfv[36];
-        hx_force_deformation(&s->state, b->index, disp, velo);
-        hx_call_fiesub(b, &s->state, disp, velo, 0, 0, out, dfd, dfv, NULL);
-        nout = 6;
+        return f->nstate + 6;
+    }
+    double disp[6], velo[6], dfd[36], dfv[36];
+    hx_force_deformation(&s->state, b->index, disp, velo);
+    hx_call_fiesub(b, &s->state, disp, velo, 0, 0, out, dfd, dfv, NULL);
+    return 6;
+}
+
+/* One evaluation at the model's initial state: its outputs, finite or not
+ * (-1: out of memory). A first call with the outputs filled with NaN finds
+ * those the entry never writes: a solver zeroes them, as the harness does
+ * in every other call, so they are noted, not failed. */
+static int evaluate(hx_session *s, hx_binding *b, char *outputs, size_t size)
+{
+    const int room = b->kind == HX_BIND_YFOSUB ? s->model->state_eqns[b->index].nstate + 6 : 13;
+    double *out = calloc((size_t)room, sizeof(double));
+    if (out == NULL)
+        return -1;
+    b->output_fill = NAN;
+    const int probed = call_once(s, b, out);
+    b->output_fill = 0.0;
+    char unwritten[256] = "";
+    for (int k = 0, n = 0; k < probed && n < (int)sizeof unwritten - 8; ++k)
+        if (isnan(out[k]))
+            n += snprintf(unwritten + n, sizeof unwritten - (size_t)n, "%s%d", n ? ", " : "",
+                          k + 1);
+    if (unwritten[0] != '\0')
+        printf("  note: %s never writes output%s %s of its call (a solver zeroes them before"
+               " each call, as the harness does)\n", hx_binding_routine(b, 0),
+               strchr(unwritten, ',') != NULL ? "s" : "", unwritten);
+    const int nout = call_once(s, b, out);
+    if (nout < 0) {
+        free(out);
+        return -1;
     }
     hx_format_values(outputs, size, out, nout, 6);
-    return hx_all_finite(out, nout);
+    const int finite = hx_all_finite(out, nout);
+    free(out);
+    return finite;
 }
 
 /* Everything check does to one element; the number of failures. */
@@ -104,6 +133,10 @@ static int check_element(hx_session *s, hx_binding *b)
         printf("  set-up footprint: %ld bytes kept allocated by its first calls\n",
                b->setup_bytes);
     const int finite = evaluate(s, b, outputs, sizeof outputs);
+    if (finite < 0) {
+        printf("  %s %d: out of memory\n", b->element, b->id);
+        return 1;
+    }
     printf("  %s at t = 0: %s\n", b->kind == HX_BIND_YFOSUB ? "state rates, then outputs"
                                                         : "outputs", outputs);
     if (hx_messages_stopped(&s->messages))

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/finite.h"
 #include "host/state_inputs.h"
 #include "state/measures.h"
 
@@ -240,6 +241,23 @@ static void state_eqn_pass(hx_binding *b, const hx_state *s, double *work)
     hx_call_yfosub(b, s, states, input, 0, 1, stated, stated + f->nstate, NULL);
 }
 
+/* The outputs of an element's dependency pass: out (couplers: phi, then
+ * the first and second derivatives; GFOSUB and FIESUB: 6), or a state
+ * equation's rates and outputs in work. */
+static int pass_outputs_finite(const hx_binding *b, const hx_state *s, const double *out,
+                               const double *work)
+{
+    if (b->kind == HX_BIND_YFOSUB) {
+        const hx_state_eqn *f = &s->model->state_eqns[b->index];
+        return hx_all_finite(work + f->nstate + f->ninput, f->nstate + 6);
+    }
+    if (b->kind == HX_BIND_COUPLER) {
+        const int n = s->model->couplers[b->index].njoints;
+        return hx_all_finite(out, 1 + n + n * n);
+    }
+    return hx_all_finite(out, 6);
+}
+
 int hx_dependency_passes(hx_bindings *bs, const hx_state *s)
 {
     const hx_model *m = s->model;
@@ -259,8 +277,10 @@ int hx_dependency_passes(hx_bindings *bs, const hx_state *s)
             double disp[3];
             for (int i = 0; i < c->njoints; ++i)
                 disp[i] = hx_joint_coordinate(s, c->joint[i]);
-            for (int fn = 0; fn < 3; ++fn)
-                hx_call_coupler(b, fn, s, disp, c->njoints, 1, out, NULL);
+            const int n = c->njoints;
+            hx_call_coupler(b, 0, s, disp, n, 1, out, NULL);
+            hx_call_coupler(b, 1, s, disp, n, 1, out + 1, NULL);
+            hx_call_coupler(b, 2, s, disp, n, 1, out + 1 + n, NULL);
         } else if (b->kind == HX_BIND_GFOSUB) {
             hx_call_gfosub(b, s, 0, 1, out, NULL);
         } else if (b->kind == HX_BIND_FIESUB) {
@@ -272,6 +292,11 @@ int hx_dependency_passes(hx_bindings *bs, const hx_state *s)
         }
         const long after = allocated_bytes();
         b->setup_bytes = before > 0 || after > 0 ? after - before : -1;
+        if (b->messages != NULL && !pass_outputs_finite(b, s, out, work))
+            hx_messages_host(b->messages, "%s %d (%s) returned a non-finite output in its"
+                             " dependency pass (iflag set, where the state queries answer zeros,"
+                             " as in a solver, which discards these outputs): a warning only",
+                             b->element, b->id, hx_binding_routine(b, 0));
         if (b->messages != NULL && hx_messages_stopped(b->messages)) {
             free(work);
             return -1;
@@ -292,6 +317,13 @@ static void log_call(hx_binding *b, int which, double time, int iflag, int dflag
     for (int k = 0; k < nargs && k < 12; ++k)
         log->args[k] = args[k];
     log->begun++;
+}
+
+/* What an entry's outputs hold before it is called. */
+static void fill(double *out, int n, double value)
+{
+    for (int k = 0; k < n; ++k)
+        out[k] = value;
 }
 
 /* The caller's record (set up with hx_binding_call_init) or a default one. */
@@ -316,6 +348,8 @@ void hx_call_coupler(hx_binding *b, int which, const hx_state *s, const double *
     double t = s->time, d[3] = {0, 0, 0};
     for (int k = 0; k < ndisp && k < 3; ++k)
         d[k] = disp[k];
+    /* a solver zeroes what an entry returns: outputs it never writes read 0 */
+    fill(out, which == 0 ? 1 : which == 1 ? ndisp : ndisp * ndisp, b->output_fill);
     if (b->log != NULL)
         log_call(b, which, t, iflag, 0, d, ndisp);
     b->coupler[which](&id, &t, b->par, &npar, d, &n, &flag, out);
@@ -333,6 +367,7 @@ void hx_call_gfosub(hx_binding *b, const hx_state *s, int dflag, int iflag, doub
     double t = s->time;
     if (b->log != NULL)
         log_call(b, 0, t, iflag, dflag, NULL, 0);
+    fill(result, 6, b->output_fill);
     b->gfosub(&id, &t, b->par, &npar, &df, &flag, result);
     if (b->log != NULL)
         b->log->returned++;
@@ -355,6 +390,9 @@ void hx_call_fiesub(hx_binding *b, const hx_state *s, const double disp[6], cons
         memcpy(args + 6, v, sizeof v);
         log_call(b, 0, t, iflag, dflag, args, 12);
     }
+    fill(field, 6, b->output_fill);
+    memset(dfddis, 0, 36 * sizeof(double));
+    memset(dfdvel, 0, 36 * sizeof(double)); /* some FIESUBs never write it */
     b->fiesub(&id, &t, b->par, &npar, d, v, &df, &flag, field, dfddis, dfdvel);
     if (b->log != NULL)
         b->log->returned++;
@@ -372,6 +410,8 @@ void hx_call_yfosub(hx_binding *b, const hx_state *s, double *states, double *in
     double t = s->time;
     if (b->log != NULL)
         log_call(b, 0, t, iflag, dflag, input, ninput);
+    fill(stated, nstate, b->output_fill);
+    fill(output, 6, b->output_fill);
     b->yfosub(&id, &t, b->par, &npar, &df, &flag, &nstate, states, &ninput, input, &noutpt,
               stated, output);
     if (b->log != NULL)
@@ -390,6 +430,9 @@ void hx_call_state_partial(hx_binding *b, int which, const hx_state *s, double *
     double t = s->time;
     if (b->log != NULL)
         log_call(b, 1 + which, t, 0, 0, input, ninput);
+    /* YFOXX n x n, YFOXU n x ninput, YFOYX 6 x n, YFOYU 6 x ninput */
+    memset(matrix, 0, sizeof(double) * (size_t)((which < 2 ? nstate : 6) *
+                                                 (which % 2 == 0 ? nstate : ninput)));
     b->state_partial[which](&id, &t, b->par, &npar, &flag, &nstate, states, &ninput, input,
                             &noutpt, matrix);
     if (b->log != NULL)
@@ -404,10 +447,13 @@ void hx_call_twin(hx_binding *b, const hx_state *s, const double disp[6], const 
     hx_call_init(&call, b->element, b->id, b->twin_name, b->model, s, messages, 0, NULL);
     call.may_query = 0; /* a FIESUB entry (docs/interface.md §1) */
     hx_host_bind(&call);
-    int id = b->id, npar = b->twin_npar, df = 0, flag = 0;
+    int id = b->id, npar = b->twin_npar, df = 1, flag = 0; /* dflag: its partials are wanted */
     double t = s->time, d[6], v[6];
     memcpy(d, disp, sizeof d);
     memcpy(v, velo, sizeof v);
+    memset(field, 0, 6 * sizeof(double));
+    memset(dfddis, 0, 36 * sizeof(double));
+    memset(dfdvel, 0, 36 * sizeof(double));
     b->twin(&id, &t, b->twin_par, &npar, d, v, &df, &flag, field, dfddis, dfdvel);
     hx_host_unbind();
 }

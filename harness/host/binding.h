@@ -67,6 +67,9 @@ typedef struct hx_binding {
     /* what the host has reported of this element: each read once */
     hx_noted_queries reported_undeclared, reported_refused;
     unsigned long long reported_unoffered, reported_misused; /* host/utilities.h bits */
+    /* what the outputs hold before each call: 0, as a solver zeroes them; check
+     * fills them with NaN once, to find an output the entry never writes */
+    double output_fill;
     const hx_model *model;
     hx_messages *messages;
     hx_call_log *log;    /* NULL: calls are not logged */

@@ -60,6 +60,8 @@ typedef struct hx_dynamics {
      * which takes them instead of calling the elements again: */
     double *element_outputs;    /* 6 per force element, in its own result axes */
     double *element_partials;   /* 72 per FIESUB element: dfddis, then dfdvel */
+    int field_partials;         /* 1: FIESUB is called with dflag set, as a solver
+                                 * asks for partials (the Newton matrix wants them) */
     double *free_accelerations; /* nu: the bodies' udot before the couplers act */
     double *evaluated_y;        /* the y of that evaluation */
     double evaluated_t;

@@ -26,10 +26,11 @@ int hx_element_forces_apply(hx_dynamics *d, double *power)
         if (f->interface == HX_FORCE_GFOSUB) {
             hx_call_gfosub(b, s, 0, 0, out, NULL);
         } else {
-            /* the partials come with the force: kept for the Newton matrix */
+            /* the partials come with the force, when asked for (dflag): kept
+             * for the Newton matrix */
             double disp[6], velo[6], *dfd = d->element_partials + 72 * k;
             hx_field_state(I, J, disp, velo);
-            hx_call_fiesub(b, s, disp, velo, 0, 0, out, dfd, dfd + 36, NULL);
+            hx_call_fiesub(b, s, disp, velo, d->field_partials, 0, out, dfd, dfd + 36, NULL);
         }
         if (hx_dynamics_check_stop(d, b) != 0)
             return -1;

@@ -50,6 +50,11 @@ int hx_element_blocks_init(hx_newton_matrix *nm, hx_message *msg)
         char *why = nm->why + k * HX_NEWTON_WHY;
         if (f->interface == HX_FORCE_FIESUB) {
             nm->source[k] = HX_PARTIALS_FIESUB;
+            /* the evaluations ask for them from now on; one made without
+             * them holds none to reuse */
+            if (!nm->d->field_partials)
+                nm->d->evaluated = 0;
+            nm->d->field_partials = 1;
         } else if (b->twin == NULL) {
             nm->source[k] = HX_PARTIALS_DIFFERENCES;
             snprintf(why, HX_NEWTON_WHY, "its library exports no FIESUB twin of %s", b->names[0]);

@@ -42,7 +42,7 @@ int hx_check_field_partials(hx_session *s, hx_binding *b, FILE *out)
         double x[12], scale[12], F[6], J[72];
         hx_sample_element_state(s, b->index, k, x, x + 6, scale);
         state.time = hx_sample_time(s->model, k);
-        hx_call_fiesub(b, &state, x, x + 6, 0, 0, F, J, J + 36, NULL);
+        hx_call_fiesub(b, &state, x, x + 6, 1, 0, F, J, J + 36, NULL); /* dflag: partials wanted */
         if (hx_messages_stopped(b->messages) || !hx_all_finite(J, 72)) {
             fprintf(out, "  %s %d: %s returned non-finite partials at sample %d\n", b->element,
                     b->id, b->names[0], k);
