@@ -5,12 +5,14 @@
  * query, the signal); the harness survives a crash. The harness runs as a
  * user runs it, as a program, its output read back.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
 
 #include "host/session.h"
+#include "sim_support.h"
 #include "test_support.h"
 #include "tools/check/checks.h"
 
@@ -178,6 +180,32 @@ static void host_habits_are_those_of_a_solver(void **state)
     expect("habits_field", 0, NEEDLES("1 passed, 0 failed"), NEEDLES("FAIL", "never writes"));
 }
 
+/* VFOSUB and VTOSUB (Force_Vector_TwoBody ForceOnly, TorqueOnly) pass check,
+ * and together run as the GFOSUB of the same law: one trajectory. */
+static void vector_routines_run_as_the_gfosub_of_their_law(void **state)
+{
+    (void)state;
+    expect("vector", 0, NEEDLES("(VFOSUB in libtp_vector.so)", "(VTOSUB in libtp_vector.so)",
+                                "2 passed, 0 failed"),
+           NEEDLES("FAIL", "never writes"));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    sim one, two;
+    sim_run(&one, THIRD_PARTY_DIR "/tp_good_sysfnc.xml", HX_METHOD_DOPRI5, 1e-10, 0.3, 0.3);
+    sim_run(&two, THIRD_PARTY_DIR "/tp_vector.xml", HX_METHOD_DOPRI5, 1e-10, 0.3, 0.3);
+    const int last = one.path.rows - 1, n = one.dynamics.nq + one.dynamics.nu;
+    assert_int_equal(two.path.rows - 1, last);
+    double worst = 0.0, size = 0.0;
+    for (int k = 0; k < n; ++k) {
+        worst = fmax(worst, fabs(sim_state(&one, last, k) - sim_state(&two, last, k)));
+        size = fmax(size, fabs(sim_state(&one, last, k)));
+    }
+    printf("  VFOSUB + VTOSUB against GFOSUB after 0.3 s: largest state difference %.2g (of"
+           " %.3g)\n", worst, size);
+    assert_true(size > 0.1 && worst <= 1e-9 * size);
+    sim_close(&one);
+    sim_close(&two);
+}
+
 static void a_refused_query_is_reported(void **state)
 {
     (void)state;
@@ -222,6 +250,7 @@ int main(void)
         cmocka_unit_test(a_fortran_library_loads_and_passes),
         cmocka_unit_test(a_utility_not_offered_is_named),
         cmocka_unit_test(host_habits_are_those_of_a_solver),
+        cmocka_unit_test(vector_routines_run_as_the_gfosub_of_their_law),
         cmocka_unit_test(a_wrong_couxx_is_reported_as_couxx),
         cmocka_unit_test(a_wrong_couxx2_is_named_by_row_and_column),
     };

@@ -139,10 +139,15 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
         b->index = k;
         b->id = f->id;
         b->element = gfo ? "Force_Vector_TwoBody" : "Force_Field";
-        b->names[0] = f->user.fnc_name ? f->user.fnc_name : gfo ? "GFOSUB" : "FIESUB";
+        static const char *const vector_names[3] = {"GFOSUB", "VFOSUB", "VTOSUB"};
+        b->part = f->part;
+        b->names[0] = f->user.fnc_name ? f->user.fnc_name
+                      : gfo                ? vector_names[f->part]
+                                           : "FIESUB";
         if (bind_one(m, bs, b, &f->user, f->line, msg) != 0)
             return -1;
-        if (gfo && bind_twin(bs, b) != 0)
+        /* a FIESUB twin answers all six: only a GFOSUB's can stand in for it */
+        if (gfo && f->part == HX_VECTOR_BOTH && bind_twin(bs, b) != 0)
             return hx_fail(msg, "out of memory");
     }
     for (int k = 0; k < m->nstate_eqns; ++k) {
@@ -368,7 +373,14 @@ void hx_call_gfosub(hx_binding *b, const hx_state *s, int dflag, int iflag, doub
     if (b->log != NULL)
         log_call(b, 0, t, iflag, dflag, NULL, 0);
     fill(result, 6, b->output_fill);
-    b->gfosub(&id, &t, b->par, &npar, &df, &flag, result);
+    if (b->part == HX_VECTOR_TORQUE) { /* VTOSUB's three values are the torque */
+        b->gfosub(&id, &t, b->par, &npar, &df, &flag, result + 3);
+        fill(result, 3, 0.0);
+    } else {
+        b->gfosub(&id, &t, b->par, &npar, &df, &flag, result);
+        if (b->part == HX_VECTOR_FORCE)
+            fill(result + 3, 3, 0.0);
+    }
     if (b->log != NULL)
         b->log->returned++;
     hx_host_unbind();

@@ -42,7 +42,8 @@ typedef struct hx_binding {
     /* the symbols bound for them: NAME, name_ or name (hx_loader_entry) */
     char symbols[5][HX_ENTRY_NAME_MAX];
     usrsub_coupler_fn *coupler[3]; /* phi, dphi/dM, d2phi/dM2 */
-    usrsub_gfosub_fn *gfosub;
+    usrsub_gfosub_fn *gfosub; /* GFOSUB, or VFOSUB / VTOSUB (part): three values */
+    enum hx_vector_part part;
     usrsub_fiesub_fn *fiesub;
     usrsub_yfosub_fn *yfosub;
     /* YFOXX, YFOXU, YFOYX, YFOYU (names[1..4]); NULL when the library does not
@@ -106,6 +107,8 @@ int hx_dependency_passes(hx_bindings *b, const hx_state *s);
  * record the call is bound with, set up by hx_binding_call_init. */
 void hx_call_coupler(hx_binding *b, int which, const hx_state *s, const double *disp, int ndisp,
                      int iflag, double *out, hx_call *call);
+/* A Force_Vector_TwoBody's routine: result receives force and torque, the
+ * part a VFOSUB or VTOSUB does not return zero. */
 void hx_call_gfosub(hx_binding *b, const hx_state *s, int dflag, int iflag, double result[6],
                     hx_call *call);
 void hx_call_fiesub(hx_binding *b, const hx_state *s, const double disp[6], const double velo[6],

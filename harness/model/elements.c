@@ -371,14 +371,20 @@ static const hx_attr_spec force_vector_attrs[] = {
 static void build_force_vector(hx_draft *d, const hx_element_read *e)
 {
     const char *type = hx_attr_text(e, "type");
-    if (strcasecmp(type, "ForceAndTorque") != 0) {
-        hx_draft_fail(d, e->line, "Force_Vector_TwoBody %d: type \"%s\" is not supported by the"
-                      " harness (ForceAndTorque with a GFOSUB-style user subroutine)", e->id, type);
+    static const char *const types[3] = {"ForceAndTorque", "ForceOnly", "TorqueOnly"};
+    int part = 0;
+    while (part < 3 && strcasecmp(type, types[part]) != 0)
+        ++part;
+    if (part == 3) {
+        hx_draft_fail(d, e->line, "Force_Vector_TwoBody %d: type \"%s\" is not one the harness"
+                      " reads (ForceAndTorque: GFOSUB, ForceOnly: VFOSUB, TorqueOnly: VTOSUB)",
+                      e->id, type);
         return;
     }
     hx_force *f = push_force(d, e, HX_FORCE_GFOSUB);
     if (f == NULL)
         return;
+    f->part = (enum hx_vector_part)part;
     raw_refs *refs = &d->rforces[d->m->nforces - 1];
     refs->ids[0] = hx_attr_int(e, "i_marker_id", 0);
     refs->ids[1] = hx_attr_int(e, "j_floating_marker_id", 0);

@@ -74,10 +74,15 @@ typedef struct hx_coupler {
 } hx_coupler;
 
 enum hx_force_interface { HX_FORCE_GFOSUB, HX_FORCE_FIESUB };
+/* What a Force_Vector_TwoBody's routine returns: its type ForceAndTorque
+ * (GFOSUB: six values), ForceOnly (VFOSUB: the force) or TorqueOnly (VTOSUB:
+ * the torque). */
+enum hx_vector_part { HX_VECTOR_BOTH, HX_VECTOR_FORCE, HX_VECTOR_TORQUE };
 
 typedef struct hx_force {
     int id;
     enum hx_force_interface interface; /* Force_Vector_TwoBody or Force_Field */
+    enum hx_vector_part part;          /* Force_Vector_TwoBody's type */
     int i_marker, j_marker;  /* indices; for GFOSUB j is the floating J marker */
     int ref_marker;          /* index of the frame of the results, -1: world */
     hx_user_call user;
