@@ -1,5 +1,6 @@
 /* Helpers of the simulating tests (sim_support.h). */
 #include "sim_support.h"
+#include "host/dependency_pass.h"
 #include "sim/newton/newton_matrix.h"
 
 #include <dlfcn.h>

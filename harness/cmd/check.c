@@ -7,8 +7,8 @@
  */
 #include <getopt.h>
 #include <libgen.h>
-#include <signal.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,6 +21,7 @@
 #include "base/finite.h"
 #include "cmd/commands.h"
 #include "cmd/options.h"
+#include "host/evaluate.h"
 #include "host/session.h"
 #include "host/state_inputs.h"
 #include "state/measures.h"
@@ -41,42 +42,14 @@ static void usage(FILE *f)
                "when one fails, 3 when one stops the run through c_errmes.\n");
 }
 
-/* One call of the element at the model's initial state into out (room for
- * 1 + 3 + 9 values, or a state equation's nstate + 6): the number of
- * outputs, or -1 when memory ran out. */
-static int call_once(hx_session *s, hx_binding *b, double *out)
+/* One call of the element at its inputs at the model's initial state
+ * (host/evaluate.h): the number of outputs shown (a field's force, without
+ * the partials it is not asked for). */
+static int call_once(hx_session *s, hx_binding *b, double *in, double *out)
 {
-    if (b->kind == HX_BIND_COUPLER) {
-        const hx_coupler *c = &s->model->couplers[b->index];
-        double disp[3];
-        for (int i = 0; i < c->njoints; ++i)
-            disp[i] = hx_joint_coordinate(&s->state, c->joint[i]);
-        const int n = c->njoints;
-        hx_call_coupler(b, 0, &s->state, disp, n, 0, out, NULL);
-        hx_call_coupler(b, 1, &s->state, disp, n, 0, out + 1, NULL);
-        hx_call_coupler(b, 2, &s->state, disp, n, 0, out + 1 + n, NULL);
-        return 1 + n + n * n;
-    }
-    if (b->kind == HX_BIND_GFOSUB) {
-        hx_call_gfosub(b, &s->state, 0, 0, out, NULL);
-        return 6;
-    }
-    if (b->kind == HX_BIND_YFOSUB) {
-        /* its rates and outputs at its initial states and the inputs there */
-        const hx_state_eqn *f = &s->model->state_eqns[b->index];
-        double *work = calloc((size_t)(f->nstate + f->ninput), sizeof(double));
-        if (work == NULL)
-            return -1;
-        memcpy(work, f->initial, sizeof(double) * (size_t)f->nstate);
-        hx_state_eqn_inputs(&s->state, b->index, work + f->nstate);
-        hx_call_yfosub(b, &s->state, work, work + f->nstate, 0, 0, out, out + f->nstate, NULL);
-        free(work);
-        return f->nstate + 6;
-    }
-    double disp[6], velo[6], dfd[36], dfv[36];
-    hx_force_deformation(&s->state, b->index, disp, velo);
-    hx_call_fiesub(b, &s->state, disp, velo, 0, 0, out, dfd, dfv, NULL);
-    return 6;
+    hx_binding_inputs(b, &s->state, NULL, in);
+    const int n = hx_binding_evaluate(b, &s->state, in, 0, 0, out);
+    return b->kind == HX_BIND_FIESUB ? 6 : n;
 }
 
 /* One evaluation at the model's initial state: its outputs, finite or not
@@ -85,12 +58,13 @@ static int call_once(hx_session *s, hx_binding *b, double *out)
  * in every other call, so they are noted, not failed. */
 static int evaluate(hx_session *s, hx_binding *b, char *outputs, size_t size)
 {
-    const int room = b->kind == HX_BIND_YFOSUB ? s->model->state_eqns[b->index].nstate + 6 : 13;
-    double *out = calloc((size_t)room, sizeof(double));
-    if (out == NULL)
+    const int nin = hx_binding_input_count(b);
+    double *in = calloc((size_t)(nin + hx_binding_output_count(b)), sizeof(double));
+    if (in == NULL)
         return -1;
+    double *out = in + nin;
     b->output_fill = NAN;
-    const int probed = call_once(s, b, out);
+    const int probed = call_once(s, b, in, out);
     b->output_fill = 0.0;
     char unwritten[256] = "";
     for (int k = 0, n = 0; k < probed && n < (int)sizeof unwritten - 8; ++k)
@@ -101,14 +75,10 @@ static int evaluate(hx_session *s, hx_binding *b, char *outputs, size_t size)
         printf("  note: %s never writes output%s %s of its call (a solver zeroes them before"
                " each call, as the harness does)\n", hx_binding_routine(b, 0),
                strchr(unwritten, ',') != NULL ? "s" : "", unwritten);
-    const int nout = call_once(s, b, out);
-    if (nout < 0) {
-        free(out);
-        return -1;
-    }
+    const int nout = call_once(s, b, in, out);
     hx_format_values(outputs, size, out, nout, 6);
     const int finite = hx_all_finite(out, nout);
-    free(out);
+    free(in);
     return finite;
 }
 

@@ -2,7 +2,6 @@
 #include "host/binding.h"
 
 #include <limits.h>
-#include <malloc.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -222,93 +221,6 @@ void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_stat
     call->reported_refused = &b->reported_refused;
     call->reported_unoffered = &b->reported_unoffered;
     call->reported_misused = &b->reported_misused;
-}
-
-/* Bytes in use in the C library's allocator (mallinfo2: small blocks and
- * mmap'd ones); sanitizers bring their own allocator and answer 0. Exact when
- * glibc's per-thread cache is off (the check command sees to it,
- * cmd/exact_heap.h); otherwise freed small blocks it holds count too. */
-static long allocated_bytes(void)
-{
-    const struct mallinfo2 info = mallinfo2();
-    return (long)(info.uordblks + info.hblkhd);
-}
-
-/* A state equation's pass at state s: its initial states and its inputs
- * there; work holds 2 nstate + ninput + 6 values. */
-static void state_eqn_pass(hx_binding *b, const hx_state *s, double *work)
-{
-    const hx_state_eqn *f = &s->model->state_eqns[b->index];
-    double *states = work, *input = states + f->nstate, *stated = input + f->ninput;
-    for (int i = 0; i < f->nstate; ++i)
-        states[i] = f->initial[i];
-    hx_state_eqn_inputs(s, b->index, input);
-    hx_call_yfosub(b, s, states, input, 0, 1, stated, stated + f->nstate, NULL);
-}
-
-/* The outputs of an element's dependency pass: out (couplers: phi, then
- * the first and second derivatives; GFOSUB and FIESUB: 6), or a state
- * equation's rates and outputs in work. */
-static int pass_outputs_finite(const hx_binding *b, const hx_state *s, const double *out,
-                               const double *work)
-{
-    if (b->kind == HX_BIND_YFOSUB) {
-        const hx_state_eqn *f = &s->model->state_eqns[b->index];
-        return hx_all_finite(work + f->nstate + f->ninput, f->nstate + 6);
-    }
-    if (b->kind == HX_BIND_COUPLER) {
-        const int n = s->model->couplers[b->index].njoints;
-        return hx_all_finite(out, 1 + n + n * n);
-    }
-    return hx_all_finite(out, 6);
-}
-
-int hx_dependency_passes(hx_bindings *bs, const hx_state *s)
-{
-    const hx_model *m = s->model;
-    int work_size = 1; /* before the first pass: the footprints are the library's alone */
-    for (int k = 0; k < m->nstate_eqns; ++k)
-        if (2 * m->state_eqns[k].nstate + m->state_eqns[k].ninput + 6 > work_size)
-            work_size = 2 * m->state_eqns[k].nstate + m->state_eqns[k].ninput + 6;
-    double *work = malloc(sizeof(double) * (size_t)work_size);
-    if (work == NULL)
-        return -1;
-    for (int k = 0; k < bs->count; ++k) {
-        hx_binding *b = &bs->items[k];
-        double out[64];
-        const long before = allocated_bytes();
-        if (b->kind == HX_BIND_COUPLER) {
-            const hx_coupler *c = &m->couplers[b->index];
-            double disp[3];
-            for (int i = 0; i < c->njoints; ++i)
-                disp[i] = hx_joint_coordinate(s, c->joint[i]);
-            const int n = c->njoints;
-            hx_call_coupler(b, 0, s, disp, n, 1, out, NULL);
-            hx_call_coupler(b, 1, s, disp, n, 1, out + 1, NULL);
-            hx_call_coupler(b, 2, s, disp, n, 1, out + 1 + n, NULL);
-        } else if (b->kind == HX_BIND_GFOSUB) {
-            hx_call_gfosub(b, s, 0, 1, out, NULL);
-        } else if (b->kind == HX_BIND_FIESUB) {
-            double disp[6], velo[6], dfd[36], dfv[36];
-            hx_force_deformation(s, b->index, disp, velo);
-            hx_call_fiesub(b, s, disp, velo, 0, 1, out, dfd, dfv, NULL);
-        } else {
-            state_eqn_pass(b, s, work);
-        }
-        const long after = allocated_bytes();
-        b->setup_bytes = before > 0 || after > 0 ? after - before : -1;
-        if (b->messages != NULL && !pass_outputs_finite(b, s, out, work))
-            hx_messages_host(b->messages, "%s %d (%s) returned a non-finite output in its"
-                             " dependency pass (iflag set, where the state queries answer zeros,"
-                             " as in a solver, which discards these outputs): a warning only",
-                             b->element, b->id, hx_binding_routine(b, 0));
-        if (b->messages != NULL && hx_messages_stopped(b->messages)) {
-            free(work);
-            return -1;
-        }
-    }
-    free(work);
-    return 0;
 }
 
 static void log_call(hx_binding *b, int which, double time, int iflag, int dflag,

@@ -99,9 +99,6 @@ const char *hx_binding_routine(const hx_binding *b, int which);
  * or checking against b->deps. */
 void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_state *s, int iflag);
 
-/* The dependency pass of every element (iflag = 1) at state s, as a solver
- * runs it before the analysis; returns -1 when an element stopped the run. */
-int hx_dependency_passes(hx_bindings *b, const hx_state *s);
 
 /* Calls at state s (its time is the call's time); call (may be NULL) is the
  * record the call is bound with, set up by hx_binding_call_init. */

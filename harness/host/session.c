@@ -6,6 +6,8 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "host/dependency_pass.h"
+
 int hx_session_open(hx_session *s, const char *model_path, FILE *messages, hx_message *msg)
 {
     memset(s, 0, sizeof *s);

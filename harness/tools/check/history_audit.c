@@ -26,6 +26,7 @@
 
 #include "sim/dynamics/element_probe.h"
 #include "state/measures.h"
+#include "host/evaluate.h"
 #include "tools/check/checks.h"
 #include "tools/check/coupler_ranges.h"
 #include "tools/check/element_samples.h"
@@ -74,47 +75,22 @@ static const history histories[] = {
 #define HISTORIES ((int)(sizeof histories / sizeof histories[0]))
 
 /* Every output of the element at input `which`, at time t; dflag as given
- * (couplers have none). */
+ * (couplers have none). A Force_Vector_TwoBody's input is its I marker's
+ * place relative to J, set in the state its queries are answered from. */
 static int evaluate(probe *p, int which, double t, int dflag, double *out)
 {
     hx_binding *b = p->b;
     memset(out, 0, sizeof(double) * MAX_OUT);
-    if (b->kind == HX_BIND_COUPLER) {
-        const int n = p->s->model->couplers[b->index].njoints;
-        p->state.time = t;
-        hx_call_coupler(b, 0, &p->state, p->input[which], n, 0, out, NULL);
-        hx_call_coupler(b, 1, &p->state, p->input[which], n, 0, out + 1, NULL);
-        hx_call_coupler(b, 2, &p->state, p->input[which], n, 0, out + 1 + n, NULL);
-    } else if (b->kind == HX_BIND_FIESUB) {
-        p->state.time = t;
-        hx_call_fiesub(b, &p->state, p->input[which], p->input[which] + 6, dflag, 0, out,
-                       out + 6, out + 42, NULL);
-    } else if (b->kind == HX_BIND_YFOSUB) {
-        /* the rates and outputs; copies of the arguments, which it may write */
-        const int ns = p->s->model->state_eqns[b->index].nstate;
-        double copy[MAX_IN];
-        memcpy(copy, p->input[which], sizeof copy);
-        p->state.time = t;
-        hx_call_yfosub(b, &p->state, copy, copy + ns, dflag, 0, out, out + ns, NULL);
-    } else {
+    if (b->kind == HX_BIND_GFOSUB) {
         const hx_force *f = &p->s->model->forces[b->index];
         hx_place_relative(&p->s->state, &p->state, f->i_marker, f->j_marker, p->input[which],
                           p->input[which] + 6);
-        p->state.time = t;
-        hx_call_gfosub(b, &p->state, dflag, 0, out, NULL);
     }
+    double copy[MAX_IN]; /* a state equation may write into its arguments */
+    memcpy(copy, p->input[which], sizeof copy);
+    p->state.time = t;
+    hx_binding_evaluate(b, &p->state, copy, 0, dflag, out);
     return hx_messages_stopped(b->messages) ? -1 : 0;
-}
-
-static int outputs(const hx_binding *b, const hx_model *m)
-{
-    if (b->kind == HX_BIND_COUPLER) {
-        const int n = m->couplers[b->index].njoints;
-        return 1 + n + n * n;
-    }
-    if (b->kind == HX_BIND_YFOSUB)
-        return m->state_eqns[b->index].nstate + 6;
-    return b->kind == HX_BIND_FIESUB ? 78 : 6;
 }
 
 /* Times past every time the element was called at, spread as the checks'
@@ -274,7 +250,7 @@ int hx_audit_history(hx_session *s, hx_binding *b, FILE *out)
         return 1;
     choose_inputs(&p);
     choose_times(&p);
-    p.nout = outputs(b, s->model);
+    p.nout = hx_binding_output_count(b);
     result r[HISTORIES];
     int isolated = 1, failed = -1, component = 0;
     for (int h = 0; h < HISTORIES && failed < 0; ++h) {
