@@ -12,6 +12,7 @@
 
 #include "host/binding.h"
 #include "host/session.h"
+#include "host/queries.h"
 #include "test_support.h"
 #include "tools/check/checks.h"
 
@@ -29,6 +30,7 @@ static const char *probe_model(int probe, int i_marker, int j_marker)
              "<MotionSolve>\n<Model>\n"
              "<Param_Unit length_unit=\"CENTIMETER\" force_unit=\"KNEWTON\" mass_unit=\"GRAM\" time_unit=\"MINUTE\"/>\n"
              "<Reference_String id=\"7\" string=\"hello.gbs\"/>\n"
+             "<Reference_Array id=\"5\" type=\"IC\" num_element=\"3\">1.5, -2, 7</Reference_Array>\n"
              "<Body_Ground id=\"1\"/>\n"
              "<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
              "<Reference_Marker id=\"11\" body_id=\"1\" pos_x=\"0.5\" a00=\"0\" a10=\"1\" a01=\"-1\" a11=\"0\"/>\n"
@@ -114,6 +116,38 @@ static void sysary_disp_and_vel(void **state)
     assert_close(r[3], 0.0, 0, 1e-14);
     assert_close(r[4], 0.0, 0, 1e-14);
     assert_close(r[5], 2.0, 0, 1e-14);
+}
+
+/* The angle functions and ARRAY, answered from the state and the model:
+ * marker 30 (Rx(40)) relative to 21 (Rz(30)) is Rz(-30) Rx(40): yaw -30,
+ * pitch 0, roll 40; psi -30, theta 40, phi 0. Accelerations are refused. */
+static void angles_and_arrays(void **state)
+{
+    (void)state;
+    hx_session s;
+    open_probe(&s, 1, 21, 11, stderr);
+    const int ipar[2] = {30, 21};
+    static const char *const names[6] = {"YAW", "PITCH", "ROLL", "PSI", "THETA", "PHI"};
+    const double expected[6] = {-30 * DEG, 0.0, 40 * DEG, -30 * DEG, 40 * DEG, 0.0};
+    for (int k = 0; k < 6; ++k) {
+        double v = 99.0;
+        assert_int_equal(hx_answer_query(&s.state, names[k], ipar, 2, 0, &v), 1);
+        assert_close(v, expected[k], 0, 1e-14);
+    }
+    /* marker 21 (Rz(30)) relative to ground: all of it is yaw */
+    double v = 0.0;
+    const int about_z[2] = {21, 10};
+    assert_int_equal(hx_answer_query(&s.state, "YAW", about_z, 2, 0, &v), 1);
+    assert_close(v, 30 * DEG, 0, 1e-14);
+    double a[4] = {0, 0, 0, 0};
+    const int array[1] = {5};
+    assert_int_equal(hx_answer_query(&s.state, "ARRAY", array, 1, 1, a), 3);
+    assert_true(a[0] == 1.5 && a[1] == -2.0 && a[2] == 7.0);
+    const int missing[1] = {6};
+    assert_int_equal(hx_answer_query(&s.state, "ARRAY", missing, 1, 1, a), -1);
+    assert_int_equal(hx_answer_query(&s.state, "ACC", ipar, 2, 1, a), -1);
+    assert_int_equal(hx_answer_query(&s.state, "YAW", ipar, 2, 1, a), -1); /* a scalar */
+    hx_session_close(&s);
 }
 
 static void dependency_pass_records_queries(void **state)
@@ -233,6 +267,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(sysfnc_answers_from_the_model),
         cmocka_unit_test(sysary_disp_and_vel),
+        cmocka_unit_test(angles_and_arrays),
         cmocka_unit_test(dependency_pass_records_queries),
         cmocka_unit_test(undeclared_read_is_noted),
         cmocka_unit_test(strings_and_units),

@@ -213,8 +213,11 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
     const int count = hx_answer(c->state, &q, ipar, values);
     if (count < 0) {
         report_refused(c, &q, "not a function and argument list the harness answers (c_sysary: DISP TDISP"
-                       " RDISP VEL TVEL RVEL; c_sysfnc: DX DY DZ DM AX AY AZ VX VY VZ WX WY WZ;"
-                       " existing marker ids)");
+                       " RDISP VEL TVEL RVEL, ARRAY of an IC Reference_Array; c_sysfnc: DX DY DZ DM"
+                       " AX AY AZ VX VY VZ WX WY WZ PSI THETA PHI YAW PITCH ROLL; existing marker"
+                       " ids). Accelerations (ACC, RACC, ACCX ...), other elements' forces (FX ..."
+                       " TZ) and Control_Diff values (DIF, DIF1) are not answered:"
+                       " docs/interface.md §5.1");
         return -1;
     }
     if (c->dependency_pass) {

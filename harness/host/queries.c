@@ -1,6 +1,7 @@
 /* State queries and their answers (queries.h). */
 #include "host/queries.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -9,10 +10,14 @@
 
 /* Function codes: the arrays, then the scalars (axis added to the base). */
 enum {
-    F_DISP, F_TDISP, F_RDISP, F_VEL, F_TVEL, F_RVEL, F_DM,
-    F_DX, F_AX = F_DX + 3, F_VX = F_AX + 3, F_WX = F_VX + 3, F_COUNT = F_WX + 3
+    F_DISP, F_TDISP, F_RDISP, F_VEL, F_TVEL, F_RVEL, F_ARRAY, F_DM,
+    F_DX, F_AX = F_DX + 3, F_VX = F_AX + 3, F_WX = F_VX + 3,
+    F_PSI = F_WX + 3, /* PSI THETA PHI: 3-1-3 angles of I relative to J */
+    F_YAW = F_PSI + 3, /* YAW PITCH ROLL: 3-2-1 angles of I relative to J */
+    F_COUNT = F_YAW + 3
 };
-static const int max_nsize[F_COUNT] = {3, 3, 2, 4, 4, 3, 2, 3, 3, 3, 2, 2, 2, 4, 4, 4, 3, 3, 3};
+static const int max_nsize[F_COUNT] = {3, 3, 2, 4, 4, 3, 1, 2, 3, 3, 3, 2, 2, 2, 4, 4, 4,
+                                       3, 3, 3, 2, 2, 2, 2, 2, 2};
 
 /* The name packed into an integer, one byte per character, as the library's
  * pointer may be to any text: a switch on it replaces string comparisons on
@@ -44,6 +49,13 @@ static int function_code(unsigned long long name)
     case PACK2('W', 'X'): return F_WX;
     case PACK2('W', 'Y'): return F_WX + 1;
     case PACK2('W', 'Z'): return F_WX + 2;
+    case PACK3('P', 'S', 'I'): return F_PSI;
+    case PACK5('T', 'H', 'E', 'T', 'A'): return F_PSI + 1;
+    case PACK3('P', 'H', 'I'): return F_PSI + 2;
+    case PACK3('Y', 'A', 'W'): return F_YAW;
+    case PACK5('P', 'I', 'T', 'C', 'H'): return F_YAW + 1;
+    case PACK4('R', 'O', 'L', 'L'): return F_YAW + 2;
+    case PACK5('A', 'R', 'R', 'A', 'Y'): return F_ARRAY;
     default: return -1;
     }
 }
@@ -95,13 +107,33 @@ static const hx_frame *marker_world(const hx_state *s, int id, hx_frame *scratch
     return index < 0 ? NULL : hx_state_marker(s, index, scratch);
 }
 
+/* The numbers of the Reference_Array of type IC with id: its count, or -1. */
+static int array_numbers(const hx_model *m, int id, double *values)
+{
+    const int k = hx_model_array(m, id);
+    if (k < 0 || m->arrays[k].type != HX_ARRAY_IC)
+        return -1;
+    memcpy(values, m->arrays[k].numbers, sizeof(double) * (size_t)m->arrays[k].count);
+    return m->arrays[k].count;
+}
+
+/* The 3-2-1 (yaw, pitch, roll) angles of a rotation matrix: R = Rz Ry Rx. */
+static void angles321(const double R[9], double a[3])
+{
+    a[0] = atan2(R[3], R[0]);
+    a[1] = atan2(-R[6], sqrt(R[0] * R[0] + R[3] * R[3]));
+    a[2] = atan2(R[7], R[8]);
+}
+
 int hx_answer(const hx_state *s, const hx_query *q, const int *ipar, double *values)
 {
     const int code = q->function, nsize = q->nsize;
-    const int array_function = code >= F_DISP && code <= F_RVEL;
+    const int array_function = code >= F_DISP && code <= F_ARRAY;
     if (s == NULL || code < 0 || array_function != q->is_array || nsize < 1 ||
         nsize > max_nsize[code] || ipar == NULL || ipar[0] == 0)
         return -1;
+    if (code == F_ARRAY)
+        return array_numbers(s->model, ipar[0], values);
     hx_frame scratch[4];
     const hx_frame *f[4];
     for (int k = 0; k < 4; ++k) {
@@ -142,7 +174,15 @@ int hx_answer(const hx_state *s, const hx_query *q, const int *ipar, double *val
     default:
         break;
     }
-    if (code < F_AX) {
+    if (code >= F_PSI) {
+        double angles[3];
+        hx_relative_rotation(I, J, R);
+        if (code < F_YAW)
+            hx_euler313(R, angles);
+        else
+            angles321(R, angles);
+        values[0] = angles[(code - F_PSI) % 3];
+    } else if (code < F_AX) {
         hx_displacement(I, J, K, v);
         values[0] = v[code - F_DX];
     } else if (code < F_VX) {
