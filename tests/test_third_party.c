@@ -206,6 +206,34 @@ static void vector_routines_run_as_the_gfosub_of_their_law(void **state)
     sim_close(&two);
 }
 
+/* SFOSUB (Force_Scalar_TwoBody FORCE and TORQUE): check passes; a line spring
+ * on a slider and a twist spring on a hinge oscillate as spring-masses do,
+ * x - x0 = 2 (cos 1000 t - 1), a - a0 = 0.1 (cos 316.23 t - 1) (tp_scalar.xml). */
+static void scalar_routines_act_along_the_line_and_about_z(void **state)
+{
+    (void)state;
+    expect("scalar", 0, NEEDLES("Force_Scalar_TwoBody 1 (LINE_SPRING in libtp_scalar.so)",
+                                "Force_Scalar_TwoBody 2 (TWIST_SPRING in libtp_scalar.so)",
+                                "2 passed, 0 failed"),
+           NEEDLES("FAIL", "never writes"));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    sim s;
+    sim_run(&s, THIRD_PARTY_DIR "/tp_scalar.xml", HX_METHOD_DOPRI5, 1e-11, 0.01, 0.001);
+    const int x = sim_joint_q(&s, 5), a = sim_joint_q(&s, 6);
+    double worst = 0.0;
+    for (int row = 0; row < s.path.rows; ++row) {
+        const double t = s.path.t[row];
+        worst = fmax(worst, fabs(sim_state(&s, row, x) - sim_state(&s, 0, x) -
+                                 2.0 * (cos(1000.0 * t) - 1.0)) / 2.0);
+        worst = fmax(worst, fabs(sim_state(&s, row, a) - sim_state(&s, 0, a) -
+                                 0.1 * (cos(sqrt(1e5) * t) - 1.0)) / 0.1);
+    }
+    printf("  SFOSUB line and twist springs over 0.01 s: off the closed form by %.2g of the"
+           " amplitude\n", worst);
+    assert_true(s.path.rows > 5 && worst < 1e-6);
+    sim_close(&s);
+}
+
 static void a_refused_query_is_reported(void **state)
 {
     (void)state;
@@ -251,6 +279,7 @@ int main(void)
         cmocka_unit_test(a_utility_not_offered_is_named),
         cmocka_unit_test(host_habits_are_those_of_a_solver),
         cmocka_unit_test(vector_routines_run_as_the_gfosub_of_their_law),
+        cmocka_unit_test(scalar_routines_act_along_the_line_and_about_z),
         cmocka_unit_test(a_wrong_couxx_is_reported_as_couxx),
         cmocka_unit_test(a_wrong_couxx2_is_named_by_row_and_column),
     };

@@ -2,6 +2,7 @@
 #include "host/binding.h"
 
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -137,8 +138,9 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
         b->kind = gfo ? HX_BIND_GFOSUB : HX_BIND_FIESUB;
         b->index = k;
         b->id = f->id;
-        b->element = gfo ? "Force_Vector_TwoBody" : "Force_Field";
-        static const char *const vector_names[3] = {"GFOSUB", "VFOSUB", "VTOSUB"};
+        b->element = hx_force_element_name(f);
+        static const char *const vector_names[5] = {"GFOSUB", "VFOSUB", "VTOSUB", "SFOSUB",
+                                                    "SFOSUB"};
         b->part = f->part;
         b->names[0] = f->user.fnc_name ? f->user.fnc_name
                       : gfo                ? vector_names[f->part]
@@ -146,7 +148,7 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
         if (bind_one(m, bs, b, &f->user, f->line, msg) != 0)
             return -1;
         /* a FIESUB twin answers all six: only a GFOSUB's can stand in for it */
-        if (gfo && f->part == HX_VECTOR_BOTH && bind_twin(bs, b) != 0)
+        if (gfo && f->part == HX_OUTPUT_FORCE_AND_TORQUE && bind_twin(bs, b) != 0)
             return hx_fail(msg, "out of memory");
     }
     for (int k = 0; k < m->nstate_eqns; ++k) {
@@ -243,6 +245,33 @@ static void fill(double *out, int n, double value)
         out[k] = value;
 }
 
+/* An SFOSUB's value as force and torque in world axes (a Force_Scalar_TwoBody
+ * has no reference marker): along the line from J to I, positive pushing I
+ * away (none where they meet), or about J's z axis. An unwritten value (NaN
+ * in check's probe) is the first output's. */
+static void scalar_output(const hx_binding *b, const hx_state *s, double value, double out[6])
+{
+    const hx_force *f = &b->model->forces[b->index];
+    fill(out, 6, 0.0);
+    if (isnan(value)) {
+        out[0] = value;
+        return;
+    }
+    hx_frame scratch[2];
+    const hx_frame *I = hx_state_marker(s, f->i_marker, &scratch[0]);
+    const hx_frame *J = hx_state_marker(s, f->j_marker, &scratch[1]);
+    if (b->part == HX_OUTPUT_SCALAR_TORQUE) {
+        for (int k = 0; k < 3; ++k)
+            out[3 + k] = value * J->R[3 * k + 2];
+        return;
+    }
+    double r[3] = {I->p[0] - J->p[0], I->p[1] - J->p[1], I->p[2] - J->p[2]};
+    const double length = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    if (length > 0.0)
+        for (int k = 0; k < 3; ++k)
+            out[k] = value * r[k] / length;
+}
+
 /* The caller's record (set up with hx_binding_call_init) or a default one. */
 static void begin(hx_binding *b, int which, const hx_state *s, int iflag, hx_call *call,
                   hx_call *local)
@@ -285,12 +314,16 @@ void hx_call_gfosub(hx_binding *b, const hx_state *s, int dflag, int iflag, doub
     if (b->log != NULL)
         log_call(b, 0, t, iflag, dflag, NULL, 0);
     fill(result, 6, b->output_fill);
-    if (b->part == HX_VECTOR_TORQUE) { /* VTOSUB's three values are the torque */
+    if (b->part >= HX_OUTPUT_SCALAR_FORCE) {
+        double value = b->output_fill;
+        b->gfosub(&id, &t, b->par, &npar, &df, &flag, &value);
+        scalar_output(b, s, value, result);
+    } else if (b->part == HX_OUTPUT_TORQUE) { /* VTOSUB's three values are the torque */
         b->gfosub(&id, &t, b->par, &npar, &df, &flag, result + 3);
         fill(result, 3, 0.0);
     } else {
         b->gfosub(&id, &t, b->par, &npar, &df, &flag, result);
-        if (b->part == HX_VECTOR_FORCE)
+        if (b->part == HX_OUTPUT_FORCE)
             fill(result + 3, 3, 0.0);
     }
     if (b->log != NULL)

@@ -43,7 +43,7 @@ typedef struct hx_binding {
     char symbols[5][HX_ENTRY_NAME_MAX];
     usrsub_coupler_fn *coupler[3]; /* phi, dphi/dM, d2phi/dM2 */
     usrsub_gfosub_fn *gfosub; /* GFOSUB, or VFOSUB / VTOSUB (part): three values */
-    enum hx_vector_part part;
+    enum hx_user_output part;
     usrsub_fiesub_fn *fiesub;
     usrsub_yfosub_fn *yfosub;
     /* YFOXX, YFOXU, YFOYX, YFOYU (names[1..4]); NULL when the library does not

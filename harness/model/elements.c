@@ -384,7 +384,7 @@ static void build_force_vector(hx_draft *d, const hx_element_read *e)
     hx_force *f = push_force(d, e, HX_FORCE_GFOSUB);
     if (f == NULL)
         return;
-    f->part = (enum hx_vector_part)part;
+    f->part = (enum hx_user_output)part;
     raw_refs *refs = &d->rforces[d->m->nforces - 1];
     refs->ids[0] = hx_attr_int(e, "i_marker_id", 0);
     refs->ids[1] = hx_attr_int(e, "j_floating_marker_id", 0);
@@ -466,7 +466,26 @@ static void build_vector_load(hx_draft *d, const hx_element_read *e)
 static const hx_attr_spec scalar_load_attrs[] = {
     ID, REQUIRED("type", HX_ATTR_TEXT), REQUIRED("i_marker_id", HX_ATTR_INT),
     REQUIRED("j_marker_id", HX_ATTR_INT), {"is_action_only", HX_ATTR_BOOL, 0}, TEXT("val"),
-    TEXT("val_expression"), END};
+    TEXT("val_expression"), USER_CALL, END};
+
+/* A Force_Scalar_TwoBody with a user routine (SFOSUB): a user force element
+ * whose one value acts along the line from J to I, or about J's z axis. */
+static void build_scalar_user_force(hx_draft *d, const hx_element_read *e, int torque)
+{
+    if (hx_attr_number(e, "is_action_only", 0.0) != 0.0) {
+        hx_draft_fail(d, e->line, "Force_Scalar_TwoBody %d: is_action_only with a user routine"
+                      " is not one the harness runs (it applies the reaction on J)", e->id);
+        return;
+    }
+    hx_force *f = push_force(d, e, HX_FORCE_GFOSUB);
+    if (f == NULL)
+        return;
+    f->part = torque ? HX_OUTPUT_SCALAR_TORQUE : HX_OUTPUT_SCALAR_FORCE;
+    raw_refs *refs = &d->rforces[d->m->nforces - 1];
+    refs->ids[0] = hx_attr_int(e, "i_marker_id", 0);
+    refs->ids[1] = hx_attr_int(e, "j_marker_id", 0);
+    hx_draft_user_call(d, e, &f->user);
+}
 
 static void build_scalar_load(hx_draft *d, const hx_element_read *e)
 {
@@ -478,6 +497,11 @@ static void build_scalar_load(hx_draft *d, const hx_element_read *e)
         return;
     }
     const char *value = hx_attr_present(e, "val") ? "val" : "val_expression";
+    if (!hx_attr_present(e, value) && (hx_attr_present(e, "usrsub_dll_name") ||
+                                       hx_attr_present(e, "usrsub_param_string"))) {
+        build_scalar_user_force(d, e, torque);
+        return;
+    }
     if (!hx_attr_present(e, value)) {
         hx_draft_fail(d, e->line, "Force_Scalar_TwoBody %d: attribute val or val_expression is"
                       " missing", e->id);

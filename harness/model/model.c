@@ -75,7 +75,9 @@ int hx_model_find_state_eqn(const hx_model *m, const char *text, int *index, hx_
 
 const char *hx_force_element_name(const hx_force *f)
 {
-    return f->interface == HX_FORCE_GFOSUB ? "Force_Vector_TwoBody" : "Force_Field";
+    if (f->interface == HX_FORCE_FIESUB)
+        return "Force_Field";
+    return f->part >= HX_OUTPUT_SCALAR_FORCE ? "Force_Scalar_TwoBody" : "Force_Vector_TwoBody";
 }
 
 int hx_model_find_force(const hx_model *m, const char *text, int *index, hx_message *msg)

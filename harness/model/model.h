@@ -74,15 +74,20 @@ typedef struct hx_coupler {
 } hx_coupler;
 
 enum hx_force_interface { HX_FORCE_GFOSUB, HX_FORCE_FIESUB };
-/* What a Force_Vector_TwoBody's routine returns: its type ForceAndTorque
- * (GFOSUB: six values), ForceOnly (VFOSUB: the force) or TorqueOnly (VTOSUB:
- * the torque). */
-enum hx_vector_part { HX_VECTOR_BOTH, HX_VECTOR_FORCE, HX_VECTOR_TORQUE };
+/* What a user force element's routine returns: a Force_Vector_TwoBody's by
+ * its type, ForceAndTorque (GFOSUB: six values), ForceOnly (VFOSUB: the
+ * force) or TorqueOnly (VTOSUB: the torque); a Force_Scalar_TwoBody's by its
+ * type (SFOSUB: one value), a force along the line from J to I or a torque
+ * about J's z axis. */
+enum hx_user_output {
+    HX_OUTPUT_FORCE_AND_TORQUE, HX_OUTPUT_FORCE, HX_OUTPUT_TORQUE,
+    HX_OUTPUT_SCALAR_FORCE, HX_OUTPUT_SCALAR_TORQUE
+};
 
 typedef struct hx_force {
     int id;
     enum hx_force_interface interface; /* Force_Vector_TwoBody or Force_Field */
-    enum hx_vector_part part;          /* Force_Vector_TwoBody's type */
+    enum hx_user_output part;          /* what its routine returns */
     int i_marker, j_marker;  /* indices; for GFOSUB j is the floating J marker */
     int ref_marker;          /* index of the frame of the results, -1: world */
     hx_user_call user;

@@ -261,7 +261,9 @@ static int resolve_forces(hx_draft *r)
         const char *owner = hx_force_element_name(f);
         if (marker_ref(r, refs->ids[0], f->line, owner, f->id, "i_marker_id", &f->i_marker) != 0 ||
             marker_ref(r, refs->ids[1], f->line, owner, f->id,
-                       f->interface == HX_FORCE_GFOSUB ? "j_floating_marker_id" : "j_marker_id",
+                       f->interface == HX_FORCE_GFOSUB && f->part < HX_OUTPUT_SCALAR_FORCE
+                           ? "j_floating_marker_id"
+                           : "j_marker_id",
                        &f->j_marker) != 0)
             return -1;
         f->ref_marker = -1;
