@@ -542,6 +542,28 @@ static void a_mount_splits_the_deflection(void **state)
     }
     usrsub_bushing_free(b);
 
+    /* an undamped mount where the rubber's C0 is the direction's only rate
+     * term: balanced; with C0 = 0 it follows */
+    static const char rubber_mount[] =
+        "[GLOBAL]\nCOUPLING = 'UNCOUPLED'\n[DIRECTIONS]\n(ACTIVITY)\n"
+        "{ formulation FX FY FZ TX TY TZ }\n'CONSTANT_STIFFNESS' 0 1 0 0 0 0\n"
+        "'RUBBER_DAMPING' 0 1 0 0 0 0\n[CONSTANT_STIFFNESS_FY]\nK = 1000\n"
+        "[RUBBER_DAMPING_FY]\nNPRELOADS = 1\n(PRELOAD_1)\nR = 30\nK0 = 400\nC0 = %g\n"
+        "[MOUNT_STIFFNESS]\n{ direction K C }\nFY 2000 0\n";
+    for (int damped = 0; damped < 2; ++damped) {
+        snprintf(body, sizeof body, rubber_mount, damped ? 2.0 : 0.0);
+        b = bushing(damped ? "rubber_mount.gbs" : "rubber_k_mount.gbs", body);
+        usrsub_bushing_state_layout(b, &l);
+        assert_int_equal(l.nmount, damped);
+        assert_int_equal(l.nfollow, !damped);
+        assert_int_equal(l.n, 1 + damped);
+        const double ur[12] = {0, 0.4, 0, 0, 0, 0, 0, -3.0, 0, 0, 0, 0};
+        const double xr[2] = {0.05, -0.02};
+        const double worst = partials_error(b, NULL, ur, xr);
+        assert_true(worst < 1e-6);
+        usrsub_bushing_free(b);
+    }
+
     /* a direction without rate terms: the undamped mount follows at once */
     b = bushing("elastic_mount.gbs",
                 "[GLOBAL]\nCOUPLING = 'UNCOUPLED'\n[DIRECTIONS]\n(ACTIVITY)\n"
@@ -655,7 +677,7 @@ static void the_series_mount_has_the_closed_form_stiffness(void **state)
 
 /* ---- a rotational mount in series with friction: one answer ------------------------- */
 
-/* The bushing of the issue's audit, written in a length unit of L mm (1:
+/* The bushing of docs/sources.md §3.8's audit, written in a length unit of L mm (1:
  * mm, 1000: m): friction with the bristle damping that fades, a damped mount
  * about z of 2e5 N mm/rad and 10 N mm s/rad, a damped x mount. */
 static usrsub_bushing *friction_mount_bushing(const char *name, double L, const double *model)
@@ -737,6 +759,13 @@ static void a_rotational_mount_with_friction_has_one_answer(void **state)
            " 1e-10 mm; the file in metres off the one in mm by %.2g\n", jump, units);
     assert_true(jump < 1e-4);
     assert_true(units < 1e-9);
+    /* the node's frequency is 1e4 rad/s in any time unit: J = K / 1e8 s^2 in a
+     * model in seconds, K / 100 ms^2 in one in milliseconds */
+    const double model_ms[USRSUB_UNIT_COUNT] = {1e-3, 1.0, 1.0, 1e-3, 1.0};
+    usrsub_bushing *ms = friction_mount_bushing("one_answer_ms.gbs", 1.0, model_ms);
+    assert_close(mm->dir[5].mount_inertia, 2e5 / 1e8, 1e-12, 0);
+    assert_close(ms->dir[5].mount_inertia, 2e5 / 100.0, 1e-12, 0);
+    usrsub_bushing_free(ms);
     usrsub_bushing_free(mm);
     usrsub_bushing_free(m);
 }

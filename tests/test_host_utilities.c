@@ -118,6 +118,14 @@ static void values_worked_by_hand(void **state)
     assert_close(v[0], 1.0, 0, 1e-15);
     c_forsin(1.0, 0.0, M_PI / 2, fc, 2, 0, v, &err);
     assert_close(v[0], 3.0, 1e-15, 0);
+    /* the harmonics' index: 1 + 2 f(pi/4) + 3 f(2 pi/4) */
+    const double f3[3] = {1, 2, 3};
+    c_forcos(1.0, 0.0, M_PI / 4, f3, 3, 0, v, &err);
+    assert_close(v[0], 1.0 + sqrt(2.0), 1e-15, 0);
+    c_forsin(1.0, 0.0, M_PI / 4, f3, 3, 0, v, &err);
+    assert_close(v[0], 4.0 + sqrt(2.0), 1e-15, 0);
+    c_forcos(1.0, 0.0, M_PI / 4, f3, 3, 1, v, &err); /* -2 w sin(w) - 3 (2w) sin(2w) */
+    assert_close(v[0], -2 * M_PI / 4 * sin(M_PI / 4) - 3 * M_PI / 2, 1e-14, 0);
     c_shf(1.0, 0.0, 2.0, M_PI, M_PI / 2, 1.0, 0, v, &err);
     assert_close(v[0], 3.0, 1e-15, 0);
 }
@@ -194,6 +202,10 @@ static void refused_arguments_set_the_flag(void **state)
     c_impact(0.5, 0, 1, -1, 2, 1, 0.1, 0, v, &err); /* k < 0 */
     assert_int_equal(err, 1);
     c_bistop(0.5, 0, 2, 1, 1, 2, 1, 0.1, 0, v, &err); /* x2 < x1 */
+    assert_int_equal(err, 1);
+    c_step(NAN, 0.0, 0, 1.0, 1, 0, v, &err); /* a non-finite argument */
+    assert_int_equal(err, 1);
+    c_impact(0.5, INFINITY, 1, 1, 2, 1, 0.1, 0, v, &err);
     assert_int_equal(err, 1);
     c_poly(0.5, 0, par, 0, 0, v, &err); /* no coefficient */
     assert_int_equal(err, 1);
@@ -278,6 +290,29 @@ static void rotations_convert_between_every_system(void **state)
     }
     printf("  %d systems, 40 random rotations: every round trip within %.2g\n", ns, worst);
     assert_true(worst < 1e-13);
+
+    /* the sequences where their first and last axes line up (middle angle 0
+     * or pi of a proper Euler sequence, +-pi/2 of a Tait-Bryan one), and just
+     * off it: the angles differ, the rotation comes back */
+    double lock = 0.0;
+    for (int a = 7; a < ns; ++a) {
+        const int proper = systems[a][1] == systems[a][3];
+        const double middles[3] = {proper ? 0.0 : M_PI / 2, proper ? M_PI : -M_PI / 2,
+                                   (proper ? M_PI : M_PI / 2) - 1.5e-12};
+        for (int k = 0; k < 3; ++k) {
+            const double angles[3] = {0.3, middles[k], -0.4};
+            double R[9], back[3], R2[9];
+            int istat = -1;
+            matrix_of(systems[a], angles, R);
+            c_rcnvrt("COSINES", R, systems[a], back, &istat);
+            assert_int_equal(istat, 0);
+            matrix_of(systems[a], back, R2);
+            for (int i = 0; i < 9; ++i)
+                lock = fmax(lock, fabs(R2[i] - R[i]));
+        }
+    }
+    printf("  12 sequences with their axes lined up: every round trip within %.2g\n", lock);
+    assert_true(lock < 1e-11);
 
     /* in place, blank-padded as from Fortran */
     double c[9] = {0.3, 1.1, -0.4};

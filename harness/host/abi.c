@@ -121,20 +121,26 @@ void c_gtaray(int id, double *array, int *number, int *istat)
 {
     const hx_model *m = bound != NULL ? bound->model : NULL;
     const int k = m != NULL ? hx_model_array(m, id) : -1;
-    if (k < 0 || m->arrays[k].type != HX_ARRAY_IC || array == NULL || number == NULL) {
+    if (array == NULL || number == NULL) {
+        hx_utility_refused(HX_UTILITY_GTARAY, "no array or count to answer in (a null pointer)");
+        if (istat != NULL)
+            *istat = 1;
+        return;
+    }
+    if (k < 0 || m->arrays[k].type != HX_ARRAY_IC) {
         hx_utility_refused(HX_UTILITY_GTARAY, "id %d, which names no Reference_Array of type IC"
                            " (the arrays whose numbers the model holds)", id);
         if (istat != NULL)
             *istat = 1;
         return;
     }
+    /* number is an output only, as in a solver (callers often leave it
+     * unset): the whole array, as long as the model wrote it */
     const hx_array *a = &m->arrays[k];
-    /* as with c_gtstrg: a positive count in is the room the caller has */
-    const int room = *number > 0 && *number < a->count ? *number : a->count;
-    memcpy(array, a->numbers, sizeof(double) * (size_t)room);
-    *number = room;
+    memcpy(array, a->numbers, sizeof(double) * (size_t)a->count);
+    *number = a->count;
     if (istat != NULL)
-        *istat = room < a->count; /* 1: truncated */
+        *istat = 0;
 }
 
 void c_getstm(double *time)

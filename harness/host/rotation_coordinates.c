@@ -10,11 +10,10 @@
  *   EULER    = B313 (psi theta phi, the angles DISP returns); BRYANT = B123;
  *   YPR      = B321 (yaw pitch roll);
  *   AXAYAZ   3: space-fixed X, then Y, then Z: A = Rz(az) Ry(ay) Rx(ax).
- * Angles come back in (-pi, pi], the middle one of a proper Euler sequence in
+ * Angles come back in [-pi, pi], the middle one of a proper Euler sequence in
  * [0, pi], of a Tait-Bryan one in [-pi/2, pi/2]. coord2 may be coord1.
  */
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
 #include <strings.h>
 
@@ -183,6 +182,11 @@ void c_rcnvrt(const char *sys1, const double *coord1, const char *sys2, double *
 {
     system_spec from, to;
     *istat = 0;
+    if (coord1 == NULL || coord2 == NULL) {
+        hx_utility_refused(HX_UTILITY_RCNVRT, "no coordinates (a null coord1 or coord2)");
+        *istat = 1;
+        return;
+    }
     if (parse_system(sys1, &from) != 0 || parse_system(sys2, &to) != 0) {
         hx_utility_refused(HX_UTILITY_RCNVRT, "systems '%s' to '%s' (COSINES EULPAR RODPAR"
                            " EULER BRYANT YPR AXAYAZ Bijk)", sys1 != NULL ? sys1 : "(null)",

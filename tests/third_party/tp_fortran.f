@@ -5,7 +5,7 @@ C     called by their Fortran names, names blank-padded to their length.
 C
 C     USER(i_marker, j_marker): a spring-damper in x (1000 N/mm, 2 N s/mm)
 C     faded in over 0.1 s by STEP, a stop below z = 0 by IMPACT, and a
-C     torsion spring on the Euler angles turned to cosines by RCNVRT.
+C     torsion spring on AX, AY, AZ turned to cosines by RCNVRT (AXAYAZ).
 C     Every read is the same in the dependency pass. A refused query is
 C     reported through ERRMES. A correct verifier must PASS it.
       SUBROUTINE GFOSUB(ID, TIME, PAR, NPAR, DFLAG, IFLAG, RESULT)

@@ -9,9 +9,10 @@
  * Newton's method on the law's Jacobian; the partials with respect to the
  * inputs p = (d, v, x) follow from the implicit function theorem,
  * dw/dp = -(dG/dw)^-1 dG/dp. An inertial mount's s and sdot are states, so
- * its sddot is explicit. The balance is monotone in w (dG/dw is the mounts'
- * and the bushing's damping, or the springs', none of them friction's), so
- * its root is one.
+ * its sddot is explicit. Friction enters no balanced row: dG/dw is the
+ * mounts' and the bushing's damping (or the springs'), so with rising
+ * characteristics and uncoupled rows the balance rises in w and its root is
+ * one.
  */
 #include "usrsub/core/bushing_states.h"
 
