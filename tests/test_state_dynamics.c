@@ -70,16 +70,21 @@ static void state_element(char *out, size_t size, int nstate, const char *user,
  * 1000 /mm, a presliding mode of 1e4 rad/s) are critically damped, and the
  * transition velocity (10 mm/s) is above the presliding rates: a torque
  * applied at once would otherwise break the bushing loose below mu_s N r_B,
- * as LuGre's g(|w|) falls while the body first moves. */
-static const char *friction_model(const char *name, double torque)
+ * as LuGre's g(|w|) falls while the body first moves. mount: more of the
+ * .gbs (a [MOUNT_STIFFNESS] block, or ""); nstate the element's states;
+ * loads the Force_Vector_OneBody elements. Writes NAME.gbs and NAME.xml. */
+static const char *hinged_friction_model(const char *name, const char *mount, int nstate,
+                                         const char *loads)
 {
-    static const char gbs[] =
-        GBS_HEAD "'CONSTANT_STIFFNESS' 0 1 0 0 0 0\n[CONSTANT_STIFFNESS_FY]\nK = 1000\n"
-        "[PRELOAD_OFFSET_SCALE]\n{ direction P Q H V }\nFY 1000 0 1 1\n"
-        "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.5\nMU_DYNAMIC = 0.3\nTRANSITION_VELOCITY = 10\n"
-        "BRISTLE_STIFFNESS = 1000\nBRISTLE_DAMPING = 0.2\nBALL_RADIUS = 10\n";
-    char element[4096], xml[8192];
-    state_element(element, sizeof element, 3, "1, 301", USRSUB_LIBRARY);
+    char gbs[2048], element[4096], xml[8192];
+    snprintf(gbs, sizeof gbs, GBS_HEAD "'CONSTANT_STIFFNESS' 0 1 0 0 0 0\n"
+             "[CONSTANT_STIFFNESS_FY]\nK = 1000\n"
+             "[PRELOAD_OFFSET_SCALE]\n{ direction P Q H V }\nFY 1000 0 1 1\n"
+             "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.5\nMU_DYNAMIC = 0.3\nTRANSITION_VELOCITY = 10\n"
+             "BRISTLE_STIFFNESS = 1000\nBRISTLE_DAMPING = 0.2\nBALL_RADIUS = 10\n%s", mount);
+    char gbs_name[128];
+    snprintf(gbs_name, sizeof gbs_name, "%s.gbs", name);
+    state_element(element, sizeof element, nstate, "1, 301", USRSUB_LIBRARY);
     snprintf(xml, sizeof xml,
              "<MotionSolve><Model>\n" UNITS
              "<Reference_String id=\"301\" string=\"%s\"/>\n<Body_Ground id=\"1\"/>\n"
@@ -87,16 +92,26 @@ static const char *friction_model(const char *name, double torque)
              "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1000\" inertia_yy=\"1000\""
              " inertia_zz=\"1000\"/>\n<Reference_Marker id=\"20\" body_id=\"2\"/>\n"
              "<Constraint_Joint id=\"5\" type=\"REVOLUTE\" i_marker_id=\"20\" j_marker_id=\"10\"/>\n"
-             "%s<Force_Vector_OneBody id=\"1\" marker_id=\"20\" tz_expression=\"%g\"/>\n"
-             "</Model></MotionSolve>\n", test_write_file("friction.gbs", gbs), element, torque);
-    return test_write_file(name, xml);
+             "%s%s</Model></MotionSolve>\n", test_write_file(gbs_name, gbs), element, loads);
+    char xml_name[128];
+    snprintf(xml_name, sizeof xml_name, "%s.xml", name);
+    return test_write_file(xml_name, xml);
+}
+
+/* The hinged body with a constant torque about z. */
+static const char *friction_model(const char *name, double torque)
+{
+    char load[256];
+    snprintf(load, sizeof load, "<Force_Vector_OneBody id=\"1\" marker_id=\"20\""
+             " tz_expression=\"%g\"/>\n", torque);
+    return hinged_friction_model(name, "", 3, load);
 }
 
 static void friction_holds_below_breakaway(void **state)
 {
     (void)state;
     sim s;
-    sim_run(&s, friction_model("stick.xml", 4000.0), HX_METHOD_BDF, 1e-6, 0.05, 0.001);
+    sim_run(&s, friction_model("stick", 4000.0), HX_METHOD_BDF, 1e-6, 0.05, 0.001);
     const int q = sim_joint_q(&s, 5), u = sim_joint_u(&s, 5), last = s.path.rows - 1;
     /* presliding: the bristles take the torque, sigma0 z r_B N = T, and the
      * body stops after turning by a few z / r_B = 4e-5 rad */
@@ -113,7 +128,7 @@ static void friction_slides_at_mu_d_above_breakaway(void **state)
 {
     (void)state;
     sim s;
-    sim_run(&s, friction_model("slide.xml", 6000.0), HX_METHOD_BDF, 1e-6, 0.04, 0.001);
+    sim_run(&s, friction_model("slide", 6000.0), HX_METHOD_BDF, 1e-6, 0.04, 0.001);
     const int u = sim_joint_u(&s, 5);
     /* sliding: (T - mu_d N r_B) ucf / Izz = (6000 - 3000) 1000 / 1000 */
     const double acceleration = (sim_state(&s, 40, u) - sim_state(&s, 20, u)) / 0.02;
@@ -132,30 +147,17 @@ static void friction_slides_at_mu_d_above_breakaway(void **state)
 static void a_mount_in_series_with_friction_integrates_smoothly(void **state)
 {
     (void)state;
-    static const char gbs[] =
-        GBS_HEAD "'CONSTANT_STIFFNESS' 0 1 0 0 0 0\n[CONSTANT_STIFFNESS_FY]\nK = 1000\n"
-        "[PRELOAD_OFFSET_SCALE]\n{ direction P Q H V }\nFY 1000 0 1 1\n"
-        "[FRICTION]\nACTIVE = 1\nMU_STATIC = 0.5\nMU_DYNAMIC = 0.3\nTRANSITION_VELOCITY = 10\n"
-        "BRISTLE_STIFFNESS = 1000\nBRISTLE_DAMPING = 0.2\nBALL_RADIUS = 10\n"
-        "[MOUNT_STIFFNESS]\n{ direction K C }\nTZ 2e5 10\n";
-    char element[4096], xml[8192];
-    state_element(element, sizeof element, 5, "1, 301", USRSUB_LIBRARY);
-    snprintf(xml, sizeof xml,
-             "<MotionSolve><Model>\n" UNITS
-             "<Reference_String id=\"301\" string=\"%s\"/>\n<Body_Ground id=\"1\"/>\n"
-             "<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
-             "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1000\" inertia_yy=\"1000\""
-             " inertia_zz=\"1000\"/>\n<Reference_Marker id=\"20\" body_id=\"2\"/>\n"
-             "<Constraint_Joint id=\"5\" type=\"REVOLUTE\" i_marker_id=\"20\" j_marker_id=\"10\"/>\n"
-             "%s<Force_Vector_OneBody id=\"1\" marker_id=\"20\" tz_expression=\"STEP(TIME, 0, 0,"
-             " 0.05, 6000)\"/>\n<Force_Vector_OneBody id=\"2\" marker_id=\"20\""
-             " tz_expression=\"STEP(TIME, 0.05, 0, 0.07, -6000)\"/>\n"
-             "<Force_Vector_OneBody id=\"3\" marker_id=\"20\" tz_expression=\"STEP(TIME, 0.15, 0,"
-             " 0.2, -6000)\"/>\n<Force_Vector_OneBody id=\"4\" marker_id=\"20\""
-             " tz_expression=\"STEP(TIME, 0.2, 0, 0.22, 6000)\"/>\n</Model></MotionSolve>\n",
-             test_write_file("friction_mount.gbs", gbs), element);
+    static const char loads[] =
+        "<Force_Vector_OneBody id=\"1\" marker_id=\"20\" tz_expression=\"STEP(TIME, 0, 0,"
+        " 0.05, 6000)\"/>\n<Force_Vector_OneBody id=\"2\" marker_id=\"20\""
+        " tz_expression=\"STEP(TIME, 0.05, 0, 0.07, -6000)\"/>\n"
+        "<Force_Vector_OneBody id=\"3\" marker_id=\"20\" tz_expression=\"STEP(TIME, 0.15, 0,"
+        " 0.2, -6000)\"/>\n<Force_Vector_OneBody id=\"4\" marker_id=\"20\""
+        " tz_expression=\"STEP(TIME, 0.2, 0, 0.22, 6000)\"/>\n";
+    const char *model = hinged_friction_model(
+        "friction_mount", "[MOUNT_STIFFNESS]\n{ direction K C }\nTZ 2e5 10\n", 5, loads);
     sim s;
-    sim_run(&s, test_write_file("friction_mount.xml", xml), HX_METHOD_BDF, 1e-6, 0.35, 0.001);
+    sim_run(&s, model, HX_METHOD_BDF, 1e-6, 0.35, 0.001);
     const hx_integrator_stats *st = &s.result.stats;
     const int u = sim_joint_u(&s, 5);
     double fastest = 0.0;
