@@ -14,23 +14,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "tokens.h"
+
 enum { LINE_MAX_CHARS = 1 << 20, SHOWN = 10 };
 
-static char *token(char **s)
-{
-    char *p = *s;
-    while (*p == ' ')
-        ++p;
-    if (*p == '\0')
-        return NULL;
-    char *start = p;
-    while (*p != ' ' && *p != '\0')
-        ++p;
-    if (*p == ' ')
-        *p++ = '\0';
-    *s = p;
-    return start;
-}
 
 static int number(const char *t, double *v)
 {
@@ -95,7 +82,9 @@ int main(int argc, char **argv)
             const double relative = isnan(a) || isnan(b) ? INFINITY : fabs(a - b) / scale;
             if (!(relative <= worst)) {
                 worst = relative;
-                snprintf(worst_at, sizeof worst_at, "line %ld token %d: %s against %s", line, k, ta, tb);
+                /* numbers as printed: 17 digits and an exponent fit in 32 */
+                snprintf(worst_at, sizeof worst_at, "line %ld token %d: %.32s against %.32s", line, k,
+                         ta, tb);
             }
             if (!(relative <= rtol) && differences++ < SHOWN)
                 printf("compare_outputs: line %ld token %d: %s against %s (relative %.3g)\n", line, k,

@@ -34,6 +34,7 @@
 #include <string.h>
 
 #include "asutility.h"
+#include "tokens.h"
 #include "usrsub/solver_abi.h"
 
 #ifdef _WIN32
@@ -279,22 +280,6 @@ static void call_state(run *r, int c, const point *p, int id, double *par, int n
 
 /* ---- the cases file ------------------------------------------------------------------ */
 
-/* The next space-separated token of *s, or NULL. */
-static char *token(char **s)
-{
-    char *p = *s;
-    while (*p == ' ')
-        ++p;
-    if (*p == '\0')
-        return NULL;
-    char *start = p;
-    while (*p != ' ' && *p != '\0')
-        ++p;
-    if (*p == ' ')
-        *p++ = '\0';
-    *s = p;
-    return start;
-}
 
 /* Up to max numbers from *s; -1 when a token is no number. */
 static int read_numbers(char **s, double *v, int max, int *n)
