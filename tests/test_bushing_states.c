@@ -39,17 +39,24 @@ static const char header[] =
     "[HEADER]\nFILE_TYPE = 'gbs'\n[UNITS]\nLENGTH = 'mm'\nANGLE = 'radian'\nFORCE = 'newton'\n"
     "MASS = 'kg'\nTIME = 'second'\n";
 
-/* A bushing from its text after [UNITS]; fails the test when it is refused. */
+/* A bushing read from a whole file's text, in a model of the given units
+ * (NULL: none declared); fails the test when it is refused. */
+static usrsub_bushing *read_bushing(const char *name, const char *text, const double *model)
+{
+    usrsub_bushing *b;
+    usrsub_read_report report = {0};
+    usrsub_message msg;
+    if (usrsub_bushing_read(test_write_file(name, text), model, &b, &report, &msg) != 0)
+        fail_msg("%s", msg.text);
+    return b;
+}
+
+/* A bushing from its text after [UNITS]. */
 static usrsub_bushing *bushing(const char *name, const char *body)
 {
     char text[8192];
     snprintf(text, sizeof text, "%s%s", header, body);
-    usrsub_bushing *b;
-    usrsub_read_report report = {0};
-    usrsub_message msg;
-    if (usrsub_bushing_read(test_write_file(name, text), NULL, &b, &report, &msg) != 0)
-        fail_msg("%s", msg.text);
-    return b;
+    return read_bushing(name, text, NULL);
 }
 
 /* Mount limits with the given sides; every other side is written inactive. */
@@ -702,12 +709,7 @@ static usrsub_bushing *friction_mount_bushing(const char *name, double L, const 
              L == 1.0 ? "mm" : "meter", 1000 * L, 1000 * L, 1000 * L, 1e5 / L, 1e5 / L, 1e5 / L,
              2 * L, 2 * L, 2 * L, 5 / L, 5 / L, 5 / L, 20 / L, 100 * L, 0.5 * L, 0.001 * L, 10 / L,
              500 / L, 8000 * L, 4 * L, 2e5 / L, 10 / L);
-    usrsub_bushing *b;
-    usrsub_read_report report = {0};
-    usrsub_message msg;
-    if (usrsub_bushing_read(test_write_file(name, text), model, &b, &report, &msg) != 0)
-        fail_msg("%s", msg.text);
-    return b;
+    return read_bushing(name, text, model);
 }
 
 /* At random states (the bristles within mu_s / sigma0, mount deflections and

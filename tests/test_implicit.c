@@ -125,17 +125,26 @@ static void compare_jacobians(model *m, double t, const double *y, const char *w
     assert_true(worst < 1e-6);
 }
 
+/* The Newton matrix of a model after t_end of DOPRI5, against differences,
+ * every force element's partials from the expected source. */
+static void jacobian_after(const char *path, double t_end, const char *what,
+                           hx_partials_source expected)
+{
+    model m;
+    open_model(&m, path);
+    double y[64];
+    hx_simulation_result r = simulate(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-8, t_end, y);
+    assert_int_equal(r.status, HX_INTEGRATION_OK);
+    compare_jacobians(&m, t_end, y, what, expected);
+    close_model(&m);
+}
+
+/* Rolled by the engine torque, mounts in their limits. */
 static void newton_matrix_equals_differences_on_the_powertrain(void **state)
 {
     (void)state;
-    model m;
-    open_model(&m, EXAMPLES_DIR "/powertrain.xml");
-    double y[64];
-    /* rolled by the engine torque, mounts in their limits */
-    hx_simulation_result r = simulate(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-8, 0.6, y);
-    assert_int_equal(r.status, HX_INTEGRATION_OK);
-    compare_jacobians(&m, 0.6, y, "powertrain.xml at t = 0.6 s", HX_PARTIALS_TWIN);
-    close_model(&m);
+    jacobian_after(EXAMPLES_DIR "/powertrain.xml", 0.6, "powertrain.xml at t = 0.6 s",
+                   HX_PARTIALS_TWIN);
 }
 
 /* A third party's FIESUB that fills dfddis only when dflag is set and never
@@ -145,13 +154,8 @@ static void newton_matrix_asks_a_field_for_its_partials(void **state)
 {
     (void)state;
     setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
-    model m;
-    open_model(&m, THIRD_PARTY_DIR "/tp_habits_field.xml");
-    double y[64];
-    hx_simulation_result r = simulate(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-8, 0.01, y);
-    assert_int_equal(r.status, HX_INTEGRATION_OK);
-    compare_jacobians(&m, 0.01, y, "tp_habits_field.xml at t = 0.01 s", HX_PARTIALS_FIESUB);
-    close_model(&m);
+    jacobian_after(THIRD_PARTY_DIR "/tp_habits_field.xml", 0.01,
+                   "tp_habits_field.xml at t = 0.01 s", HX_PARTIALS_FIESUB);
 }
 
 /* Every bundled model the harness simulates, at a state it reaches (0.05 s
