@@ -114,8 +114,9 @@ static int check_element(hx_session *s, hx_binding *b)
         printf("  %s %d: out of memory\n", b->element, b->id);
         return 1;
     }
-    printf("  %s at t = 0: %s\n", b->kind == HX_BIND_YFOSUB ? "state rates, then outputs"
-                                                        : "outputs", outputs);
+    printf("  %s at t = 0: %s\n", b->kind == HX_BIND_YFOSUB   ? "state rates, then outputs"
+                                   : b->kind == HX_BIND_MOTSUB ? "value, rate, acceleration"
+                                                               : "outputs", outputs);
     if (hx_messages_stopped(&s->messages))
         return 1;
     if (!finite) {
@@ -133,6 +134,8 @@ static int check_element(hx_session *s, hx_binding *b)
         failures += hx_check_field_partials(s, b, stdout);
     else if (b->kind == HX_BIND_YFOSUB)
         failures += hx_check_state_partials(s, b, stdout);
+    else if (b->kind == HX_BIND_MOTSUB)
+        failures += hx_check_motion(s, b, stdout);
     else
         failures += hx_audit_dependencies(s, b, stdout);
     failures += hx_check_queries(b, stdout);

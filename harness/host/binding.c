@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "base/finite.h"
+#include "host/records.h"
 #include "host/state_inputs.h"
 #include "state/measures.h"
 
@@ -30,40 +31,58 @@ static int bind_state_partials(void *handle, const char *path, hx_binding *b,
     return 0;
 }
 
+/* The functions of b in the library at path, in the classic form; when the
+ * element's routine has its default name and the library exports none of its
+ * classic spellings, in Adams' C-style form (host/records.h). */
+static int bind_functions(hx_binding *b, void *handle, const char *path, const hx_user_call *u,
+                          hx_message *msg)
+{
+    const int nfun = b->kind == HX_BIND_COUPLER ? 3 : 1;
+    void *fn[3] = {0};
+    for (int k = 0; k < nfun; ++k)
+        if ((fn[k] = hx_loader_entry(handle, path, b->names[k], b->symbols[k],
+                                     sizeof b->symbols[k], msg)) == NULL) {
+            if (u->fnc_name != NULL || b->kind == HX_BIND_YFOSUB)
+                return -1;
+            hx_message classic = *msg;
+            if (hx_record_bind(b, handle, path, msg) == 0)
+                return 0;
+            hx_message record = *msg;
+            return hx_fail(msg, "%s; nor in the C-style form: %.400s", classic.text, record.text);
+        }
+    switch (b->kind) {
+    case HX_BIND_COUPLER:
+        for (int k = 0; k < 3; ++k)
+            b->coupler[k] = (usrsub_coupler_fn *)fn[k];
+        return 0;
+    case HX_BIND_GFOSUB: b->gfosub = (usrsub_gfosub_fn *)fn[0]; return 0;
+    case HX_BIND_FIESUB: b->fiesub = (usrsub_fiesub_fn *)fn[0]; return 0;
+    case HX_BIND_YFOSUB:
+        b->yfosub = (usrsub_yfosub_fn *)fn[0];
+        return bind_state_partials(handle, path, b, u, msg);
+    case HX_BIND_REQSUB: b->reqsub = (hx_reqsub_fn *)fn[0]; return 0;
+    default: b->value = (hx_value_fn *)fn[0]; return 0;
+    }
+}
+
 static int bind_one(const hx_model *m, hx_bindings *bs, hx_binding *b, const hx_user_call *u,
                     int line, hx_message *msg)
 {
     b->model = m;
     b->setup_bytes = -1;
-    char path[PATH_MAX];
-    if (hx_loader_resolve(u->dll_name, m->dir, path, sizeof path, msg) != 0 ||
-        (b->library = strdup(path)) == NULL)
-        goto failed;
-    void *handle = hx_loader_open(&bs->loader, path, msg);
-    if (handle == NULL)
-        goto failed;
-    const int nfun = b->kind == HX_BIND_COUPLER ? 3 : 1;
-    void *fn[3] = {0};
-    for (int k = 0; k < nfun; ++k)
-        if ((fn[k] = hx_loader_entry(handle, path, b->names[k], b->symbols[k],
-                                     sizeof b->symbols[k], msg)) == NULL)
-            goto failed;
-    if (b->kind == HX_BIND_COUPLER)
-        for (int k = 0; k < 3; ++k)
-            b->coupler[k] = (usrsub_coupler_fn *)fn[k];
-    else if (b->kind == HX_BIND_GFOSUB)
-        b->gfosub = (usrsub_gfosub_fn *)fn[0];
-    else if (b->kind == HX_BIND_FIESUB)
-        b->fiesub = (usrsub_fiesub_fn *)fn[0];
-    else if ((b->yfosub = (usrsub_yfosub_fn *)fn[0]) != NULL &&
-             bind_state_partials(handle, path, b, u, msg) != 0)
-        goto failed;
     b->npar = u->npar;
     b->par = malloc(sizeof(double) * (size_t)(u->npar > 0 ? u->npar : 1));
     if (b->par == NULL)
         return hx_fail(msg, "out of memory");
     if (u->npar > 0)
         memcpy(b->par, u->par, sizeof(double) * (size_t)u->npar);
+    char path[PATH_MAX];
+    if (hx_loader_resolve(u->dll_name, m->dir, path, sizeof path, msg) != 0 ||
+        (b->library = strdup(path)) == NULL)
+        goto failed;
+    void *handle = hx_loader_open(&bs->loader, path, msg);
+    if (handle == NULL || bind_functions(b, handle, path, u, msg) != 0)
+        goto failed;
     return 0;
 failed:
     hx_message_prefix(msg, "%s:%d: %s %d", m->path, line, b->element, b->id);
@@ -110,7 +129,7 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
     int user_couplers = 0;
     for (int k = 0; k < m->ncouplers; ++k)
         user_couplers += m->couplers[k].is_user;
-    const int total = user_couplers + m->nforces + m->nstate_eqns;
+    const int total = user_couplers + m->nforces + m->nstate_eqns + m->nroutines;
     bs->items = calloc((size_t)(total > 0 ? total : 1), sizeof *bs->items);
     if (bs->items == NULL)
         return hx_fail(msg, "out of memory");
@@ -167,6 +186,22 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
         if (bind_one(m, bs, b, &f->user, f->line, msg) != 0)
             return -1;
     }
+    for (int k = 0; k < m->nroutines; ++k) {
+        const hx_routine *r = &m->routines[k];
+        static const hx_binding_kind kinds[HX_ROUTINE_KINDS] = {HX_BIND_REQSUB, HX_BIND_VARSUB,
+                                                                HX_BIND_DIFSUB, HX_BIND_MOTSUB};
+        static const char *const defaults[HX_ROUTINE_KINDS] = {"REQSUB", "VARSUB", "DIFSUB",
+                                                               "MOTSUB"};
+        hx_binding *b = &bs->items[bs->count++];
+        b->messages = messages;
+        b->kind = kinds[r->kind];
+        b->index = k;
+        b->id = r->id;
+        b->element = hx_routine_element_name(r->kind);
+        b->names[0] = r->user.fnc_name != NULL ? r->user.fnc_name : defaults[r->kind];
+        if (bind_one(m, bs, b, &r->user, r->line, msg) != 0)
+            return -1;
+    }
     return 0;
 }
 
@@ -177,6 +212,7 @@ void hx_bindings_free(hx_bindings *bs)
         free(bs->items[k].par);
         free(bs->items[k].twin_name);
         free(bs->items[k].twin_par);
+        hx_record_free(bs->items[k].record);
     }
     free(bs->items);
     hx_loader_close_all(&bs->loader);
@@ -208,6 +244,14 @@ hx_binding *hx_binding_of_state_eqn(hx_bindings *bs, int element_index)
     return NULL;
 }
 
+hx_binding *hx_binding_of_routine(hx_bindings *bs, int routine_index)
+{
+    for (int k = 0; k < bs->count; ++k)
+        if (bs->items[k].kind >= HX_BIND_REQSUB && bs->items[k].index == routine_index)
+            return &bs->items[k];
+    return NULL;
+}
+
 const char *hx_binding_routine(const hx_binding *b, int which)
 {
     return b->symbols[which][0] != '\0' ? b->symbols[which] : b->names[which];
@@ -217,8 +261,10 @@ void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_stat
 {
     hx_call_init(call, b->element, b->id, hx_binding_routine(b, which), b->model, s, b->messages,
                  iflag != 0, &b->deps);
-    /* couplers and FIESUB get their state in their arguments (docs/interface.md §1) */
-    call->may_query = b->kind == HX_BIND_GFOSUB;
+    /* couplers, FIESUB, YFOSUB and MOTSUB get their state in their arguments or
+     * from time alone (docs/interface.md §1, §5.1) */
+    call->may_query = b->kind == HX_BIND_GFOSUB || b->kind == HX_BIND_REQSUB ||
+                      b->kind == HX_BIND_VARSUB || b->kind == HX_BIND_DIFSUB;
     call->reported_undeclared = &b->reported_undeclared;
     call->reported_refused = &b->reported_refused;
     call->reported_unoffered = &b->reported_unoffered;
@@ -298,7 +344,10 @@ void hx_call_coupler(hx_binding *b, int which, const hx_state *s, const double *
     fill(out, which == 0 ? 1 : which == 1 ? ndisp : ndisp * ndisp, b->output_fill);
     if (b->log != NULL)
         log_call(b, which, t, iflag, 0, d, ndisp);
-    b->coupler[which](&id, &t, b->par, &npar, d, &n, &flag, out);
+    if (b->record != NULL)
+        hx_record_coupler(b, which, t, d, iflag, out);
+    else
+        b->coupler[which](&id, &t, b->par, &npar, d, &n, &flag, out);
     if (b->log != NULL)
         b->log->returned++;
     hx_host_unbind();
@@ -314,18 +363,21 @@ void hx_call_gfosub(hx_binding *b, const hx_state *s, int dflag, int iflag, doub
     if (b->log != NULL)
         log_call(b, 0, t, iflag, dflag, NULL, 0);
     fill(result, 6, b->output_fill);
-    if (b->part >= HX_OUTPUT_SCALAR_FORCE) {
-        double value = b->output_fill;
-        b->gfosub(&id, &t, b->par, &npar, &df, &flag, &value);
+    /* an SFOSUB's one value, a VTOSUB's three (the torque) or the others' */
+    double value = b->output_fill;
+    double *into = b->part >= HX_OUTPUT_SCALAR_FORCE ? &value
+                   : b->part == HX_OUTPUT_TORQUE     ? result + 3
+                                                     : result;
+    if (b->record != NULL)
+        hx_record_values(b, t, dflag, iflag, into);
+    else
+        b->gfosub(&id, &t, b->par, &npar, &df, &flag, into);
+    if (b->part >= HX_OUTPUT_SCALAR_FORCE)
         scalar_output(b, s, value, result);
-    } else if (b->part == HX_OUTPUT_TORQUE) { /* VTOSUB's three values are the torque */
-        b->gfosub(&id, &t, b->par, &npar, &df, &flag, result + 3);
+    else if (b->part == HX_OUTPUT_TORQUE)
         fill(result, 3, 0.0);
-    } else {
-        b->gfosub(&id, &t, b->par, &npar, &df, &flag, result);
-        if (b->part == HX_OUTPUT_FORCE)
-            fill(result + 3, 3, 0.0);
-    }
+    else if (b->part == HX_OUTPUT_FORCE)
+        fill(result + 3, 3, 0.0);
     if (b->log != NULL)
         b->log->returned++;
     hx_host_unbind();
@@ -350,7 +402,31 @@ void hx_call_fiesub(hx_binding *b, const hx_state *s, const double disp[6], cons
     fill(field, 6, b->output_fill);
     memset(dfddis, 0, 36 * sizeof(double));
     memset(dfdvel, 0, 36 * sizeof(double)); /* some FIESUBs never write it */
-    b->fiesub(&id, &t, b->par, &npar, d, v, &df, &flag, field, dfddis, dfdvel);
+    if (b->record != NULL)
+        hx_record_fiesub(b, t, d, v, dflag, iflag, field, dfddis, dfdvel);
+    else
+        b->fiesub(&id, &t, b->par, &npar, d, v, &df, &flag, field, dfddis, dfdvel);
+    if (b->log != NULL)
+        b->log->returned++;
+    hx_host_unbind();
+}
+
+void hx_call_routine(hx_binding *b, const hx_state *s, int flag, int iflag, double *values,
+                     hx_call *call)
+{
+    hx_call local;
+    begin(b, 0, s, iflag, call, &local);
+    int id = b->id, npar = b->npar, f = flag, fl = iflag;
+    double t = s->time;
+    if (b->log != NULL)
+        log_call(b, 0, t, iflag, flag, NULL, 0);
+    fill(values, b->kind == HX_BIND_REQSUB ? 8 : 1, b->output_fill);
+    if (b->record != NULL)
+        hx_record_values(b, t, flag, iflag, values);
+    else if (b->kind == HX_BIND_REQSUB)
+        b->reqsub(&id, &t, b->par, &npar, &fl, values);
+    else
+        b->value(&id, &t, b->par, &npar, &f, &fl, values);
     if (b->log != NULL)
         b->log->returned++;
     hx_host_unbind();

@@ -13,10 +13,23 @@
 
 typedef enum hx_binding_kind {
     HX_BIND_COUPLER, /* Constraint_Coupler: COUSUB, COUXX, COUXX2 */
-    HX_BIND_GFOSUB,  /* Force_Vector_TwoBody */
+    HX_BIND_GFOSUB,  /* Force_Vector_TwoBody, Force_Vector_OneBody, Force_Scalar_TwoBody */
     HX_BIND_FIESUB,  /* Force_Field */
-    HX_BIND_YFOSUB   /* Force_StateEqn: YFOSUB, YFOXX, YFOXU, YFOYX, YFOYU */
+    HX_BIND_YFOSUB,  /* Force_StateEqn: YFOSUB, YFOXX, YFOXU, YFOYX, YFOYU */
+    HX_BIND_REQSUB,  /* Post_Request: eight values */
+    HX_BIND_VARSUB,  /* Reference_Variable of type USERSUB: one value */
+    HX_BIND_DIFSUB,  /* Control_Diff: its state's rate */
+    HX_BIND_MOTSUB   /* Motion_Joint: the joint's motion, its rate and acceleration */
 } hx_binding_kind;
+
+/* The routines that are not forces, in the classic form: every argument by
+ * address (docs/interface.md §5.3). REQSUB(id, time, par, npar, iflag,
+ * result[8]); VARSUB and DIFSUB (dflag) and MOTSUB (iord) return one value. */
+typedef void STDCALL hx_reqsub_fn(int *id, double *time, double *par, int *npar, int *iflag,
+                                  double *result);
+typedef void STDCALL hx_value_fn(int *id, double *time, double *par, int *npar, int *flag,
+                                 int *iflag, double *value);
+struct hx_record;
 
 /* The last call of a binding, kept where another process can read it when
  * the call never returns (check runs each element in a child process). */
@@ -33,10 +46,10 @@ typedef struct hx_call_log {
 
 typedef struct hx_binding {
     hx_binding_kind kind;
-    int index;           /* in the model's couplers[], forces[] or state_eqns[] */
+    int index;           /* in the model's couplers[], forces[], state_eqns[] or routines[] */
     int id;
     const char *element; /* "Constraint_Coupler", "Force_Vector_TwoBody", "Force_Field",
-                          * "Force_StateEqn" */
+                          * "Force_StateEqn", "Post_Request", ... */
     char *library;       /* resolved path */
     const char *names[5]; /* as the model names them, or the default names */
     /* the symbols bound for them: NAME, name_ or name (hx_loader_entry) */
@@ -49,6 +62,11 @@ typedef struct hx_binding {
     /* YFOXX, YFOXU, YFOYX, YFOYU (names[1..4]); NULL when the library does not
      * export the default name: the harness then takes differences of YFOSUB */
     usrsub_state_partial_fn *state_partial[4];
+    hx_reqsub_fn *reqsub;
+    hx_value_fn *value; /* VARSUB, DIFSUB, MOTSUB */
+    /* the Adams C-style form (host/records.h): the element's record and the
+     * functions bound; NULL for the classic form */
+    struct hx_record *record;
     double *par;         /* the USER list handed to the entries */
     int npar;
     /* GFOSUB elements: the library's FIESUB twin of the element, when it
@@ -90,6 +108,7 @@ void hx_bindings_free(hx_bindings *b);
 hx_binding *hx_binding_of_coupler(hx_bindings *b, int coupler_index);
 hx_binding *hx_binding_of_force(hx_bindings *b, int force_index);
 hx_binding *hx_binding_of_state_eqn(hx_bindings *b, int element_index);
+hx_binding *hx_binding_of_routine(hx_bindings *b, int routine_index);
 
 /* The name of function `which` of b as the library exports it (the symbol
  * bound), or as the model names it when it is not exported. */
@@ -111,6 +130,10 @@ void hx_call_gfosub(hx_binding *b, const hx_state *s, int dflag, int iflag, doub
 void hx_call_fiesub(hx_binding *b, const hx_state *s, const double disp[6], const double velo[6],
                     int dflag, int iflag, double field[6], double dfddis[36], double dfdvel[36],
                     hx_call *call);
+/* A routine that is not a force at state s: REQSUB's eight values, or the
+ * one value of VARSUB, DIFSUB (flag: dflag) or MOTSUB (flag: iord). */
+void hx_call_routine(hx_binding *b, const hx_state *s, int flag, int iflag, double *values,
+                     hx_call *call);
 /* YFOSUB of a Force_StateEqn at state s (its time): states (nstate) and
  * input (ninput), the caller's copies, which a library may write into;
  * stated (nstate) and output (6) receive its results. */

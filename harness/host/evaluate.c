@@ -11,9 +11,9 @@ int hx_binding_input_count(const hx_binding *b)
     const hx_model *m = b->model;
     switch (b->kind) {
     case HX_BIND_COUPLER: return m->couplers[b->index].njoints;
-    case HX_BIND_GFOSUB: return 0;
     case HX_BIND_FIESUB: return 12;
-    default: return m->state_eqns[b->index].nstate + m->state_eqns[b->index].ninput;
+    case HX_BIND_YFOSUB: return m->state_eqns[b->index].nstate + m->state_eqns[b->index].ninput;
+    default: return 0; /* they ask the host for the state, or take the time alone */
     }
 }
 
@@ -27,7 +27,10 @@ int hx_binding_output_count(const hx_binding *b)
     }
     case HX_BIND_GFOSUB: return 6;
     case HX_BIND_FIESUB: return 6 + 72;
-    default: return m->state_eqns[b->index].nstate + 6;
+    case HX_BIND_YFOSUB: return m->state_eqns[b->index].nstate + 6;
+    case HX_BIND_REQSUB: return 8;
+    case HX_BIND_MOTSUB: return 3;
+    default: return 1;
     }
 }
 
@@ -64,10 +67,17 @@ int hx_binding_evaluate(hx_binding *b, const hx_state *s, double *in, int iflag,
     case HX_BIND_FIESUB:
         hx_call_fiesub(b, s, in, in + 6, dflag, iflag, out, out + 6, out + 42, NULL);
         return 6 + 72;
-    default: {
+    case HX_BIND_YFOSUB: {
         const int ns = b->model->state_eqns[b->index].nstate;
         hx_call_yfosub(b, s, in, in + ns, dflag, iflag, out, out + ns, NULL);
         return ns + 6;
     }
+    case HX_BIND_MOTSUB: /* the motion, its rate and its acceleration */
+        for (int iord = 0; iord < 3; ++iord)
+            hx_call_routine(b, s, iord, iflag, out + iord, NULL);
+        return 3;
+    default:
+        hx_call_routine(b, s, dflag, iflag, out, NULL);
+        return hx_binding_output_count(b);
     }
 }

@@ -3,10 +3,12 @@
  * outputs, and one call of its routine, whatever its kind. Inputs: a
  * coupler's joint coordinates (n); none for a Force_Vector_TwoBody's routine,
  * which asks the host for the state; a field's deformation and rates (12);
- * a state equation's states, then its inputs. Outputs: a coupler's phi, its
- * n first and n*n second derivatives; the six values of force and torque; a
- * field's six, then dfddis and dfdvel (72); a state equation's rates, then
- * its six outputs.
+ * a state equation's states, then its inputs; none for the routines that are
+ * not forces. Outputs: a coupler's phi, its n first and n*n second
+ * derivatives; the six values of force and torque; a field's six, then
+ * dfddis and dfdvel (72); a state equation's rates, then its six outputs;
+ * REQSUB's eight values; VARSUB's and DIFSUB's one; MOTSUB's value at iord
+ * 0, 1 and 2.
  */
 #ifndef HX_HOST_EVALUATE_H
 #define HX_HOST_EVALUATE_H

@@ -14,10 +14,12 @@ enum {
     F_DX, F_AX = F_DX + 3, F_VX = F_AX + 3, F_WX = F_VX + 3,
     F_PSI = F_WX + 3, /* PSI THETA PHI: 3-1-3 angles of I relative to J */
     F_YAW = F_PSI + 3, /* YAW PITCH ROLL: 3-2-1 angles of I relative to J */
-    F_COUNT = F_YAW + 3
+    F_DIF = F_YAW + 3, /* DIF, DIF1: a Control_Diff's state and its rate */
+    F_DIF1,
+    F_COUNT
 };
 static const int max_nsize[F_COUNT] = {3, 3, 2, 4, 4, 3, 1, 2, 3, 3, 3, 2, 2, 2, 4, 4, 4,
-                                       3, 3, 3, 2, 2, 2, 2, 2, 2};
+                                       3, 3, 3, 2, 2, 2, 2, 2, 2, 1, 1};
 
 /* The name packed into an integer, one byte per character, as the library's
  * pointer may be to any text: a switch on it replaces string comparisons on
@@ -56,6 +58,8 @@ static int function_code(unsigned long long name)
     case PACK5('P', 'I', 'T', 'C', 'H'): return F_YAW + 1;
     case PACK4('R', 'O', 'L', 'L'): return F_YAW + 2;
     case PACK5('A', 'R', 'R', 'A', 'Y'): return F_ARRAY;
+    case PACK3('D', 'I', 'F'): return F_DIF;
+    case PACK4('D', 'I', 'F', '1'): return F_DIF1;
     default: return -1;
     }
 }
@@ -76,6 +80,15 @@ void hx_query_make(hx_query *q, const char *fnc, const int *ipar, int nsize, int
     q->is_array = is_array;
     for (int k = 0; k < 4; ++k)
         q->ipar[k] = k < nsize && ipar != NULL ? ipar[k] : 0;
+}
+
+int hx_query_reads(const hx_query *q)
+{
+    if (q->function < 0)
+        return -1;
+    if (q->function == F_DIF || q->function == F_DIF1)
+        return HX_READS_DIFF;
+    return q->function == F_ARRAY ? HX_READS_ARRAY : HX_READS_MARKERS;
 }
 
 int hx_query_same(const hx_query *a, const hx_query *b)
@@ -134,6 +147,13 @@ int hx_answer(const hx_state *s, const hx_query *q, const int *ipar, double *val
         return -1;
     if (code == F_ARRAY)
         return array_numbers(s->model, ipar[0], values);
+    if (code == F_DIF || code == F_DIF1) {
+        const int k = hx_model_routine(s->model, HX_ROUTINE_DIFF, ipar[0]);
+        if (k < 0)
+            return -1;
+        values[0] = s->diffs[2 * s->model->routines[k].slot + (code == F_DIF1)];
+        return 1;
+    }
     hx_frame scratch[4];
     const hx_frame *f[4];
     for (int k = 0; k < 4; ++k) {

@@ -22,6 +22,10 @@ typedef struct hx_query {
 /* A query as a library asked it (fnc truncated to 7 characters). */
 void hx_query_make(hx_query *q, const char *fnc, const int *ipar, int nsize, int is_array);
 int hx_query_same(const hx_query *a, const hx_query *b);
+/* What a query's ids name: markers (the measures), a Control_Diff (DIF,
+ * DIF1), an array (ARRAY); -1 for a query the host does not answer. */
+enum hx_query_reads { HX_READS_MARKERS, HX_READS_DIFF, HX_READS_ARRAY };
+int hx_query_reads(const hx_query *q);
 /* "DISP(11,21,21)" */
 const char *hx_query_text(const hx_query *q, char *text, size_t size);
 

@@ -47,7 +47,7 @@ typedef struct hx_draft {
     raw_refs *rjoints, *rcouplers, *rforces, *rloads;
     raw_state_eqn *rstate_eqns; /* parallel to m->state_eqns */
     int cap_markers, cap_bodies, cap_joints, cap_couplers, cap_forces, cap_loads, cap_strings;
-    int cap_variables, cap_arrays, cap_state_eqns;
+    int cap_variables, cap_arrays, cap_state_eqns, cap_routines;
 } hx_draft;
 
 /* The first error wins: "file:line: what"; the reader then stops. */
@@ -66,5 +66,8 @@ int hx_draft_resolve(hx_draft *d);
 /* The state equations' pass (state_equation_elements.c): arrays, variables
  * and Force_StateEqn references, after the markers; 0 or -1. */
 int hx_draft_resolve_state_eqns(hx_draft *d);
+/* The routines' pass (routine_elements.c): Motion_Joint's joints, after the
+ * joints; 0 or -1. */
+int hx_draft_resolve_routines(hx_draft *d);
 
 #endif

@@ -12,6 +12,7 @@
 #include "base/vecmath.h"
 #include "model/orientation.h"
 #include "model/units.h"
+#include "model/routine_elements.h"
 #include "model/state_equation_elements.h"
 #include "model/user_list.h"
 #include "model/xml_attrs.h"
@@ -363,6 +364,19 @@ static hx_force *push_force(hx_draft *d, const hx_element_read *e, enum hx_force
     return f;
 }
 
+/* The user routine's output for a vector force's type attribute; -1 with
+ * the draft failed when it is none. */
+static int vector_part(hx_draft *d, const hx_element_read *e, const char *type)
+{
+    static const char *const types[3] = {"ForceAndTorque", "ForceOnly", "TorqueOnly"};
+    for (int part = 0; part < 3; ++part)
+        if (strcasecmp(type, types[part]) == 0)
+            return part;
+    hx_draft_fail(d, e->line, "%s %d: type \"%s\" is not one the harness reads (ForceAndTorque:"
+                  " GFOSUB, ForceOnly: VFOSUB, TorqueOnly: VTOSUB)", e->name, e->id, type);
+    return -1;
+}
+
 static const hx_attr_spec force_vector_attrs[] = {
     ID, REQUIRED("type", HX_ATTR_TEXT), REQUIRED("i_marker_id", HX_ATTR_INT),
     REQUIRED("j_floating_marker_id", HX_ATTR_INT), INT("ref_marker_id"), IGNORED("body1_id"),
@@ -370,17 +384,9 @@ static const hx_attr_spec force_vector_attrs[] = {
 
 static void build_force_vector(hx_draft *d, const hx_element_read *e)
 {
-    const char *type = hx_attr_text(e, "type");
-    static const char *const types[3] = {"ForceAndTorque", "ForceOnly", "TorqueOnly"};
-    int part = 0;
-    while (part < 3 && strcasecmp(type, types[part]) != 0)
-        ++part;
-    if (part == 3) {
-        hx_draft_fail(d, e->line, "Force_Vector_TwoBody %d: type \"%s\" is not one the harness"
-                      " reads (ForceAndTorque: GFOSUB, ForceOnly: VFOSUB, TorqueOnly: VTOSUB)",
-                      e->id, type);
+    const int part = vector_part(d, e, hx_attr_text(e, "type"));
+    if (part < 0)
         return;
-    }
     hx_force *f = push_force(d, e, HX_FORCE_GFOSUB);
     if (f == NULL)
         return;
@@ -441,13 +447,33 @@ static int load_value(hx_draft *d, const hx_element_read *e, const char *name,
 static const hx_attr_spec vector_load_attrs[] = {
     ID, TEXT("type"), REQUIRED("marker_id", HX_ATTR_INT), INT("ref_marker_id"),
     TEXT("fx_expression"), TEXT("fy_expression"), TEXT("fz_expression"), TEXT("tx_expression"),
-    TEXT("ty_expression"), TEXT("tz_expression"), TEXT("usrsub_param_string"), END};
+    TEXT("ty_expression"), TEXT("tz_expression"), IGNORED("body_id"), IGNORED("ref_body_id"),
+    USER_CALL, END};
+
+/* A Force_Vector_OneBody with a user routine: a user force element on its
+ * marker whose J is the ground's origin, so that the reaction is lost to
+ * ground (resolve.c); its results are in ref_marker_id's axes. */
+static void build_vector_user_load(hx_draft *d, const hx_element_read *e)
+{
+    const char *type = hx_attr_text(e, "type");
+    const int part = vector_part(d, e, type != NULL ? type : "ForceAndTorque");
+    if (part < 0)
+        return;
+    hx_force *f = push_force(d, e, HX_FORCE_GFOSUB);
+    if (f == NULL)
+        return;
+    f->part = (enum hx_user_output)part;
+    f->one_body = 1;
+    raw_refs *refs = &d->rforces[d->m->nforces - 1];
+    refs->ids[0] = hx_attr_int(e, "marker_id", 0);
+    refs->ids[2] = hx_attr_int(e, "ref_marker_id", 0);
+    hx_draft_user_call(d, e, &f->user);
+}
 
 static void build_vector_load(hx_draft *d, const hx_element_read *e)
 {
-    if (hx_attr_present(e, "usrsub_param_string")) {
-        hx_draft_fail(d, e->line, "Force_Vector_OneBody %d: user subroutines are not supported"
-                      " here (numbers and STEP of TIME only)", e->id);
+    if (hx_attr_present(e, "usrsub_param_string") || hx_attr_present(e, "usrsub_dll_name")) {
+        build_vector_user_load(d, e);
         return;
     }
     hx_load *l = push_load(d, e, HX_LOAD_VECTOR);
@@ -523,23 +549,26 @@ static void build_scalar_load(hx_draft *d, const hx_element_read *e)
 static const hx_attr_spec no_attrs[] = {END};
 
 const hx_element_spec hx_element_specs[] = {
-    {"MotionSolve", no_attrs, NULL, NULL},
-    {"Model", no_attrs, NULL, NULL},
-    {"Param_Unit", param_unit_attrs, build_param_unit, NULL},
-    {"Force_Gravity", gravity_attrs, build_gravity, NULL},
-    {"Reference_String", string_attrs, build_string, NULL},
-    {"Body_Ground", ground_attrs, build_ground, NULL},
-    {"Body_Rigid", body_attrs, build_body, NULL},
-    {"Reference_Marker", marker_attrs, build_marker, NULL},
-    {"Constraint_Joint", joint_attrs, build_joint, NULL},
-    {"Constraint_Coupler", coupler_attrs, build_coupler, NULL},
-    {"Force_Vector_TwoBody", force_vector_attrs, build_force_vector, NULL},
-    {"Force_Field", force_field_attrs, build_force_field, NULL},
-    {"Force_Vector_OneBody", vector_load_attrs, build_vector_load, NULL},
-    {"Force_Scalar_TwoBody", scalar_load_attrs, build_scalar_load, NULL},
-    {"Force_StateEqn", hx_state_eqn_attrs, hx_build_state_eqn, NULL},
-    {"Reference_Array", hx_array_attrs, hx_build_array, hx_array_text},
-    {"Reference_Variable", hx_variable_attrs, hx_build_variable, NULL},
+    {"MotionSolve", no_attrs, NULL, NULL, 0},
+    {"Model", no_attrs, NULL, NULL, 0},
+    {"Param_Unit", param_unit_attrs, build_param_unit, NULL, 0},
+    {"Force_Gravity", gravity_attrs, build_gravity, NULL, 0},
+    {"Reference_String", string_attrs, build_string, NULL, 0},
+    {"Body_Ground", ground_attrs, build_ground, NULL, 0},
+    {"Body_Rigid", body_attrs, build_body, NULL, 0},
+    {"Reference_Marker", marker_attrs, build_marker, NULL, 0},
+    {"Constraint_Joint", joint_attrs, build_joint, NULL, 0},
+    {"Constraint_Coupler", coupler_attrs, build_coupler, NULL, 0},
+    {"Force_Vector_TwoBody", force_vector_attrs, build_force_vector, NULL, 0},
+    {"Force_Field", force_field_attrs, build_force_field, NULL, 0},
+    {"Force_Vector_OneBody", vector_load_attrs, build_vector_load, NULL, 0},
+    {"Force_Scalar_TwoBody", scalar_load_attrs, build_scalar_load, NULL, 0},
+    {"Force_StateEqn", hx_state_eqn_attrs, hx_build_state_eqn, NULL, 0},
+    {"Reference_Array", hx_array_attrs, hx_build_array, hx_array_text, 0},
+    {"Reference_Variable", hx_variable_attrs, hx_build_variable, NULL, 0},
+    {"Post_Request", hx_request_attrs, hx_build_request, NULL, 1},
+    {"Control_Diff", hx_diff_attrs, hx_build_diff, NULL, 1},
+    {"Motion_Joint", hx_motion_attrs, hx_build_motion, NULL, 1},
 };
 const int hx_element_spec_count = (int)(sizeof hx_element_specs / sizeof hx_element_specs[0]);
 

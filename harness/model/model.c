@@ -77,7 +77,24 @@ const char *hx_force_element_name(const hx_force *f)
 {
     if (f->interface == HX_FORCE_FIESUB)
         return "Force_Field";
+    if (f->one_body)
+        return "Force_Vector_OneBody";
     return f->part >= HX_OUTPUT_SCALAR_FORCE ? "Force_Scalar_TwoBody" : "Force_Vector_TwoBody";
+}
+
+int hx_model_routine(const hx_model *m, enum hx_routine_kind kind, int id)
+{
+    for (int k = 0; k < m->nroutines; ++k)
+        if (m->routines[k].kind == kind && m->routines[k].id == id)
+            return k;
+    return -1;
+}
+
+const char *hx_routine_element_name(enum hx_routine_kind kind)
+{
+    static const char *const names[HX_ROUTINE_KINDS] = {"Post_Request", "Reference_Variable",
+                                                        "Control_Diff", "Motion_Joint"};
+    return names[kind];
 }
 
 int hx_model_find_force(const hx_model *m, const char *text, int *index, hx_message *msg)
@@ -139,6 +156,9 @@ void hx_model_free(hx_model *m)
         free(m->state_eqns[k].inputs);
         free(m->state_eqns[k].initial);
     }
+    for (int k = 0; k < m->nroutines; ++k)
+        free_user_call(&m->routines[k].user);
+    free(m->routines);
     free(m->variables);
     free(m->arrays);
     free(m->state_eqns);

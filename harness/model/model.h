@@ -88,6 +88,8 @@ typedef struct hx_force {
     int id;
     enum hx_force_interface interface; /* Force_Vector_TwoBody or Force_Field */
     enum hx_user_output part;          /* what its routine returns */
+    int one_body;            /* a Force_Vector_OneBody: J is the ground's origin marker, which
+                              * takes the reaction (docs/interface.md §7) */
     int i_marker, j_marker;  /* indices; for GFOSUB j is the floating J marker */
     int ref_marker;          /* index of the frame of the results, -1: world */
     hx_user_call user;
@@ -151,6 +153,32 @@ typedef struct hx_state_eqn {
     int line;
 } hx_state_eqn;
 
+/* A user routine that is not a force (docs/interface.md §7.11): a
+ * Post_Request's REQSUB (eight values written with the results), a USERSUB
+ * Reference_Variable's VARSUB (one value), a USERSUB Control_Diff's DIFSUB
+ * (the rate of one state integrated with the bodies') and a USERSUB
+ * Motion_Joint's MOTSUB (a joint's coordinate, rate or acceleration as a
+ * function of time). */
+enum hx_routine_kind { HX_ROUTINE_REQUEST, HX_ROUTINE_VARIABLE, HX_ROUTINE_DIFF, HX_ROUTINE_MOTION };
+#define HX_ROUTINE_KINDS 4
+
+typedef struct hx_routine {
+    int id;
+    enum hx_routine_kind kind;
+    int slot;            /* its place among the model's routines of its kind */
+    hx_user_call user;
+    /* Control_Diff: ic and ic_dot (its state and rate at t = 0);
+     * Motion_Joint: ic_disp and ic_vel */
+    double ic[2];
+    int implicit;        /* Control_Diff is_implicit (read; check only) */
+    int static_hold;     /* Control_Diff is_static_hold (read, no effect) */
+    int joint_id;        /* Motion_Joint: the joint it drives, as written */
+    int joint;           /* its index */
+    char val_type;       /* Motion_Joint: 'D', 'V' or 'A': what MOTSUB's value is */
+    char motion_type;    /* Motion_Joint: 'R', 'T', or 0 when not written */
+    int line;
+} hx_routine;
+
 typedef struct hx_string {
     int id;
     char *text;
@@ -183,6 +211,9 @@ typedef struct hx_model {
     int narrays;
     hx_state_eqn *state_eqns;
     int nstate_eqns;
+    hx_routine *routines;    /* in the order read */
+    int nroutines;
+    int nroutines_of[HX_ROUTINE_KINDS];
     int nwarnings;
     /* elements that act on the dynamics but that the harness does not model:
      * check can verify the user elements, run and bench refuse */
@@ -215,7 +246,11 @@ int hx_model_array(const hx_model *m, int id);
 /* Index of the Force_StateEqn written ID or stateeqn:ID; -1 and msg when
  * there is none. */
 int hx_model_find_state_eqn(const hx_model *m, const char *text, int *index, hx_message *msg);
-/* "Force_Vector_TwoBody" or "Force_Field". */
+/* Index of the routine of a kind with this id, or -1. */
+int hx_model_routine(const hx_model *m, enum hx_routine_kind kind, int id);
+/* "Post_Request", "Reference_Variable", "Control_Diff", "Motion_Joint". */
+const char *hx_routine_element_name(enum hx_routine_kind kind);
+/* "Force_Vector_TwoBody", "Force_Vector_OneBody", "Force_Scalar_TwoBody" or "Force_Field". */
 const char *hx_force_element_name(const hx_force *f);
 
 #endif

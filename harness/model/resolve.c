@@ -259,6 +259,15 @@ static int resolve_forces(hx_draft *r)
         hx_force *f = &m->forces[k];
         const raw_refs *refs = &r->rforces[k];
         const char *owner = hx_force_element_name(f);
+        if (f->one_body) {
+            f->ref_marker = -1;
+            f->j_marker = hx_model_marker(m, 0);
+            if (marker_ref(r, refs->ids[0], f->line, owner, f->id, "marker_id", &f->i_marker) != 0 ||
+                (refs->ids[2] != 0 && marker_ref(r, refs->ids[2], f->line, owner, f->id,
+                                                 "ref_marker_id", &f->ref_marker) != 0))
+                return -1;
+            continue;
+        }
         if (marker_ref(r, refs->ids[0], f->line, owner, f->id, "i_marker_id", &f->i_marker) != 0 ||
             marker_ref(r, refs->ids[1], f->line, owner, f->id,
                        f->interface == HX_FORCE_GFOSUB && f->part < HX_OUTPUT_SCALAR_FORCE
@@ -313,6 +322,31 @@ static void track_markers(hx_model *m)
     }
 }
 
+/* The J marker of the Force_Vector_OneBody user forces: one marker at the
+ * ground's origin, with the world's axes, numbered 0 (the id queries take for
+ * the world, which it is). */
+static int add_ground_origin_marker(hx_draft *r)
+{
+    hx_model *m = r->m;
+    int line = 0;
+    for (int k = 0; k < m->nforces && line == 0; ++k)
+        if (m->forces[k].one_body)
+            line = m->forces[k].line;
+    if (line == 0)
+        return 0;
+    raw_marker *raw = NULL;
+    hx_marker *mk = hx_draft_push(r, (void **)&m->markers, &m->nmarkers, &r->cap_markers,
+                                  sizeof *mk, (void **)&r->rmarkers, sizeof *raw);
+    if (mk == NULL)
+        return -1;
+    raw = &r->rmarkers[m->nmarkers - 1];
+    raw->body_id = m->bodies[m->ground].id;
+    static const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    memcpy(raw->R, identity, sizeof identity);
+    mk->line = line;
+    return 0;
+}
+
 int hx_draft_resolve(hx_draft *r)
 {
     hx_model *m = r->m;
@@ -320,11 +354,14 @@ int hx_draft_resolve(hx_draft *r)
         hx_draft_fail(r, 0, "the model has no ground (a Body_Ground, or a Body_Rigid with isground=\"TRUE\")");
         return -1;
     }
+    if (add_ground_origin_marker(r) != 0)
+        return -1;
     for (int k = 0; k < m->nmarkers; ++k)
         if (resolve_marker(r, k) != 0)
             return -1;
     if (build_marker_index(r) != 0 || resolve_bodies(r) != 0 || resolve_joints(r) != 0 ||
-        resolve_couplers(r) != 0 || resolve_forces(r) != 0 || hx_draft_resolve_state_eqns(r) != 0)
+        resolve_couplers(r) != 0 || resolve_forces(r) != 0 || hx_draft_resolve_state_eqns(r) != 0 ||
+        hx_draft_resolve_routines(r) != 0)
         return -1;
     track_markers(m);
     return 0;

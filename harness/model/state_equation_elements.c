@@ -13,6 +13,7 @@
 #include <strings.h>
 
 #include "model/draft.h"
+#include "model/routine_elements.h"
 #include "model/state_equation_elements.h"
 #include "model/variable_expression.h"
 #include "model/xml_attrs.h"
@@ -92,7 +93,7 @@ static int blank(const char *text)
 /* ----  --------------------------------------------------------------------------------------- */
 
 const hx_attr_spec hx_variable_attrs[] = {ID, TEXT("type"), TEXT("expr"), TEXT("function"),
-                                          USER_CALL, END};
+                                          REAL("ic"), USER_CALL, END};
 
 void hx_build_variable(hx_draft *d, const hx_element_read *e)
 {
@@ -103,11 +104,15 @@ void hx_build_variable(hx_draft *d, const hx_element_read *e)
         return;
     }
     const char *type = hx_attr_text(e, "type");
-    if ((type != NULL && strcasecmp(type, "EXPRESSION") != 0) ||
-        hx_attr_present(e, "usrsub_param_string") || hx_attr_present(e, "script_name")) {
-        hx_draft_fail(d, e->line, "Reference_Variable %d: type \"%s\": the harness evaluates"
-                      " type=\"EXPRESSION\" variables only (no VARSUB)", e->id,
-                      type != NULL ? type : "USERSUB");
+    if ((type != NULL && strcasecmp(type, "USERSUB") == 0) ||
+        (type == NULL && (hx_attr_present(e, "usrsub_param_string") ||
+                          hx_attr_present(e, "usrsub_dll_name")))) {
+        hx_build_user_variable(d, e);
+        return;
+    }
+    if ((type != NULL && strcasecmp(type, "EXPRESSION") != 0) || hx_attr_present(e, "script_name")) {
+        hx_draft_fail(d, e->line, "Reference_Variable %d: type \"%s\": expected EXPRESSION or"
+                      " USERSUB", e->id, type != NULL ? type : "(script)");
         return;
     }
     if (hx_attr_present(e, "function")) {
@@ -317,6 +322,13 @@ static int resolve_variables(hx_draft *d)
         }
         for (int i = 0; i < a->count; ++i)
             if ((a->variables[i] = hx_model_variable(m, a->variable_ids[i])) < 0) {
+                if (hx_model_routine(m, HX_ROUTINE_VARIABLE, a->variable_ids[i]) >= 0) {
+                    hx_draft_fail(d, a->line, "Reference_Array %d: variable %d is a USERSUB"
+                                  " Reference_Variable: the harness takes a Force_StateEqn's"
+                                  " inputs from EXPRESSION variables only", a->id,
+                                  a->variable_ids[i]);
+                    return -1;
+                }
                 hx_draft_fail(d, a->line, "Reference_Array %d: variable %d is not a"
                               " Reference_Variable", a->id, a->variable_ids[i]);
                 return -1;

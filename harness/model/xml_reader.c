@@ -219,6 +219,16 @@ static int read_element(hx_draft *d, const hx_element_spec *spec, const XML_Char
     return 0;
 }
 
+/* The element names a user routine (a library or a USER list). */
+static int has_user_call(const XML_Char **atts)
+{
+    for (int k = 0; atts[k] != NULL; k += 2)
+        if (strcasecmp(atts[k], "usrsub_dll_name") == 0 ||
+            strcasecmp(atts[k], "usrsub_param_string") == 0)
+            return 1;
+    return 0;
+}
+
 static void XMLCALL on_start(void *data, const XML_Char *name, const XML_Char **atts)
 {
     xml_reader *r = data;
@@ -229,7 +239,7 @@ static void XMLCALL on_start(void *data, const XML_Char *name, const XML_Char **
     const int line = (int)XML_GetCurrentLineNumber(r->parser);
     for (int k = 0; k < hx_element_spec_count; ++k) {
         const hx_element_spec *spec = &hx_element_specs[k];
-        if (strcasecmp(spec->name, name) != 0)
+        if (strcasecmp(spec->name, name) != 0 || (spec->user_form_only && !has_user_call(atts)))
             continue;
         if (spec->build == NULL)
             return; /* a container */

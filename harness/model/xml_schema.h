@@ -48,6 +48,9 @@ typedef struct hx_element_spec {
     /* elements with data between their tags (Reference_Array): called at the
      * end tag with the text, once the element was built; NULL: none read */
     void (*text)(hx_draft *d, int line, const char *text);
+    /* 1: read only in its user-routine form (usrsub_dll_name or
+     * usrsub_param_string present); the other forms go on as unread */
+    int user_form_only;
 } hx_element_spec;
 
 /* The table (elements.c), and the elements read and skipped: those that do

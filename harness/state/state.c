@@ -42,7 +42,8 @@ int hx_state_init(hx_state *s, const hx_model *m)
     s->bodies = calloc((size_t)m->nbodies + 1, sizeof *s->bodies);
     s->markers = calloc((size_t)m->nmarkers + 1, sizeof *s->markers);
     s->moving = calloc((size_t)m->nmarkers + 1, sizeof *s->moving);
-    if (s->bodies == NULL || s->markers == NULL || s->moving == NULL) {
+    s->diffs = calloc(2 * (size_t)m->nroutines_of[HX_ROUTINE_DIFF] + 1, sizeof *s->diffs);
+    if (s->bodies == NULL || s->markers == NULL || s->moving == NULL || s->diffs == NULL) {
         hx_state_free(s);
         return -1;
     }
@@ -57,6 +58,9 @@ int hx_state_init(hx_state *s, const hx_model *m)
     for (int k = 0; k < m->nmarkers; ++k)
         if (m->markers[k].tracked && !m->bodies[m->markers[k].body].is_ground)
             s->moving[s->nmoving++] = k;
+    for (int k = 0; k < m->nroutines; ++k)
+        if (m->routines[k].kind == HX_ROUTINE_DIFF)
+            memcpy(&s->diffs[2 * m->routines[k].slot], m->routines[k].ic, sizeof(double[2]));
     all_markers(s);
     return 0;
 }
@@ -66,6 +70,7 @@ void hx_state_free(hx_state *s)
     free(s->bodies);
     free(s->markers);
     free(s->moving);
+    free(s->diffs);
     memset(s, 0, sizeof *s);
 }
 
@@ -83,6 +88,7 @@ void hx_state_copy(hx_state *to, const hx_state *from)
     to->time = from->time;
     memcpy(to->bodies, from->bodies, sizeof *to->bodies * (size_t)m->nbodies);
     memcpy(to->markers, from->markers, sizeof *to->markers * (size_t)m->nmarkers);
+    memcpy(to->diffs, from->diffs, sizeof *to->diffs * 2 * (size_t)m->nroutines_of[HX_ROUTINE_DIFF]);
 }
 
 void hx_state_update(hx_state *s)

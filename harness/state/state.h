@@ -23,6 +23,9 @@ typedef struct hx_state {
     hx_frame *markers;  /* nmarkers: tracked markers are current after hx_state_update */
     int *moving;        /* tracked markers on moving bodies: what the update recomputes */
     int nmoving;
+    /* the Control_Diff states, two per element in the order of their slots
+     * (model.h): the value and its rate (DIF and DIF1), ic and ic_dot at first */
+    double *diffs;
 } hx_state;
 
 /* A state at the model's initial pose and velocities, its markers current.

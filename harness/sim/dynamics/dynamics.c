@@ -4,6 +4,7 @@
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/element_forces.h"
 #include "sim/dynamics/loads.h"
+#include "sim/dynamics/routines.h"
 #include "sim/dynamics/state_elements.h"
 
 #include <stdarg.h>
@@ -76,9 +77,10 @@ int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg)
         !d->element_partials || hx_state_clone(&d->state, &s->state) != 0 ||
         hx_state_clone(&d->probe, &s->state) != 0)
         return hx_fail(msg, "out of memory");
-    if (hx_bodies_init(d, msg) != 0 || hx_state_elements_init(d, msg) != 0)
+    if (hx_bodies_init(d, msg) != 0 || hx_state_elements_init(d, msg) != 0 ||
+        hx_routines_init(d, msg) != 0)
         return -1;
-    d->load_work = d->states + d->nstates;
+    d->load_work = d->diffs + d->ndiffs;
     d->element_work = d->load_work + 1;
     d->n = d->element_work + 1;
     d->free_accelerations = calloc((size_t)d->nu + 1, sizeof(double));
@@ -114,6 +116,7 @@ void hx_dynamics_free(hx_dynamics *d)
     free(d->free_accelerations);
     free(d->evaluated_y);
     hx_state_elements_free(d);
+    hx_routines_free(d);
     hx_state_free(&d->state);
     hx_state_free(&d->probe);
     memset(d, 0, sizeof *d);
@@ -124,6 +127,7 @@ void hx_dynamics_set_state(hx_dynamics *d, double t, const double *y)
     d->evaluated = 0;
     d->state.time = t;
     hx_bodies_set_frames(d, y);
+    hx_routines_set_state(d, y);
     hx_state_update(&d->state);
 }
 
@@ -143,6 +147,8 @@ int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot)
         if (hx_constraints_apply(d, t, y, ydot + d->nq) != 0)
             return -1;
     }
+    if (d->m->nroutines > 0 && hx_routines_apply(d, y, ydot) != 0)
+        return -1;
     memcpy(d->evaluated_y, y, sizeof(double) * (size_t)d->n);
     d->evaluated_t = t;
     d->evaluated = 1;
@@ -154,6 +160,8 @@ int hx_dynamics_initial_state(hx_dynamics *d, double *y)
     memset(y, 0, sizeof(double) * (size_t)d->n);
     hx_bodies_initial_state(d, y);
     hx_state_elements_initial(d, y);
+    if (hx_routines_initial(d, y) != 0)
+        return -1;
     d->max_phi = d->max_phidot = 0.0;
     return hx_constraints_project(d, 0.0, y);
 }

@@ -14,9 +14,10 @@
  * step (constraints.c).
  *
  * State layout y: [positions (nq) | velocities (nu) | the Force_StateEqn
- * elements' states (nstates, element by element in the model's order) | work
- * done by the loads | work done by the force elements, Force_StateEqn ones
- * included]. Units follow the model; mass *
+ * elements' states (nstates, element by element in the model's order) | the
+ * Control_Diff states (ndiffs, routines.h) | work done by the loads | work
+ * done by the force elements, Force_StateEqn ones included]. A Motion_Joint
+ * drives its joint's coordinate (routines.h). Units follow the model; mass *
  * acceleration = ucf * force, as in a solver with an inconsistent unit set
  * (mm, kg, s, N has ucf = 1000).
  */
@@ -46,6 +47,9 @@ typedef struct hx_dynamics {
     hx_body_dof *dof;
     int nq, nu, n;
     int states, nstates;        /* y offset and count of the Force_StateEqn elements' states */
+    int diffs, ndiffs;          /* y offset and count of the Control_Diff states (routines.h) */
+    hx_binding **routine_binding; /* per routine of the model (model.h) */
+    int *driver;                /* per body: the Motion_Joint routine driving it, or -1 */
     int load_work, element_work; /* y indices of the work done by loads and by force elements */
     struct hx_state_elements *stateful; /* the Force_StateEqn elements (state_elements.h) */
     hx_binding **coupler_binding; /* per coupler; NULL for the built-in form */

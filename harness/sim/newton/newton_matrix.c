@@ -201,7 +201,8 @@ int hx_newton_matrix_build(hx_newton_matrix *nm, double t, const double *y, doub
     /* the element calls below may set the dynamics' state: the element
      * blocks, which read it, come first */
     if (hx_element_blocks(nm, t, y) != 0 || hx_load_blocks(nm, t, y) != 0 ||
-        hx_state_blocks(nm, t, y) != 0 || hx_coupler_blocks(nm, t, y) != 0)
+        hx_state_blocks(nm, t, y) != 0 || hx_coupler_blocks(nm, t, y) != 0 ||
+        hx_routine_blocks(nm, t, y) != 0)
         return -1;
     return 0;
 }

@@ -51,6 +51,14 @@ void hx_state_blocks_free(hx_newton_matrix *nm);
 int hx_state_blocks(hx_newton_matrix *nm, double t, const double *y);
 void hx_state_blocks_describe(const hx_newton_matrix *nm, char *text, size_t size);
 int hx_coupler_blocks(hx_newton_matrix *nm, double t, const double *y);
+/* Control_Diff rows and driven joints' rows (routine_blocks.c): last, as it
+ * moves the dynamics' state and puts it back. */
+int hx_routine_blocks(hx_newton_matrix *nm, double t, const double *y);
+
+/* The columns the row of Control_Diff routine `routine` depends on: its own
+ * state's, and those its DIFSUB's declared queries read; their count (at
+ * most max). */
+int hx_diff_columns(const hx_dynamics *d, int routine, int *cols, int max);
 
 /* The pattern from the model's structure (pattern.c); 0 or -1. */
 int hx_newton_pattern(hx_newton_matrix *nm);

@@ -4,8 +4,9 @@
  * body an element, a load or a Force_StateEqn joins it to (and on that
  * element's states); a Force_StateEqn's rows on its states and on the bodies
  * its inputs measure; the coupled velocities' rows on everything any of
- * them depends on (the couplers mix them); the work accumulators' rows on
- * nothing (newton_matrix.h). The diagonal is always in.
+ * them depends on (the couplers mix them); a Control_Diff's row on its state
+ * and what its DIFSUB declared it reads (routine_blocks.c); the work
+ * accumulators' rows on nothing (newton_matrix.h). The diagonal is always in.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -157,6 +158,13 @@ int hx_newton_pattern(hx_newton_matrix *nm)
     }
     for (int k = 0; k < m->nstate_eqns; ++k)
         state_element(&p, d, k);
+    for (int k = 0; k < m->nroutines; ++k)
+        if (m->routines[k].kind == HX_ROUTINE_DIFF) {
+            int cols[256];
+            const int nc = hx_diff_columns(d, k, cols, 256);
+            for (int j = 0; j < nc; ++j)
+                add(&p, d->diffs + m->routines[k].slot, cols[j]);
+        }
     coupled_rows(&p, nm);
     int status = p.failed ? -1 : hx_sparsity_from_pairs(&nm->pattern, nm->n, p.rows, p.cols, p.count);
     free(p.rows);

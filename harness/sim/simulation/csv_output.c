@@ -2,6 +2,7 @@
 #include <stdlib.h>
 
 #include "sim/dynamics/constraints.h"
+#include "sim/dynamics/routines.h"
 #include "sim/simulation/simulation.h"
 #include "sim/dynamics/state_elements.h"
 #include "state/measures.h"
@@ -38,6 +39,7 @@ void hx_csv_header(FILE *f, const hx_dynamics *d)
             fprintf(f, ",force%d.%s", id, loads[j]);
     }
     hx_state_elements_csv_header(f, d);
+    hx_routines_csv_header(f, d);
     fprintf(f, ",energy,dissipated,phi,phidot\n");
 }
 
@@ -84,6 +86,8 @@ int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, const hx_ener
             fprintf(f, ",%.12g", d->element_load[6 * k + j]);
     }
     hx_state_elements_csv_row(f, d, y);
+    if (hx_routines_csv_row(f, d, y) != 0)
+        return -1;
     fprintf(f, ",%.15g,%.15g,%.3g,%.3g\n", energy->total, hx_dissipated(energy, energy0), phi,
             phidot);
     return 0;

@@ -271,6 +271,8 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
     pin_to_this_cpu();
     for (int k = 0; k < s->bindings.count; ++k) {
         hx_binding *b = &s->bindings.items[k];
+        if (b->kind >= HX_BIND_REQSUB || b->record != NULL)
+            continue; /* timed through their classic forms' calls only */
         if (b->kind == HX_BIND_COUPLER) {
             const hx_coupler *c = &s->model->couplers[b->index];
             for (int fn = 0; fn < 3 && rows < capacity; ++fn) {

@@ -226,6 +226,15 @@ int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int cap
 {
     memset(out, 0, sizeof *out);
     *ncosts = 0;
+    /* the stand-ins replay the classic forms of the force, coupler and state
+     * equation routines (and nothing else calls the library in a run) */
+    for (int k = 0; k < s->bindings.count; ++k) {
+        const hx_binding *b = &s->bindings.items[k];
+        if (b->kind >= HX_BIND_REQSUB || b->record != NULL)
+            return hx_fail(msg, "%s %d (%s): bench splits the cost of force elements, couplers"
+                           " and state equations in the classic form only", b->element, b->id,
+                           hx_binding_routine(b, 0));
+    }
     hx_dynamics d;
     if (hx_dynamics_init(&d, s, msg) != 0) {
         hx_dynamics_free(&d);

@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+#include "base/vecmath.h"
 #include "host/state_inputs.h"
 #include "state/measures.h"
 
@@ -60,6 +61,45 @@ void hx_sample_element_state(const hx_session *s, int force, int k, double disp[
         disp[3] = disp[4] = 0.0;
         disp[5] = base_twist + (disp[5] >= base_twist ? twist : -twist);
     }
+}
+
+void hx_sample_model_state(const hx_session *s, int k, hx_state *out, double scale[12])
+{
+    const hx_model *m = s->model;
+    double length, angle, rate;
+    typical_steps(m, &length, &angle, &rate);
+    for (int i = 0; i < 6; ++i) {
+        scale[i] = i < 3 ? length : angle;
+        scale[6 + i] = scale[i] * rate;
+    }
+    const double time = out->time;
+    hx_state_copy(out, &s->state);
+    out->time = time;
+    if (k == 0)
+        return;
+    unsigned seed = 2654435761u * (unsigned)k + 31u;
+    const double amplitude = amplitude_of(k);
+    for (int b = 0; b < m->nbodies; ++b) {
+        if (m->bodies[b].is_ground)
+            continue;
+        hx_frame *f = &out->bodies[b];
+        double turn[3], R[9];
+        for (int i = 0; i < 3; ++i) {
+            f->p[i] += amplitude * scale[i] * hx_jitter(&seed);
+            turn[i] = amplitude * scale[3 + i] * hx_jitter(&seed);
+            f->v[i] += amplitude * scale[6 + i] * hx_jitter(&seed);
+            f->w[i] += amplitude * scale[9 + i] * hx_jitter(&seed);
+        }
+        const double a = v3_norm(turn);
+        if (a > 0.0) {
+            v3_scale(turn, turn, 1.0 / a);
+            m3_axis_angle(R, turn, a);
+            m3_mul(f->R, R, f->R);
+        }
+    }
+    for (int d = 0; d < 2 * m->nroutines_of[HX_ROUTINE_DIFF]; ++d)
+        out->diffs[d] += 0.01 * amplitude * (1.0 + fabs(out->diffs[d])) * hx_jitter(&seed);
+    hx_state_update(out);
 }
 
 /* A measure's typical step: lengths, angles and their rates; 1 for a number. */

@@ -31,6 +31,14 @@ void hx_sample_element_state(const hx_session *s, int force, int k, double disp[
 void hx_sample_state_element(const hx_session *s, int element, int k, double *states,
                              double *inputs, double *scale);
 
+/* Sample k of the whole model, for the routines that ask the host for any
+ * state (REQSUB, VARSUB, DIFSUB): from the model's initial state, every
+ * moving body's position, orientation, velocity and angular velocity moved
+ * by 0.5 to 10 typical steps, and every Control_Diff state by as many
+ * hundredths of 1 + |ic|; scale receives the typical steps of a body's twelve
+ * states (as hx_sample_element_state's). The state's time is left as it is. */
+void hx_sample_model_state(const hx_session *s, int k, hx_state *out, double scale[12]);
+
 /* The time of sample k: 0, then spread over the model's first second. */
 double hx_sample_time(const hx_model *m, int k);
 

@@ -85,6 +85,9 @@ static int evaluate(probe *p, int which, double t, int dflag, double *out)
         const hx_force *f = &p->s->model->forces[b->index];
         hx_place_relative(&p->s->state, &p->state, f->i_marker, f->j_marker, p->input[which],
                           p->input[which] + 6);
+    } else if (b->kind >= HX_BIND_REQSUB) { /* the whole model's state is its input */
+        double scale[12];
+        hx_sample_model_state(p->s, which == INPUT_A ? 3 : 8, &p->state, scale);
     }
     double copy[MAX_IN]; /* a state equation may write into its arguments */
     memcpy(copy, p->input[which], sizeof copy);
@@ -120,6 +123,10 @@ static void choose_inputs(probe *p)
         return;
     }
     double scale[MAX_IN];
+    if (b->kind >= HX_BIND_REQSUB) {
+        p->ninput = 0; /* evaluate() sets the model's state A or B */
+        return;
+    }
     if (b->kind == HX_BIND_YFOSUB) {
         const hx_state_eqn *f = &m->state_eqns[b->index];
         hx_sample_state_element(p->s, b->index, 3, p->input[INPUT_A], p->input[INPUT_A] + f->nstate,
@@ -231,6 +238,10 @@ static const char *input_name(const hx_binding *b)
     switch (b->kind) {
     case HX_BIND_COUPLER: return "joint displacements";
     case HX_BIND_YFOSUB: return "states, then inputs";
+    case HX_BIND_REQSUB:
+    case HX_BIND_VARSUB:
+    case HX_BIND_DIFSUB:
+    case HX_BIND_MOTSUB: return "the model's sampled state (bodies and Control_Diff states)";
     default: return "deformation and rate of I relative to J";
     }
 }

@@ -1,0 +1,189 @@
+/* The user routines that are not forces in the equations of motion (routines.h). */
+#include "sim/dynamics/routines.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+int hx_routines_init(hx_dynamics *d, hx_message *msg)
+{
+    const hx_model *m = d->m;
+    d->ndiffs = m->nroutines_of[HX_ROUTINE_DIFF];
+    d->diffs = d->states + d->nstates;
+    d->routine_binding = calloc((size_t)m->nroutines + 1, sizeof *d->routine_binding);
+    d->driver = calloc((size_t)m->nbodies + 1, sizeof *d->driver);
+    if (d->routine_binding == NULL || d->driver == NULL)
+        return hx_fail(msg, "out of memory");
+    for (int k = 0; k < m->nbodies; ++k)
+        d->driver[k] = -1;
+    for (int k = 0; k < m->nroutines; ++k) {
+        const hx_routine *r = &m->routines[k];
+        d->routine_binding[k] = hx_binding_of_routine(&d->s->bindings, k);
+        if (r->kind == HX_ROUTINE_DIFF && r->implicit)
+            return hx_fail(msg, "%s:%d: Control_Diff %d: is_implicit=\"TRUE\": the harness"
+                           " integrates explicit Control_Diff elements only (check verifies"
+                           " this one)", m->path, r->line, r->id);
+        if (r->kind != HX_ROUTINE_MOTION)
+            continue;
+        const int body = m->markers[m->joints[r->joint].i_marker].body;
+        if (m->bodies[body].joint != r->joint)
+            return hx_fail(msg, "%s:%d: Motion_Joint %d: joint %d's I marker is on body %d,"
+                           " which the joint does not carry", m->path, r->line, r->id,
+                           r->joint_id, m->bodies[body].id);
+        for (int c = 0; c < m->ncouplers; ++c)
+            for (int j = 0; j < m->couplers[c].njoints; ++j)
+                if (m->couplers[c].joint[j] == r->joint)
+                    return hx_fail(msg, "%s:%d: Motion_Joint %d drives joint %d, which"
+                                   " Constraint_Coupler %d couples: the harness does not run"
+                                   " a motion on a coupled joint", m->path, r->line, r->id,
+                                   r->joint_id, m->couplers[c].id);
+        d->driver[body] = k;
+    }
+    return 0;
+}
+
+void hx_routines_free(hx_dynamics *d)
+{
+    free(d->routine_binding);
+    free(d->driver);
+}
+
+void hx_routines_set_state(hx_dynamics *d, const double *y)
+{
+    for (int k = 0; k < d->ndiffs; ++k)
+        d->state.diffs[2 * k] = y[d->diffs + k];
+}
+
+/* MOTSUB of routine k at iord, at d->state's time; 0 or -1 (d->message). */
+static int motion(hx_dynamics *d, int k, int iord, double *value)
+{
+    hx_binding *b = d->routine_binding[k];
+    hx_call_routine(b, &d->state, iord, 0, value, NULL);
+    if (hx_dynamics_check_stop(d, b) != 0)
+        return -1;
+    if (!isfinite(*value))
+        return hx_dynamics_fail(d, "%s %d (%s) returned a non-finite value at iord %d, t = %g",
+                                b->element, b->id, hx_binding_routine(b, 0), iord,
+                                d->state.time);
+    return 0;
+}
+
+int hx_routines_initial(hx_dynamics *d, double *y)
+{
+    const hx_model *m = d->m;
+    for (int k = 0; k < m->nroutines; ++k) {
+        const hx_routine *r = &m->routines[k];
+        if (r->kind == HX_ROUTINE_DIFF)
+            y[d->diffs + r->slot] = r->ic[0];
+    }
+    d->state.time = 0.0;
+    for (int body = 0; body < m->nbodies; ++body) {
+        const int k = d->driver[body];
+        if (k < 0)
+            continue;
+        const hx_routine *r = &m->routines[k];
+        double *q = &y[d->dof[body].q], *u = &y[d->nq + d->dof[body].u];
+        *q = r->ic[0];
+        *u = r->ic[1];
+        if ((r->val_type == 'D' && (motion(d, k, 0, q) != 0 || motion(d, k, 1, u) != 0)) ||
+            (r->val_type == 'V' && motion(d, k, 0, u) != 0))
+            return -1;
+    }
+    return 0;
+}
+
+int hx_routines_apply(hx_dynamics *d, const double *y, double *ydot)
+{
+    const hx_model *m = d->m;
+    for (int k = 0; k < m->nroutines; ++k) {
+        const hx_routine *r = &m->routines[k];
+        if (r->kind != HX_ROUTINE_DIFF)
+            continue;
+        hx_binding *b = d->routine_binding[k];
+        double rate;
+        hx_call_routine(b, &d->state, 0, 0, &rate, NULL);
+        if (hx_dynamics_check_stop(d, b) != 0)
+            return -1;
+        if (!isfinite(rate))
+            return hx_dynamics_fail(d, "%s %d (%s) returned a non-finite value at t = %g",
+                                    b->element, b->id, hx_binding_routine(b, 0), d->state.time);
+        ydot[d->diffs + r->slot] = rate;
+        d->state.diffs[2 * r->slot + 1] = rate;
+    }
+    for (int body = 0; body < m->nbodies; ++body) {
+        const int k = d->driver[body];
+        if (k < 0)
+            continue;
+        const char val_type = m->routines[k].val_type;
+        double *qdot = &ydot[d->dof[body].q], *udot = &ydot[d->nq + d->dof[body].u];
+        *qdot = y[d->nq + d->dof[body].u];
+        if ((val_type == 'D' && (motion(d, k, 1, qdot) != 0 || motion(d, k, 2, udot) != 0)) ||
+            (val_type == 'V' && (motion(d, k, 0, qdot) != 0 || motion(d, k, 1, udot) != 0)) ||
+            (val_type == 'A' && motion(d, k, 0, udot) != 0))
+            return -1;
+    }
+    return 0;
+}
+
+int hx_routines_driven_rows(const hx_dynamics *d, int *rows)
+{
+    int n = 0;
+    for (int body = 0; body < d->m->nbodies; ++body) {
+        const int k = d->driver[body];
+        if (k < 0)
+            continue;
+        if (d->m->routines[k].val_type != 'A') /* an acceleration motion keeps qdot = u */
+            rows[n++] = d->dof[body].q;
+        rows[n++] = d->nq + d->dof[body].u;
+    }
+    return n;
+}
+
+void hx_routines_csv_header(FILE *f, const hx_dynamics *d)
+{
+    const hx_model *m = d->m;
+    for (int k = 0; k < m->nroutines; ++k) {
+        const hx_routine *r = &m->routines[k];
+        switch (r->kind) {
+        case HX_ROUTINE_DIFF: fprintf(f, ",diff%d", r->id); break;
+        case HX_ROUTINE_MOTION:
+            if (r->val_type != 'A')
+                fprintf(f, ",motion%d.error", r->id);
+            break;
+        case HX_ROUTINE_REQUEST:
+            for (int j = 1; j <= 8; ++j)
+                fprintf(f, ",request%d.%d", r->id, j);
+            break;
+        case HX_ROUTINE_VARIABLE: fprintf(f, ",variable%d", r->id); break;
+        }
+    }
+}
+
+int hx_routines_csv_row(FILE *f, hx_dynamics *d, const double *y)
+{
+    const hx_model *m = d->m;
+    for (int k = 0; k < m->nroutines; ++k) {
+        const hx_routine *r = &m->routines[k];
+        hx_binding *b = d->routine_binding[k];
+        double values[8];
+        if (r->kind == HX_ROUTINE_DIFF) {
+            fprintf(f, ",%.15g", y[d->diffs + r->slot]);
+        } else if (r->kind == HX_ROUTINE_MOTION) {
+            if (r->val_type == 'A')
+                continue;
+            const int body = m->markers[m->joints[r->joint].i_marker].body;
+            const int driven = r->val_type == 'D' ? d->dof[body].q : d->nq + d->dof[body].u;
+            if (motion(d, k, 0, &values[0]) != 0)
+                return -1;
+            fprintf(f, ",%.6g", y[driven] - values[0]);
+        } else {
+            hx_call_routine(b, &d->state, 0, 0, values, NULL);
+            if (hx_dynamics_check_stop(d, b) != 0)
+                return -1;
+            const int n = r->kind == HX_ROUTINE_REQUEST ? 8 : 1;
+            for (int j = 0; j < n; ++j)
+                fprintf(f, ",%.15g", values[j]);
+        }
+    }
+    return 0;
+}

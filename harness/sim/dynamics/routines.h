@@ -1,0 +1,49 @@
+/*
+ * The user routines that are not forces in the equations of motion
+ * (docs/interface.md §7.11):
+ *  - each Control_Diff's state is part of y (dynamics.h), its rate DIFSUB's
+ *    value at the state, which the host also answers DIF and DIF1 from;
+ *  - a Motion_Joint drives its joint's coordinate: for val_type D, MOTSUB's
+ *    value at iord 1 and 2 are the coordinate's rate and acceleration, and
+ *    iord 0 and 1 its value and rate at t = 0; for V its rate is MOTSUB's
+ *    value and its acceleration iord 1; for A its acceleration is the value.
+ *    The joint's forces then do not move it: its reaction is the motion's.
+ *    The coordinate follows the integrated rates, within the integrator's
+ *    tolerance of MOTSUB's value (the CSV's motionID.error says how far).
+ *  - Post_Request (REQSUB) and USERSUB Reference_Variable (VARSUB) values are
+ *    outputs: computed at the output times, for the CSV.
+ */
+#ifndef HX_SIM_DYNAMICS_ROUTINES_H
+#define HX_SIM_DYNAMICS_ROUTINES_H
+
+#include <stdio.h>
+
+#include "sim/dynamics/dynamics.h"
+
+/* Sets d->diffs and d->ndiffs (after the Force_StateEqn states) and the
+ * driven bodies; refuses an implicit Control_Diff and a motion on a coupled
+ * joint. 0, or -1 with msg. */
+int hx_routines_init(hx_dynamics *d, hx_message *msg);
+void hx_routines_free(hx_dynamics *d);
+
+/* The Control_Diff states of y into d->state (DIF answers them). */
+void hx_routines_set_state(hx_dynamics *d, const double *y);
+
+/* Initial values: ic of each Control_Diff, the driven joints' coordinates
+ * and rates; 0 or -1 (d->message). */
+int hx_routines_initial(hx_dynamics *d, double *y);
+
+/* At d->state: the Control_Diff rates into ydot (and d->state's DIF1), the
+ * driven joints' rates and accelerations over the bodies'. 0 or -1. */
+int hx_routines_apply(hx_dynamics *d, const double *y, double *ydot);
+
+/* The y rows whose rate is a function of time alone (driven joints):
+ * their indices into rows (at most 2 per driven joint); their count. */
+int hx_routines_driven_rows(const hx_dynamics *d, int *rows);
+
+/* The CSV's columns: diffID, motionID.error (coordinate less MOTSUB's
+ * value; for V, rate less it), requestID.1 .. 8, variableID. */
+void hx_routines_csv_header(FILE *f, const hx_dynamics *d);
+int hx_routines_csv_row(FILE *f, hx_dynamics *d, const double *y);
+
+#endif

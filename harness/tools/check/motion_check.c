@@ -1,0 +1,70 @@
+/*
+ * A MOTSUB's derivatives (checks.h): at the check's sample times over the
+ * model's first second, its rate (iord 1) must be the time derivative of its
+ * value (iord 0), and its acceleration (iord 2) that of its rate, as central
+ * differences over 1e-4 s see them. A solver integrates with iord 1 and 2 and
+ * projects onto iord 0: a wrong one drives the joint off its own motion.
+ */
+#include <math.h>
+#include <stdio.h>
+
+#include "tools/check/checks.h"
+#include "tools/check/element_samples.h"
+
+/* Order `iord` of the motion at time t; -1 when the routine stopped the run. */
+static int motion_at(hx_binding *b, hx_state *s, double t, int iord, double *value)
+{
+    s->time = t;
+    hx_call_routine(b, s, iord, 0, value, NULL);
+    return hx_messages_stopped(b->messages) ? -1 : 0;
+}
+
+int hx_check_motion(hx_session *s, hx_binding *b, FILE *out)
+{
+    const hx_model *m = s->model;
+    const double second = 1.0 / (m->has_units ? m->unit_scales[HX_UNIT_TIME] : 1.0);
+    const double h = 1e-4 * second;
+    double worst[2] = {0, 0}, worst_time[2] = {0, 0}, size[2] = {0, 0}, at_worst[2][2] = {{0}};
+    const double saved = s->state.time;
+    int failed = 0;
+    for (int k = 1; k < HX_FORCE_SAMPLES && !failed; ++k) {
+        const double t = hx_sample_time(m, k);
+        for (int iord = 1; iord <= 2 && !failed; ++iord) {
+            double exact, before, after;
+            if (motion_at(b, &s->state, t, iord, &exact) != 0 ||
+                motion_at(b, &s->state, t - h, iord - 1, &before) != 0 ||
+                motion_at(b, &s->state, t + h, iord - 1, &after) != 0) {
+                failed = 1;
+                break;
+            }
+            const double difference = (after - before) / (2.0 * h);
+            const double error = fabs(exact - difference);
+            size[iord - 1] = fmax(size[iord - 1], fmax(fabs(exact), fabs(difference)));
+            if (!isnan(worst[iord - 1]) && !(error <= worst[iord - 1])) { /* a NaN stays */
+                worst[iord - 1] = error;
+                worst_time[iord - 1] = t;
+                at_worst[iord - 1][0] = exact;
+                at_worst[iord - 1][1] = difference;
+            }
+        }
+    }
+    s->state.time = saved;
+    if (failed)
+        return 1;
+    int failures = 0;
+    static const char *const names[2] = {"rate (iord 1)", "acceleration (iord 2)"};
+    static const char *const of[2] = {"value (iord 0)", "rate (iord 1)"};
+    for (int i = 0; i < 2; ++i) {
+        /* central differences over h are good to about h^2 of the third
+         * derivative: 1e-5 of the largest magnitude leaves room for that */
+        const double tolerance = 1e-5 * size[i] + 1e-12;
+        const int pass = worst[i] <= tolerance; /* NaN fails */
+        failures += !pass;
+        fprintf(out, "  %s %d: %s %s against differences in time of its %s at %d times:"
+                " worst |error| %.3g at t = %g (%.9g, differences %.9g; tolerance %.3g): %s\n",
+                b->element, b->id, hx_binding_routine(b, 0), names[i], of[i],
+                HX_FORCE_SAMPLES - 1, worst[i], worst_time[i], at_worst[i][0], at_worst[i][1],
+                tolerance, pass ? "pass" : "FAIL");
+    }
+    return failures;
+}
