@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
-# plots.sh: regenerates the README's plots and benchmark numbers into docs/
-# (PNG plots, CSV data, and docs/bench.txt with the commands' own output).
+# plots.sh: regenerates the plots and benchmark numbers of docs/examples.md
+# and docs/performance.md into docs/ (PNG plots, and docs/bench.txt and the
+# other *.txt with the commands' own output), and the tables of
+# docs/performance.md drawn from them (scripts/performance_tables.sh), each
+# stamped with the commit, the date and the machine (scripts/stamp.sh).
 # Timings are medians of repeated runs pinned to one processor; they vary
-# with the machine (the README says which one gave its numbers).
+# with the machine, and from minute to minute on a shared one.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+stamp=$("$root/scripts/stamp.sh")
 "$root/scripts/setup.sh" main
 "$root/scripts/build.sh" build -DUSRSUB_TESTS=OFF
 export MS_USERDLL_DIR="$root/build"
@@ -222,4 +226,10 @@ plot '$out/suspension_bushing.csv' using 1:(column('stateeqn1.u6')) with lines l
 unset multiplot
 GP
 rm -f "$out/suspension_bushing.csv"
+
+echo "== the tables of docs/performance.md"
+for table in cost stability long-runs; do
+  "$root/scripts/performance_tables.sh" "$table" "$out" |
+    "$root/scripts/doc_block.sh" "$out/performance.md" "$table" "scripts/plots.sh" "$stamp"
+done
 echo "== wrote $out"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The architecture, checked (README, "Architecture"):
+# The architecture, checked (docs/architecture.md, "Layers"):
 #  - arrows run one way: a file includes only headers of its own layer or a
 #    lower one (library: entries -> readers -> core; harness: cmd -> tools ->
 #    sim/simulation -> sim/newton -> sim/dynamics -> sim/ode -> host -> state
