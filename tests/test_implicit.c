@@ -158,6 +158,17 @@ static void newton_matrix_asks_a_field_for_its_partials(void **state)
                    "tp_habits_field.xml at t = 0.01 s", HX_PARTIALS_FIESUB);
 }
 
+/* A Control_Diff's row (DIFSUB differenced in what it reads) and a driven
+ * joint's rows (zero: a function of time) (tests/third_party/tp_routines.c);
+ * the OneBody force's partials by differences of the element alone. */
+static void newton_matrix_has_the_routines_rows(void **state)
+{
+    (void)state;
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    jacobian_after(THIRD_PARTY_DIR "/tp_routines.xml", 0.02, "tp_routines.xml at t = 0.02 s",
+                   HX_PARTIALS_DIFFERENCES);
+}
+
 /* Every bundled model the harness simulates, at a state it reaches (0.05 s
  * of DOPRI5 from the start: loads on, elements deformed), and chains of
  * bodies from scripts/chain_model.sh: the assembled matrix equals the
@@ -611,6 +622,7 @@ int main(void)
         cmocka_unit_test(newton_matrix_equals_differences_on_the_powertrain),
         cmocka_unit_test(newton_matrix_equals_differences_on_every_model),
         cmocka_unit_test(newton_matrix_asks_a_field_for_its_partials),
+        cmocka_unit_test(newton_matrix_has_the_routines_rows),
         cmocka_unit_test(differences_by_column_groups_equal_them_column_by_column),
         cmocka_unit_test(bdf_converges_at_its_order),
         cmocka_unit_test(a_wrong_partial_costs_newton_iterations_not_accuracy),

@@ -234,6 +234,137 @@ static void scalar_routines_act_along_the_line_and_about_z(void **state)
     sim_close(&s);
 }
 
+/* REQSUB, VARSUB, DIFSUB, MOTSUB and a VFOSUB on one body (tp_routines.c):
+ * check passes each; the run follows the closed forms of tp_routines.xml. */
+static void routines_that_are_not_forces_are_checked_and_run(void **state)
+{
+    (void)state;
+    expect("routines", 0,
+           NEEDLES("Force_Vector_OneBody 3 (ANCHOR in libtp_routines.so)",
+                   "Motion_Joint 6 (SWING in libtp_routines.so)",
+                   "SWING rate (iord 1) against differences in time",
+                   "Control_Diff 7 (LAG in libtp_routines.so)",
+                   "declared dependencies: AZ(30,12) DIF(7)",
+                   "Reference_Variable 9 (SPEED in libtp_routines.so)",
+                   "Post_Request 8 (REPORT in libtp_routines.so)", "5 passed, 0 failed"),
+           NEEDLES("FAIL", "never writes"));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    char csv[512];
+    snprintf(csv, sizeof csv, "%s/routines.csv", test_temp_dir());
+    const char *args[] = {"--end", "0.05", "--rtol", "1e-10", "--atol", "1e-12",
+                          "--output-interval", "0.001", "--quiet", NULL};
+    assert_int_equal(sim_run_csv(THIRD_PARTY_DIR "/tp_routines.xml", csv, args), 0);
+    static const char *const names[] = {"t", "body2.x", "variable9", "joint6.q",
+                                        "motion6.error", "diff7", "request8.1", "request8.2",
+                                        "request8.3", "request8.4"};
+    int col[10];
+    for (int k = 0; k < 10; ++k)
+        assert_true((col[k] = csv_column(csv, names[k])) >= 0);
+    csv_table tb;
+    csv_read(csv, &tb);
+    double worst[5] = {0}, report = 0.0;
+    const double a = 0.2, w = 50.0, tau = 0.01, r = w * tau;
+    for (int row = 0; row < tb.rows; ++row) {
+        const double t = csv_at(&tb, row, col[0]);
+        const double lag = a / (1.0 + r * r) * (sin(w * t) - r * cos(w * t) + r * exp(-t / tau));
+        worst[0] = fmax(worst[0], fabs(csv_at(&tb, row, col[1]) - 10.0 - 2.0 * cos(1000.0 * t)) / 2.0);
+        worst[1] = fmax(worst[1], fabs(csv_at(&tb, row, col[2]) + 2000.0 * sin(1000.0 * t)) / 2000.0);
+        worst[2] = fmax(worst[2], fabs(csv_at(&tb, row, col[3]) - a * sin(w * t)) / a);
+        worst[3] = fmax(worst[3], fabs(csv_at(&tb, row, col[4])) / a);
+        worst[4] = fmax(worst[4], fabs(csv_at(&tb, row, col[5]) - lag) / a);
+        /* the request reports the states the run has */
+        const double z = csv_at(&tb, row, col[5]), q = csv_at(&tb, row, col[3]);
+        report = fmax(report, fabs(csv_at(&tb, row, col[6]) - z) / a);
+        report = fmax(report, fabs(csv_at(&tb, row, col[7]) - (q - z) / tau) * tau / a);
+        report = fmax(report, fabs(csv_at(&tb, row, col[8]) - q) / a);
+        report = fmax(report, fabs(csv_at(&tb, row, col[9]) - csv_at(&tb, row, col[1])) / 2.0);
+    }
+    printf("  tp_routines over 0.05 s, off the closed forms (of each amplitude): anchored body"
+           " %.2g, its speed variable %.2g, driven joint %.2g (motion error %.2g), lag %.2g;"
+           " request off the run's own values %.2g\n", worst[0], worst[1], worst[2], worst[3],
+           worst[4], report);
+    assert_true(tb.rows > 40);
+    for (int k = 0; k < 5; ++k)
+        assert_true(worst[k] < 1e-7);
+    assert_true(report < 1e-9);
+    csv_free(&tb);
+}
+
+/* Each routine's planted fault is named (tp_routines_faults.c): MOTSUB's
+ * acceleration, DIFSUB's read outside its declared queries, VARSUB's hidden
+ * state; REQSUB's unwritten values are a note. */
+static void faults_of_the_routines_are_named(void **state)
+{
+    (void)state;
+    expect("routines_faults", 1,
+           NEEDLES("BAD_SWING rate (iord 1) against differences in time of its value (iord 0)"
+                   " at 11 times: worst",
+                   "BAD_SWING acceleration (iord 2) against differences in time of its rate"
+                   " (iord 1)",
+                   "Control_Diff 7: FAIL: the output depends on body 3's rotation about z, which"
+                   " no declared query (DIF(7)) reaches",
+                   "Reference_Variable 9: history audit: FAIL: a hidden state",
+                   "note: SHORT_REPORT never writes outputs 6, 7, 8",
+                   "check: 5 elements: 2 passed, 3 failed"),
+           NEEDLES("Post_Request 8: FAIL", "(iord 1) at 11 times: worst |error| 2.1e-10 at t"
+                   " = 0.818182 (-9.9766256, differences -9.9766256; tolerance 9.98e-05): FAIL"));
+    const char *acceleration = strstr(output, "BAD_SWING acceleration (iord 2)");
+    assert_non_null(acceleration);
+    const char *end = strchr(acceleration, '\n');
+    assert_non_null(end);
+    assert_memory_equal(end - 6, ": FAIL", 6); /* on its own line */
+}
+
+/* Adams' C-style form (tp_records.c): bound by the mixed-case default names
+ * when the library has no classic ones, given records whose fields the
+ * routines check (a wrong one returns NaN); the run follows the closed forms. */
+static void the_c_style_record_form_binds_and_runs(void **state)
+{
+    (void)state;
+    expect("records", 0,
+           NEEDLES("Force_Vector_TwoBody 1 (Gfosub in libtp_records.so)",
+                   "Force_Scalar_TwoBody 2 (Sfosub in libtp_records.so)",
+                   "Motion_Joint 6 (Motsub in libtp_records.so)",
+                   "Control_Diff 7 (Difsub in libtp_records.so)",
+                   "Reference_Variable 9 (Varsub in libtp_records.so)",
+                   "Post_Request 8 (Reqsub in libtp_records.so)", "6 passed, 0 failed"),
+           NEEDLES("FAIL", "never writes", "non-finite"));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    char csv[512];
+    snprintf(csv, sizeof csv, "%s/records.csv", test_temp_dir());
+    const char *args[] = {"--end", "0.02", "--rtol", "1e-10", "--atol", "1e-12",
+                          "--output-interval", "0.001", "--quiet", NULL};
+    assert_int_equal(sim_run_csv(THIRD_PARTY_DIR "/tp_records.xml", csv, args), 0);
+    static const char *const names[] = {"t", "body2.x", "joint5.q", "variable9", "joint6.q",
+                                        "diff7", "request8.1", "request8.2", "request8.3"};
+    int col[9];
+    for (int k = 0; k < 9; ++k)
+        assert_true((col[k] = csv_column(csv, names[k])) >= 0);
+    csv_table tb;
+    csv_read(csv, &tb);
+    double worst = 0.0;
+    const double a = 0.2, w = 50.0, tau = 0.01, r = w * tau;
+    for (int row = 0; row < tb.rows; ++row) {
+        const double t = csv_at(&tb, row, col[0]);
+        const double lag = a / (1.0 + r * r) * (sin(w * t) - r * cos(w * t) + r * exp(-t / tau));
+        const double errors[8] = {
+            (csv_at(&tb, row, col[1]) - 10.0 - 2.0 * cos(1000.0 * t)) / 2.0,
+            (csv_at(&tb, row, col[2]) - csv_at(&tb, 0, col[2]) - 2.0 * (cos(1000.0 * t) - 1.0)) / 2.0,
+            (csv_at(&tb, row, col[3]) + 2000.0 * sin(1000.0 * t)) / 2000.0,
+            (csv_at(&tb, row, col[4]) - a * sin(w * t)) / a,
+            (csv_at(&tb, row, col[5]) - lag) / a,
+            (csv_at(&tb, row, col[6]) - csv_at(&tb, row, col[5])) / a,
+            (csv_at(&tb, row, col[7]) - csv_at(&tb, row, col[4])) / a,
+            (csv_at(&tb, row, col[8]) - csv_at(&tb, row, col[1])) / 2.0};
+        for (int k = 0; k < 8; ++k)
+            worst = fmax(worst, fabs(errors[k]));
+    }
+    printf("  tp_records over 0.02 s: off the closed forms and the run's own values by %.2g of"
+           " each amplitude\n", worst);
+    assert_true(tb.rows > 15 && worst < 1e-7);
+    csv_free(&tb);
+}
+
 static void a_refused_query_is_reported(void **state)
 {
     (void)state;
@@ -274,6 +405,9 @@ int main(void)
         cmocka_unit_test(a_wrong_field_partial_is_named_by_row_and_column),
         cmocka_unit_test(a_crash_is_reported_and_survived),
         cmocka_unit_test(a_refused_query_is_reported),
+        cmocka_unit_test(routines_that_are_not_forces_are_checked_and_run),
+        cmocka_unit_test(faults_of_the_routines_are_named),
+        cmocka_unit_test(the_c_style_record_form_binds_and_runs),
         cmocka_unit_test(libraries_using_the_utilities_pass),
         cmocka_unit_test(a_fortran_library_loads_and_passes),
         cmocka_unit_test(a_utility_not_offered_is_named),

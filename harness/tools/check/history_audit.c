@@ -241,7 +241,7 @@ static const char *input_name(const hx_binding *b)
     case HX_BIND_REQSUB:
     case HX_BIND_VARSUB:
     case HX_BIND_DIFSUB:
-    case HX_BIND_MOTSUB: return "the model's sampled state (bodies and Control_Diff states)";
+    case HX_BIND_MOTSUB: return "a sampled state of the model's bodies and Control_Diff states";
     default: return "deformation and rate of I relative to J";
     }
 }
@@ -292,10 +292,13 @@ int hx_audit_history(hx_session *s, hx_binding *b, FILE *out)
                 r[failed].code, histories[failed].what);
         return 1;
     }
-    char input[1024];
-    hx_format_values(input, sizeof input, p.input[INPUT_A], p.ninput, 9);
+    char input[1024] = "";
+    if (p.ninput > 0) {
+        input[0] = ':', input[1] = ' ';
+        hx_format_values(input + 2, sizeof input - 2, p.input[INPUT_A], p.ninput, 9);
+    }
     if (failed >= 0) {
-        fprintf(out, "  %s %d: history audit: FAIL: a hidden state: at the same input A (%s: %s)"
+        fprintf(out, "  %s %d: history audit: FAIL: a hidden state: at the same input A (%s%s)"
                 " and time t = %.9g, output %d was %.17g %s, and %.17g %s: the outputs depend on"
                 " earlier calls (a value kept from an earlier call), which breaks implicit"
                 " solvers, differencing and restarts\n", b->element, b->id, input_name(b), input,
