@@ -13,6 +13,7 @@
 #include "model/orientation.h"
 #include "model/units.h"
 #include "model/state_equation_elements.h"
+#include "model/spline_elements.h"
 #include "model/user_list.h"
 #include "model/xml_attrs.h"
 #include "model/xml_schema.h"
@@ -540,6 +541,7 @@ const hx_element_spec hx_element_specs[] = {
     {"Force_StateEqn", hx_state_eqn_attrs, hx_build_state_eqn, NULL},
     {"Reference_Array", hx_array_attrs, hx_build_array, hx_array_text},
     {"Reference_Variable", hx_variable_attrs, hx_build_variable, NULL},
+    {"Reference_Spline", hx_spline_attrs, hx_build_spline, hx_spline_text},
 };
 const int hx_element_spec_count = (int)(sizeof hx_element_specs / sizeof hx_element_specs[0]);
 
@@ -547,8 +549,7 @@ int hx_element_is_output_only(const char *name)
 {
     /* outputs, solver settings and analysis commands: they do not act on the
      * dynamics the harness computes */
-    static const char *const prefixes[] = {"Post_", "Param_", "Simulate", "Analysis",
-                                           "Reference_Spline"};
+    static const char *const prefixes[] = {"Post_", "Param_", "Simulate", "Analysis"};
     for (size_t k = 0; k < sizeof prefixes / sizeof prefixes[0]; ++k)
         if (strncasecmp(name, prefixes[k], strlen(prefixes[k])) == 0)
             return 1;
