@@ -16,23 +16,30 @@
 #include "test_support.h"
 #include "tools/check/checks.h"
 
-/* Runs check on tests/third_party/tp_NAME.xml; returns the exit status and
- * the output (stdout and stderr). */
-static int check(const char *name, char *output, size_t size)
+/* Runs check on the model at path; returns the exit status and the output
+ * (stdout and stderr). */
+static int check_model(const char *path, char *output, size_t size)
 {
     /* a sanitizer's own SEGV handler would turn the crash into an exit status */
     setenv("ASAN_OPTIONS", "handle_segv=0:detect_leaks=1", 1);
     char command[2048];
-    snprintf(command, sizeof command, "'%s' check '%s/tp_%s.xml' --timeout 5 2>&1", HARNESS_EXE,
-             THIRD_PARTY_DIR, name);
+    snprintf(command, sizeof command, "'%s' check '%s' --timeout 5 2>&1", HARNESS_EXE, path);
     FILE *p = popen(command, "r");
     assert_non_null(p);
     size_t n = fread(output, 1, size - 1, p);
     output[n] = '\0';
     const int status = pclose(p);
     if (!WIFEXITED(status))
-        fail_msg("check %s did not exit: status %d; output:\n%s", name, status, output);
+        fail_msg("check %s did not exit: status %d; output:\n%s", path, status, output);
     return WEXITSTATUS(status);
+}
+
+/* check on tests/third_party/tp_NAME.xml. */
+static int check(const char *name, char *output, size_t size)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/tp_%s.xml", THIRD_PARTY_DIR, name);
+    return check_model(path, output, size);
 }
 
 static char output[65536];
@@ -162,9 +169,9 @@ static void a_fortran_library_loads_and_passes(void **state)
 static void a_utility_not_offered_is_named(void **state)
 {
     (void)state;
-    expect("unoffered", 1, NEEDLES("host: Force_Vector_TwoBody 1 (GFOSUB) needs c_akispl, which"
+    expect("unoffered", 1, NEEDLES("host: Force_Vector_TwoBody 1 (GFOSUB) needs c_quispl, which"
                                    " this host does not offer",
-                                   "FAIL: needs c_akispl, which this host does not offer"),
+                                   "FAIL: needs c_quispl, which this host does not offer"),
            NULL);
 }
 
@@ -365,6 +372,63 @@ static void the_c_style_record_form_binds_and_runs(void **state)
     csv_free(&tb);
 }
 
+/* SFOSUB laws read from the model's curves with c_akispl and c_cubspl: check
+ * passes; the curves are straight lines (the spring's continued linearly
+ * beyond its points), so the bodies oscillate as tp_scalar's do:
+ * x - x0 = 2 (cos 1000 t - 1), a - a0 = 0.1 (cos 316.23 t - 1) (tp_spline.xml). */
+static void spline_laws_are_answered_from_the_models_curves(void **state)
+{
+    (void)state;
+    expect("spline", 0, NEEDLES("Force_Scalar_TwoBody 1 (SPLINE_SPRING in libtp_spline.so)",
+                                "Force_Scalar_TwoBody 2 (SPLINE_TWIST in libtp_spline.so)",
+                                "2 passed, 0 failed"),
+           NEEDLES("FAIL", "host:", "ERRMES"));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    sim s;
+    sim_run(&s, THIRD_PARTY_DIR "/tp_spline.xml", HX_METHOD_DOPRI5, 1e-11, 0.01, 0.001);
+    const int x = sim_joint_q(&s, 5), a = sim_joint_q(&s, 6);
+    double worst = 0.0, stretch = 0.0;
+    for (int row = 0; row < s.path.rows; ++row) {
+        const double t = s.path.t[row];
+        worst = fmax(worst, fabs(sim_state(&s, row, x) - sim_state(&s, 0, x) -
+                                 2.0 * (cos(1000.0 * t) - 1.0)) / 2.0);
+        worst = fmax(worst, fabs(sim_state(&s, row, a) - sim_state(&s, 0, a) -
+                                 0.1 * (cos(sqrt(1e5) * t) - 1.0)) / 0.1);
+        stretch = fmin(stretch, sim_state(&s, row, x) - sim_state(&s, 0, x));
+    }
+    printf("  AKISPL and CUBSPL laws over 0.01 s: off the closed form by %.2g of the amplitude;"
+           " the spring's stretch reached %.3g mm (its points end at -1)\n", worst,
+           2.0 + stretch);
+    assert_true(s.path.rows > 5 && worst < 1e-6);
+    assert_true(2.0 + stretch < -1.5); /* well beyond the points: linear_extrap */
+    sim_close(&s);
+}
+
+/* The same library asking for a spline the model does not have: the host
+ * answers errflg and names the id; the library stops the run. */
+static void an_unknown_spline_is_named(void **state)
+{
+    (void)state;
+    char path[1024], *xml = NULL;
+    snprintf(path, sizeof path, "%s/tp_spline.xml", THIRD_PARTY_DIR);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t size = 0;
+    assert_true(getdelim(&xml, &size, '\0', f) > 0);
+    fclose(f);
+    char *spring = strstr(xml, "USER(20, 10, 101,"); /* spline 999 for the spring */
+    assert_non_null(spring);
+    memcpy(strstr(spring, "101"), "999", 3);
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1); /* the model is elsewhere */
+    const int status = check_model(test_write_file("tp_spline_missing.xml", xml), output,
+                                   sizeof output);
+    free(xml);
+    assert_int_equal(status, 1);
+    assert_contains(output, "host: Force_Scalar_TwoBody 1 (SPLINE_SPRING) called c_akispl with"
+                    " id 999, which names no Reference_Spline of the model; it answered"
+                    " errflg = 1", "the spline utility set errflg");
+}
+
 static void a_refused_query_is_reported(void **state)
 {
     (void)state;
@@ -414,6 +478,8 @@ int main(void)
         cmocka_unit_test(host_habits_are_those_of_a_solver),
         cmocka_unit_test(vector_routines_run_as_the_gfosub_of_their_law),
         cmocka_unit_test(scalar_routines_act_along_the_line_and_about_z),
+        cmocka_unit_test(spline_laws_are_answered_from_the_models_curves),
+        cmocka_unit_test(an_unknown_spline_is_named),
         cmocka_unit_test(a_wrong_couxx_is_reported_as_couxx),
         cmocka_unit_test(a_wrong_couxx2_is_named_by_row_and_column),
     };

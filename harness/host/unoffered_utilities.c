@@ -17,28 +17,11 @@ void c_tcnvrt(const char *sys1, const double *coord1, const char *sys2, double *
     *istat = 1;
 }
 
-static void spline(hx_utility u, int *errflg)
-{
-    hx_utility_unoffered(u);
-    *errflg = 1;
-}
-
-void c_akispl(double xval, double zval, int id, int iord, double *array, int *errflg)
-{
-    (void)xval, (void)zval, (void)id, (void)iord, (void)array;
-    spline(HX_UTILITY_AKISPL, errflg);
-}
-
-void c_cubspl(double xval, double zval, int id, int iord, double *array, int *errflg)
-{
-    (void)xval, (void)zval, (void)id, (void)iord, (void)array;
-    spline(HX_UTILITY_CUBSPL, errflg);
-}
-
 void c_quispl(double xval, double zval, int id, int iord, double *array, int *errflg)
 {
     (void)xval, (void)zval, (void)id, (void)iord, (void)array;
-    spline(HX_UTILITY_QUISPL, errflg);
+    hx_utility_unoffered(HX_UTILITY_QUISPL);
+    *errflg = 1;
 }
 
 void c_getmod(int *mode)

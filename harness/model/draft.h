@@ -48,6 +48,7 @@ typedef struct hx_draft {
     raw_state_eqn *rstate_eqns; /* parallel to m->state_eqns */
     int cap_markers, cap_bodies, cap_joints, cap_couplers, cap_forces, cap_loads, cap_strings;
     int cap_variables, cap_arrays, cap_state_eqns, cap_routines;
+    int cap_splines;
 } hx_draft;
 
 /* The first error wins: "file:line: what"; the reader then stops. */

@@ -14,6 +14,7 @@
 #include "model/units.h"
 #include "model/routine_elements.h"
 #include "model/state_equation_elements.h"
+#include "model/spline_elements.h"
 #include "model/user_list.h"
 #include "model/xml_attrs.h"
 #include "model/xml_schema.h"
@@ -569,6 +570,7 @@ const hx_element_spec hx_element_specs[] = {
     {"Post_Request", hx_request_attrs, hx_build_request, NULL, 1},
     {"Control_Diff", hx_diff_attrs, hx_build_diff, NULL, 1},
     {"Motion_Joint", hx_motion_attrs, hx_build_motion, NULL, 1},
+    {"Reference_Spline", hx_spline_attrs, hx_build_spline, hx_spline_text, 0},
 };
 const int hx_element_spec_count = (int)(sizeof hx_element_specs / sizeof hx_element_specs[0]);
 
@@ -576,8 +578,7 @@ int hx_element_is_output_only(const char *name)
 {
     /* outputs, solver settings and analysis commands: they do not act on the
      * dynamics the harness computes */
-    static const char *const prefixes[] = {"Post_", "Param_", "Simulate", "Analysis",
-                                           "Reference_Spline"};
+    static const char *const prefixes[] = {"Post_", "Param_", "Simulate", "Analysis"};
     for (size_t k = 0; k < sizeof prefixes / sizeof prefixes[0]; ++k)
         if (strncasecmp(name, prefixes[k], strlen(prefixes[k])) == 0)
             return 1;

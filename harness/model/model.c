@@ -125,6 +125,14 @@ int hx_model_find_force(const hx_model *m, const char *text, int *index, hx_mess
                    id);
 }
 
+int hx_model_spline(const hx_model *m, int id)
+{
+    for (int k = 0; k < m->nsplines; ++k)
+        if (m->splines[k].id == id)
+            return k;
+    return -1;
+}
+
 static void free_user_call(hx_user_call *u)
 {
     free(u->dll_name);
@@ -159,6 +167,14 @@ void hx_model_free(hx_model *m)
     for (int k = 0; k < m->nroutines; ++k)
         free_user_call(&m->routines[k].user);
     free(m->routines);
+    for (int k = 0; k < m->nsplines; ++k) {
+        free(m->splines[k].x);
+        free(m->splines[k].z);
+        free(m->splines[k].y);
+        free(m->splines[k].akima_slope);
+        free(m->splines[k].cubic_slope);
+    }
+    free(m->splines);
     free(m->variables);
     free(m->arrays);
     free(m->state_eqns);

@@ -184,6 +184,21 @@ typedef struct hx_string {
     char *text;
 } hx_string;
 
+/* A Reference_Spline (docs/interface.md §7.11): nz curves y(x) over the same
+ * nx x values, at z[0] < z[1] < ...; a curve is nz = 1 at z = 0. Each
+ * curve's knot slopes are kept for both methods the host answers. */
+typedef struct hx_spline {
+    int id;
+    int nx, nz;
+    double *x;              /* nx, strictly increasing */
+    double *z;              /* nz */
+    double *y;              /* nz * nx: the curve at z[j] is y + j * nx */
+    double *akima_slope;    /* nz * nx: Akima's knot slopes (c_akispl) */
+    double *cubic_slope;    /* nz * nx: the natural cubic spline's (c_cubspl) */
+    int linear_extrapolate; /* linear_extrap: straight beyond the x values */
+    int line;
+} hx_spline;
+
 typedef struct hx_model {
     char *path;
     char *dir;               /* folder of the model file */
@@ -221,6 +236,8 @@ typedef struct hx_model {
     char unsimulated[256];   /* the first of them, "Motion_Joint 5 (line 40)" */
     int *marker_slots;       /* open-addressing index from marker id */
     int marker_slot_count;
+    hx_spline *splines;
+    int nsplines;
 } hx_model;
 
 /* Reads a model; warnings go to `warnings` (may be NULL). Returns NULL with
@@ -252,5 +269,7 @@ int hx_model_routine(const hx_model *m, enum hx_routine_kind kind, int id);
 const char *hx_routine_element_name(enum hx_routine_kind kind);
 /* "Force_Vector_TwoBody", "Force_Vector_OneBody", "Force_Scalar_TwoBody" or "Force_Field". */
 const char *hx_force_element_name(const hx_force *f);
+/* Index of the Reference_Spline with this id, or -1. */
+int hx_model_spline(const hx_model *m, int id);
 
 #endif

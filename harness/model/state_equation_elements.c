@@ -5,7 +5,6 @@
  * our reading).
  */
 #include <ctype.h>
-#include <errno.h>
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
@@ -13,6 +12,7 @@
 #include <strings.h>
 
 #include "model/draft.h"
+#include "model/number_list.h"
 #include "model/routine_elements.h"
 #include "model/state_equation_elements.h"
 #include "model/variable_expression.h"
@@ -20,48 +20,12 @@
 
 /* ----  --------------------------------------------------------------------------------------- */
 
-/* The numbers of text (blanks, newlines or commas between them) into a new
- * array; their count, or -1 (out of memory), or -2 - k when the k-th token
- * (from 0) is not a finite number. */
-static int read_numbers(const char *text, double **out)
-{
-    int count = 0, capacity = 0;
-    double *values = NULL;
-    const char *p = text;
-    for (;;) {
-        while (isspace((unsigned char)*p) || *p == ',')
-            ++p;
-        if (*p == '\0')
-            break;
-        char *end;
-        errno = 0;
-        const double v = strtod(p, &end);
-        if (end == p || errno == ERANGE || !isfinite(v) ||
-            !(isspace((unsigned char)*end) || *end == ',' || *end == '\0')) {
-            free(values);
-            return -2 - count;
-        }
-        if (count == capacity) {
-            capacity = capacity ? 2 * capacity : 16;
-            double *grown = realloc(values, sizeof(double) * (size_t)capacity);
-            if (grown == NULL) {
-                free(values);
-                return -1;
-            }
-            values = grown;
-        }
-        values[count++] = v;
-        p = end;
-    }
-    *out = values;
-    return count;
-}
-
-/* The same for ids: positive integers. */
+/* The ids of text (blanks, newlines or commas between them): positive
+ * integers, as hx_read_numbers answers (model/number_list.h). */
 static int read_ids(const char *text, int **out)
 {
     double *values = NULL;
-    const int count = read_numbers(text, &values);
+    const int count = hx_read_numbers(text, &values);
     if (count < 0)
         return count;
     int *ids = malloc(sizeof(int) * (size_t)(count > 0 ? count : 1));
@@ -221,7 +185,7 @@ void hx_array_text(hx_draft *d, int line, const char *text)
     if (a->type == HX_ARRAY_U)
         n = read_ids(text, &a->variable_ids);
     else
-        n = read_numbers(text, &a->numbers);
+        n = hx_read_numbers(text, &a->numbers);
     if (n == -1) {
         hx_draft_fail(d, a->line, "out of memory");
         return;

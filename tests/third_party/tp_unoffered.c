@@ -1,8 +1,8 @@
 /*
  * tp_unoffered.c -- third-party test library (GFOSUB, Force_Vector_TwoBody)
- * that reads its spring's curve with c_akispl from a Reference_Spline, a
- * utility the harness does not offer. It loads (the harness defines every
- * utility); the verdict must FAIL it, naming c_akispl.
+ * that reads its spring's curve with c_quispl (quintic interpolation of a
+ * Reference_Spline), a utility the harness does not offer. It loads (the
+ * harness defines every utility); the verdict must FAIL it, naming c_quispl.
  */
 #include <string.h>
 
@@ -19,6 +19,6 @@ USRSUB_EXPORT void STDCALL GFOSUB(int *id, double *time, double *par, int *npar,
     double dx = 0.0, curve[3] = {0, 0, 0};
     int err = 0;
     c_sysfnc("DX", ipar, 3, &dx, &err);
-    c_akispl(dx, 0.0, (int)par[2], 0, curve, &err);
+    c_quispl(dx, 0.0, (int)par[2], 0, curve, &err);
     result[0] = err ? -1000.0 * dx : curve[0];
 }
