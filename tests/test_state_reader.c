@@ -2,8 +2,10 @@
  * The reader of the state-equation elements (docs/interface.md §7.10):
  * Force_StateEqn with each of its attributes, Reference_Array of each type
  * (numbers and ids as attributes or as text), Reference_Variable with every
- * measure, a minus and a number; and every error path, each naming the
- * element, its id, the attribute and the line.
+ * measure, a minus and a number; the user routines that are not forces
+ * (§7.12: Post_Request, USERSUB Reference_Variable, Control_Diff,
+ * Motion_Joint) and a user Force_Vector_OneBody; and every error path, each
+ * naming the element, its id, the attribute and the line.
  */
 #include <math.h>
 #include <stdio.h>
@@ -308,6 +310,99 @@ static void variable_errors_name_element_attribute_and_line(void **state)
 
 /* ---- the binding ------------------------------------------------------------------------------ */
 
+/* ---- the user routines that are not forces ------------------------------------------------ */
+
+#define JOINT                                                                             \
+    "<Reference_Marker id=\"11\" body_id=\"1\" pos_x=\"3\" pos_y=\"4\"/>\n"               \
+    "<Constraint_Joint id=\"6\" type=\"REVOLUTE\" i_marker_id=\"20\" j_marker_id=\"11\"/>\n"
+#define USERLIB " usrsub_dll_name=\"lib.so\" usrsub_param_string=\"USER(1, 2)\""
+
+static void routines_are_read_with_their_attributes(void **state)
+{
+    (void)state;
+    hx_message msg;
+    hx_model *m = read_parts("routines.xml", JOINT
+        "<Post_Request id=\"8\"" USERLIB " comment=\"c\"/>\n"
+        "<Post_Request id=\"9\" expr1=\"DX(20,10)\"/>\n" /* an expression: skipped */
+        "<Reference_Variable id=\"5\" type=\"USERSUB\"" USERLIB " usrsub_fnc_name=\"V\"/>\n"
+        "<Control_Diff id=\"7\" type=\"USERSUB\" ic=\"0.5\" ic_dot=\"-2\" is_implicit=\"TRUE\""
+        USERLIB "/>\n"
+        "<Motion_Joint id=\"3\" type=\"USERSUB\" joint_id=\"6\" motion_type=\"R\" val_type=\"a\""
+        " ic_disp=\"0.25\" ic_vel=\"4\"" USERLIB "/>\n"
+        "<Force_Vector_OneBody id=\"4\" type=\"TorqueOnly\" marker_id=\"20\" ref_marker_id=\"21\""
+        USERLIB "/>\n", &msg);
+    if (m == NULL)
+        fail_msg("%s", msg.text);
+    assert_int_equal(m->nroutines, 4);
+    const int kinds[4] = {HX_ROUTINE_REQUEST, HX_ROUTINE_VARIABLE, HX_ROUTINE_DIFF,
+                          HX_ROUTINE_MOTION};
+    for (int k = 0; k < 4; ++k) {
+        assert_int_equal(m->routines[k].kind, kinds[k]);
+        assert_int_equal(m->routines[k].slot, 0);
+        assert_int_equal(m->routines[k].user.npar, 2);
+        assert_int_equal(m->nroutines_of[kinds[k]], 1);
+    }
+    assert_string_equal(m->routines[1].user.fnc_name, "V");
+    const hx_routine *diff = &m->routines[2], *motion = &m->routines[3];
+    assert_int_equal(diff->id, 7);
+    assert_true(diff->ic[0] == 0.5 && diff->ic[1] == -2.0 && diff->implicit == 1);
+    assert_int_equal(motion->joint, hx_model_joint(m, 6));
+    assert_true(motion->val_type == 'A' && motion->motion_type == 'R');
+    assert_true(motion->ic[0] == 0.25 && motion->ic[1] == 4.0);
+    /* the one-body force: a user force element whose J is the ground's origin */
+    assert_int_equal(m->nforces, 1);
+    const hx_force *f = &m->forces[0];
+    assert_true(f->one_body && f->part == HX_OUTPUT_TORQUE);
+    assert_string_equal(hx_force_element_name(f), "Force_Vector_OneBody");
+    assert_int_equal(m->markers[f->i_marker].id, 20);
+    assert_int_equal(m->markers[f->ref_marker].id, 21);
+    const hx_marker *ground_origin = &m->markers[f->j_marker];
+    assert_int_equal(ground_origin->id, 0);
+    assert_int_equal(ground_origin->body, m->ground);
+    for (int i = 0; i < 3; ++i)
+        assert_true(ground_origin->pos0[i] == 0.0);
+    for (int i = 0; i < 9; ++i)
+        assert_true(ground_origin->R0[i] == (i % 4 == 0 ? 1.0 : 0.0));
+    hx_model_free(m);
+}
+
+static void routine_errors_name_element_and_line(void **state)
+{
+    (void)state;
+    expect_refused("r_type.xml", "<Post_Request id=\"8\" type=\"EXPRESSION\"" USERLIB "/>\n",
+                   "r_type.xml:7:", "Post_Request 8", "type \"EXPRESSION\"", "USERSUB");
+    expect_refused("r_twice.xml", "<Post_Request id=\"8\"" USERLIB "/>\n<Post_Request id=\"8\""
+                   USERLIB "/>\n", "r_twice.xml:8:", "Post_Request 8 is defined twice (line 7)");
+    expect_refused("r_script.xml", "<Control_Diff id=\"7\" script_name=\"d.py\""
+                   " usrsub_param_string=\"USER(1)\"/>\n", "r_script.xml:7:", "Control_Diff 7",
+                   "script_name", "not scripts");
+    expect_refused("r_dtype.xml", "<Control_Diff id=\"7\" type=\"EXPRESSION\"" USERLIB "/>\n",
+                   "r_dtype.xml:7:", "Control_Diff 7", "type \"EXPRESSION\"", "USERSUB");
+    expect_refused("r_vexpr.xml", "<Reference_Variable id=\"5\" type=\"USERSUB\" expr=\"1\""
+                   USERLIB "/>\n", "r_vexpr.xml:7:", "Reference_Variable 5", "takes no expr");
+    expect_refused("r_val.xml", JOINT "<Motion_Joint id=\"3\" joint_id=\"6\" val_type=\"X\""
+                   USERLIB "/>\n", "r_val.xml:9:", "Motion_Joint 3", "val_type \"X\"",
+                   "D, V or A");
+    expect_refused("r_mtype.xml", JOINT "<Motion_Joint id=\"3\" joint_id=\"6\" motion_type=\"Q\""
+                   USERLIB "/>\n", "r_mtype.xml:9:", "Motion_Joint 3", "motion_type \"Q\"");
+    expect_refused("r_freedom.xml", JOINT "<Motion_Joint id=\"3\" joint_id=\"6\""
+                   " motion_type=\"T\"" USERLIB "/>\n", "r_freedom.xml:9:", "Motion_Joint 3",
+                   "motion_type T on joint 6, a revolute joint");
+    expect_refused("r_nojoint.xml", "<Motion_Joint id=\"3\" joint_id=\"66\"" USERLIB "/>\n",
+                   "r_nojoint.xml:7:", "Motion_Joint 3", "joint_id 66 is not a Constraint_Joint");
+    expect_refused("r_nojointid.xml", "<Motion_Joint id=\"3\"" USERLIB "/>\n",
+                   "r_nojointid.xml:7:", "Motion_Joint 3", "joint_id is missing");
+    expect_refused("r_driven.xml", JOINT "<Motion_Joint id=\"3\" joint_id=\"6\"" USERLIB "/>\n"
+                   "<Motion_Joint id=\"4\" joint_id=\"6\"" USERLIB "/>\n", "r_driven.xml:10:",
+                   "Motion_Joint 4", "joint 6 is driven by Motion_Joint 3 too (line 9)");
+    expect_refused("r_onebody.xml", "<Force_Vector_OneBody id=\"4\" type=\"Sideways\""
+                   " marker_id=\"20\"" USERLIB "/>\n", "r_onebody.xml:7:",
+                   "Force_Vector_OneBody 4", "type \"Sideways\"");
+    expect_refused("r_onemarker.xml", "<Force_Vector_OneBody id=\"4\" type=\"ForceOnly\""
+                   " marker_id=\"99\"" USERLIB "/>\n", "r_onemarker.xml:7:",
+                   "Force_Vector_OneBody 4", "marker_id 99 is not a Reference_Marker");
+}
+
 static void the_partial_routines_are_optional_unless_named(void **state)
 {
     (void)state;
@@ -368,6 +463,8 @@ int main(void)
         cmocka_unit_test(state_eqn_errors_name_element_and_line),
         cmocka_unit_test(array_errors_name_element_and_line),
         cmocka_unit_test(variable_errors_name_element_attribute_and_line),
+        cmocka_unit_test(routines_are_read_with_their_attributes),
+        cmocka_unit_test(routine_errors_name_element_and_line),
         cmocka_unit_test(the_partial_routines_are_optional_unless_named),
         cmocka_unit_test(a_wrong_input_count_is_the_librarys_to_report),
     };

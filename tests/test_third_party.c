@@ -12,6 +12,7 @@
 #include <sys/wait.h>
 
 #include "host/session.h"
+#include "sim/dynamics/dynamics.h"
 #include "sim_support.h"
 #include "test_support.h"
 #include "tools/check/checks.h"
@@ -297,6 +298,85 @@ static void routines_that_are_not_forces_are_checked_and_run(void **state)
     csv_free(&tb);
 }
 
+/* tp_routines.xml with `from` replaced by `to`, in the temporary folder:
+ * run's set-up refuses it with a message holding `needle`. */
+static void run_refuses_variant(const char *name, const char *from, const char *to,
+                                const char *needle)
+{
+    FILE *f = fopen(THIRD_PARTY_DIR "/tp_routines.xml", "r");
+    assert_non_null(f);
+    static char text[16384], changed[16384];
+    const size_t n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = '\0';
+    const char *at = strstr(text, from);
+    assert_non_null(at);
+    snprintf(changed, sizeof changed, "%.*s%s%s", (int)(at - text), text, to, at + strlen(from));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    hx_session s;
+    hx_message msg;
+    if (hx_session_open(&s, test_write_file(name, changed), NULL, &msg) != 0)
+        fail_msg("%s", msg.text);
+    hx_dynamics d;
+    const int status = hx_dynamics_init(&d, &s, &msg);
+    hx_dynamics_free(&d);
+    hx_session_close(&s);
+    assert_int_equal(status, -1);
+    assert_non_null(strstr(msg.text, needle));
+}
+
+/* What run does not integrate is refused, naming the element. */
+static void run_refuses_an_implicit_diff_and_a_motion_on_a_coupled_joint(void **state)
+{
+    (void)state;
+    run_refuses_variant("implicit.xml", "is_implicit=\"FALSE\"", "is_implicit=\"TRUE\"",
+                        "Control_Diff 7: is_implicit=\"TRUE\": the harness integrates explicit"
+                        " Control_Diff elements only");
+    run_refuses_variant("coupled.xml", "<Force_Vector_OneBody",
+                        "<Reference_Marker id=\"50\" body_id=\"5\"/>"
+                        "<Body_Rigid id=\"5\" cg_id=\"50\" mass=\"1\" inertia_xx=\"1\""
+                        " inertia_yy=\"1\" inertia_zz=\"1\"/><Reference_Marker id=\"13\" body_id=\"1\"/>"
+                        "<Constraint_Joint id=\"9\" type=\"REVOLUTE\" i_marker_id=\"50\""
+                        " j_marker_id=\"13\"/><Constraint_Coupler id=\"1\" joint1_id=\"6\""
+                        " freedom_1=\"R\" joint2_id=\"9\" freedom_2=\"R\" coefficients=\"1, -2\"/>"
+                        "<Force_Vector_OneBody",
+                        "Motion_Joint 6 drives joint 6, which Constraint_Coupler 1 couples");
+}
+
+/* C ported to Linux through a port header (tp_mdi_names.h: sfosub_, reqsub_),
+ * reading its spring from a relative path: the model's folder is the working
+ * folder, as the solver's; the body oscillates as x - 10 = 2 cos(1000 t). */
+static void ported_c_names_and_the_working_folder(void **state)
+{
+    (void)state;
+    expect("mdi", 0, NEEDLES("Force_Scalar_TwoBody 1 (sfosub_ in libtp_mdi.so)",
+                             "Post_Request 2 (reqsub_ in libtp_mdi.so)", "outputs at t = 0: 12 1000 10",
+                             "2 passed, 0 failed"),
+           NEEDLES("FAIL", "cannot read"));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    char csv[512];
+    snprintf(csv, sizeof csv, "%s/mdi.csv", test_temp_dir());
+    const char *args[] = {"--end", "0.01", "--rtol", "1e-11", "--atol", "1e-12",
+                          "--output-interval", "0.0005", "--quiet", NULL};
+    assert_int_equal(sim_run_csv(THIRD_PARTY_DIR "/tp_mdi.xml", csv, args), 0);
+    const int t = csv_column(csv, "t"), x = csv_column(csv, "joint5.q"),
+              length = csv_column(csv, "request2.1"), k = csv_column(csv, "request2.2");
+    assert_true(t >= 0 && x >= 0 && length >= 0 && k >= 0);
+    csv_table tb;
+    csv_read(csv, &tb);
+    double worst = 0.0;
+    for (int row = 0; row < tb.rows; ++row) {
+        const double time = csv_at(&tb, row, t);
+        worst = fmax(worst, fabs(csv_at(&tb, row, x) - csv_at(&tb, 0, x) -
+                                 2.0 * (cos(1000.0 * time) - 1.0)) / 2.0);
+        assert_true(csv_at(&tb, row, k) == 1000.0);
+        assert_true(fabs(csv_at(&tb, row, length) - 10.0 - 2.0 * cos(1000.0 * time)) < 1e-6);
+    }
+    printf("  tp_mdi over 0.01 s: off x - 10 = 2 cos(1000 t) by %.2g of the amplitude\n", worst);
+    assert_true(tb.rows > 15 && worst < 1e-6);
+    csv_free(&tb);
+}
+
 /* Each routine's planted fault is named (tp_routines_faults.c): MOTSUB's
  * acceleration, DIFSUB's read outside its declared queries, VARSUB's hidden
  * state; REQSUB's unwritten values are a note. */
@@ -471,6 +551,8 @@ int main(void)
         cmocka_unit_test(a_refused_query_is_reported),
         cmocka_unit_test(routines_that_are_not_forces_are_checked_and_run),
         cmocka_unit_test(faults_of_the_routines_are_named),
+        cmocka_unit_test(ported_c_names_and_the_working_folder),
+        cmocka_unit_test(run_refuses_an_implicit_diff_and_a_motion_on_a_coupled_joint),
         cmocka_unit_test(the_c_style_record_form_binds_and_runs),
         cmocka_unit_test(libraries_using_the_utilities_pass),
         cmocka_unit_test(a_fortran_library_loads_and_passes),

@@ -23,7 +23,7 @@ typedef enum hx_binding_kind {
 } hx_binding_kind;
 
 /* The routines that are not forces, in the classic form: every argument by
- * address (docs/interface.md §5.3). REQSUB(id, time, par, npar, iflag,
+ * address (docs/interface.md §7.12). REQSUB(id, time, par, npar, iflag,
  * result[8]); VARSUB and DIFSUB (dflag) and MOTSUB (iord) return one value. */
 typedef void STDCALL hx_reqsub_fn(int *id, double *time, double *par, int *npar, int *iflag,
                                   double *result);

@@ -153,7 +153,7 @@ typedef struct hx_state_eqn {
     int line;
 } hx_state_eqn;
 
-/* A user routine that is not a force (docs/interface.md §7.11): a
+/* A user routine that is not a force (docs/interface.md §7.12): a
  * Post_Request's REQSUB (eight values written with the results), a USERSUB
  * Reference_Variable's VARSUB (one value), a USERSUB Control_Diff's DIFSUB
  * (the rate of one state integrated with the bodies') and a USERSUB

@@ -1,6 +1,6 @@
 /*
  * The user routines that are not forces (routine_elements.h). Attribute names
- * are MotionSolve's (docs/interface.md §7.11).
+ * are MotionSolve's (docs/interface.md §7.12).
  */
 #include <string.h>
 #include <strings.h>

@@ -1,5 +1,5 @@
 /*
- * The user routines that are not forces (docs/interface.md §7.11): the
+ * The user routines that are not forces (docs/interface.md §7.12): the
  * descriptions and builders of Post_Request (REQSUB), Control_Diff (DIFSUB)
  * and Motion_Joint (MOTSUB) in their user form, the USERSUB form of
  * Reference_Variable (VARSUB, read through hx_build_variable), and their

@@ -1,6 +1,6 @@
 /*
  * The user routines that are not forces in the equations of motion
- * (docs/interface.md §7.11):
+ * (docs/interface.md §7.12):
  *  - each Control_Diff's state is part of y (dynamics.h), its rate DIFSUB's
  *    value at the state, which the host also answers DIF and DIF1 from;
  *  - a Motion_Joint drives its joint's coordinate: for val_type D, MOTSUB's
