@@ -1,6 +1,6 @@
 /*
  * The harness's model: the subset of a MotionSolve XML model it supports
- * (README, "Supported MotionSolve XML"). Immutable once read: what changes
+ * (docs/interface.md §7). Immutable once read: what changes
  * during a run lives in a state (state/state.h). Indices below are positions
  * in the model's arrays; ids are the XML ids.
  */

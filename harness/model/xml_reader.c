@@ -202,7 +202,7 @@ static int read_element(hx_draft *d, const hx_element_spec *spec, const XML_Char
         const int a = find_attr(e, atts[k]);
         if (a < 0) {
             hx_draft_fail(d, e->line, "%s: attribute %s is not one the harness reads (it could"
-                          " change the model; see the README's supported XML)", label, atts[k]);
+                          " change the model; docs/interface.md §7 lists what it reads)", label, atts[k]);
             return -1;
         }
         if (read_value(d, e, a, atts[k + 1]) != 0) {
