@@ -7,7 +7,8 @@
 #  - the harness shares no code with the library it verifies: of the
 #    library's headers it includes only the solver ABI;
 #  - the harness has one global, the ABI's binding (host/abi.c);
-#  - nothing refers to files outside the repository.
+#  - nothing refers to files outside the repository, and every repository
+#    path a source, script or document names exists.
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
@@ -32,13 +33,11 @@ rank_of() { # layer rank of a path inside a tree, or empty
   esac
 }
 
-for f in $(git ls-files 'usrsub/*.c' 'usrsub/*.h' 'include/usrsub/*.h'); do
-  case "$f" in
-    include/usrsub/core/*) mine=0 ;;
-    include/usrsub/readers/*) mine=1 ;;
-    include/usrsub/solver_abi.h) continue ;;
-    *) mine=$(rank_of "$f") ;;
-  esac
+[ "$(git ls-files include)" = "include/usrsub/solver_abi.h" ] ||
+  complain "include/ holds more than the one public header, the solver ABI: $(git ls-files include)"
+
+for f in $(git ls-files 'usrsub/*.c' 'usrsub/*.h'); do
+  mine=$(rank_of "$f")
   while read -r inc; do
     case "$inc" in
       usrsub/solver_abi.h) [ "$mine" -ge 1 ] || complain "$f includes the ABI header (core knows no host)" ;;
@@ -74,6 +73,30 @@ globals=$(git ls-files 'harness/*.c' | xargs grep -nE '^(static )?(_Thread_local
 refs=$(git grep -nE '\.\./shared|INTERFACE\.md|seed 00[0-9]' -- '*.c' '*.h' '*.txt' 'CMakeLists.txt' '*.sh' \
        ':!tests/check_layers.sh' || true)
 [ -z "$refs" ] || complain "references to files outside the repository: $refs"
+
+# Every path a source, script, build file or document names (a word with a
+# folder and an extension, such as harness/host/abi.c or docs/interface.md)
+# must exist: from the repository's root, from the naming file's folder, or
+# as the harness and the library name them (from harness/, include/, usrsub/).
+# Not paths of the repository: system headers (<sys/wait.h>), the outputs of
+# commands (out/, outputs/) and placeholders in capitals (MODEL.xml, DIR/).
+exists() { # path, naming file
+  local dir
+  dir=$(dirname "$2")
+  case "$1" in
+    out/*|outputs/*|*[A-Z][A-Z][A-Z]*) return 0 ;;
+  esac
+  for base in . "$dir" harness include usrsub usrsub/entries; do
+    [ -e "$base/$1" ] && return 0
+  done
+  return 1
+}
+while IFS=: read -r f path; do
+  exists "$path" "$f" || complain "$f names $path, which does not exist"
+done < <(git grep -oE '(^|[^A-Za-z0-9_./%$*{<-])[A-Za-z0-9_.-]+(/[A-Za-z0-9_.-]+)+\.(c|h|md|sh|xml|txt|cmake|def|gbs|gbi|gfj|tbl|csv|png|f)\b' \
+           -- '*.c' '*.h' '*.sh' '*.md' 'CMakeLists.txt' '*.cmake' '*.xml' '*.f' \
+         | sed -E 's/^([^:]+):[^A-Za-z0-9_.-]?/\1:/' | sort -u)
+
 
 if [ "$failures" -ne 0 ]; then
   echo "check_layers: $failures problem(s)"

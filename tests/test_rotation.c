@@ -1,5 +1,5 @@
 /*
- * Rotations (include/usrsub/core/rotation.h): Euler and projection angles
+ * Rotations (usrsub/core/rotation.h): Euler and projection angles
  * against matrices worked by hand; phi rebuilt at rest from any psi; the
  * rotation of given projection angles and its derivative; the rotation
  * vector near 0 and pi; the inverse tangent map and its derivatives; and the

@@ -1,5 +1,5 @@
 /* The whole bushing: offset and scale, coupled groups, preload and force
- * scale, with the 6x6 partials (include/usrsub/bushing.h). */
+ * scale, with the 6x6 partials (bushing.h). */
 #include <stdlib.h>
 #include <string.h>
 

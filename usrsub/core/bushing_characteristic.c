@@ -1,4 +1,4 @@
-/* Stiffness characteristics g(q) of a bushing direction (include/usrsub/bushing.h). */
+/* Stiffness characteristics g(q) of a bushing direction (bushing.h). */
 #include <stddef.h>
 
 #include "usrsub/core/bushing.h"

@@ -1,5 +1,5 @@
 /*
- * The bushing with its internal states (include/usrsub/core/bushing_states.h).
+ * The bushing with its internal states (bushing_states.h).
  *
  * Two layers. The law: the force on I, the bristle rates and the rubber
  * filters' rates as functions of what the bushing sees (q, qdot), the

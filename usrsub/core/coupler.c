@@ -1,5 +1,5 @@
 /* Coupler terms and phi with its first and second partials
- * (include/usrsub/core/coupler.h; docs/interface.md §2). */
+ * (coupler.h; docs/interface.md §2). */
 #include "usrsub/core/coupler.h"
 
 #include <math.h>

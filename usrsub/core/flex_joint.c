@@ -1,4 +1,4 @@
-/* Flexible-joint forces and partials (include/usrsub/flex_joint.h). */
+/* Flexible-joint forces and partials (flex_joint.h). */
 #include "usrsub/core/flex_joint.h"
 
 #include <stdlib.h>

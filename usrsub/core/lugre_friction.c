@@ -1,4 +1,4 @@
-/* The bushing's LuGre friction torque (include/usrsub/core/lugre_friction.h). */
+/* The bushing's LuGre friction torque (lugre_friction.h). */
 #include "usrsub/core/lugre_friction.h"
 
 #include <math.h>

@@ -1,4 +1,4 @@
-/* Error text of the core and the readers (see include/usrsub/message.h). */
+/* Error text of the core and the readers (see message.h). */
 #include "usrsub/core/message.h"
 
 #include <stdarg.h>

@@ -1,4 +1,4 @@
-/* Mount-limit forces and partials (include/usrsub/mount_limits.h). */
+/* Mount-limit forces and partials (mount_limits.h). */
 #include "usrsub/core/mount_limits.h"
 
 #include <math.h>

@@ -1,4 +1,4 @@
-/* Rotations of I relative to J (include/usrsub/core/rotation.h). */
+/* Rotations of I relative to J (rotation.h). */
 #include "usrsub/core/rotation.h"
 
 #include <math.h>

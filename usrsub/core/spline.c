@@ -1,5 +1,5 @@
 /*
- * Natural cubic spline with linear extension (include/usrsub/spline.h).
+ * Natural cubic spline with linear extension (spline.h).
  * Set-up solves the tridiagonal system for the knot curvatures once; an
  * evaluation finds its interval (by division for equally spaced knots, else
  * a bucket and a step or two) and is a cubic in Horner form.

@@ -1,5 +1,5 @@
 /* The smallest eigenvalue of a scaled symmetric part, by cyclic Jacobi
- * rotations (include/usrsub/flex_joint.h). Small (n <= 6) and only used
+ * rotations (flex_joint.h). Small (n <= 6) and only used
  * when a property file is read. */
 #include <math.h>
 

@@ -1,5 +1,5 @@
 /* The coupler's USER list, term by term, and its code-4 table files
- * (include/usrsub/readers/coupler_reader.h; docs/interface.md §2). */
+ * (coupler_reader.h; docs/interface.md §2). */
 #include "usrsub/readers/coupler_reader.h"
 
 #include <limits.h>

@@ -1,4 +1,4 @@
-/* The one TeimOrbit property-file driver (include/usrsub/readers/property_file.h). */
+/* The one TeimOrbit property-file driver (property_file.h). */
 #include "usrsub/readers/property_file.h"
 
 #include "usrsub/core/rotation.h"

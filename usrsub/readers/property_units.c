@@ -1,4 +1,4 @@
-/* Property-file units and their conversion (include/usrsub/property_units.h). */
+/* Property-file units and their conversion (property_units.h). */
 #include "usrsub/readers/property_units.h"
 
 #include <math.h>

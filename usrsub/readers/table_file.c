@@ -1,4 +1,4 @@
-/* Two-column "x y" table files (include/usrsub/table_file.h). */
+/* Two-column "x y" table files (table_file.h). */
 #include "usrsub/readers/table_file.h"
 
 #include <errno.h>

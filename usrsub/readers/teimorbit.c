@@ -1,4 +1,4 @@
-/* TeimOrbit property-file parser (include/usrsub/teimorbit.h). */
+/* TeimOrbit property-file parser (teimorbit.h). */
 #include "usrsub/readers/teimorbit.h"
 
 #include <ctype.h>

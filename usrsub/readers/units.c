@@ -1,4 +1,4 @@
-/* Unit names and their SI sizes (include/usrsub/units.h). */
+/* Unit names and their SI sizes (units.h). */
 #include "usrsub/readers/units.h"
 
 #include <stddef.h>

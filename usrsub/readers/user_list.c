@@ -1,4 +1,4 @@
-/* Reading a USER(...) list value by value (include/usrsub/user_list.h). */
+/* Reading a USER(...) list value by value (user_list.h). */
 #include "usrsub/readers/user_list.h"
 
 #include <math.h>
