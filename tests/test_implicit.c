@@ -148,24 +148,24 @@ static void newton_matrix_equals_differences_on_the_powertrain(void **state)
 }
 
 /* A third party's FIESUB that fills dfddis only when dflag is set and never
- * writes dfdvel (tests/third_party/tp_habits_field.c): the Newton matrix
+ * writes dfdvel (tests/user_libraries/tp_habits_field.c): the Newton matrix
  * asks for them so, and equals the differences. */
 static void newton_matrix_asks_a_field_for_its_partials(void **state)
 {
     (void)state;
     setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
-    jacobian_after(THIRD_PARTY_DIR "/tp_habits_field.xml", 0.01,
+    jacobian_after(USER_LIBRARIES_DIR "/tp_habits_field.xml", 0.01,
                    "tp_habits_field.xml at t = 0.01 s", HX_PARTIALS_FIESUB);
 }
 
 /* A Control_Diff's row (DIFSUB differenced in what it reads) and a driven
- * joint's rows (zero: a function of time) (tests/third_party/tp_routines.c);
+ * joint's rows (zero: a function of time) (tests/user_libraries/tp_routines.c);
  * the OneBody force's partials by differences of the element alone. */
 static void newton_matrix_has_the_routines_rows(void **state)
 {
     (void)state;
     setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
-    jacobian_after(THIRD_PARTY_DIR "/tp_routines.xml", 0.02, "tp_routines.xml at t = 0.02 s",
+    jacobian_after(USER_LIBRARIES_DIR "/tp_routines.xml", 0.02, "tp_routines.xml at t = 0.02 s",
                    HX_PARTIALS_DIFFERENCES);
 }
 

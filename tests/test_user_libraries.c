@@ -1,0 +1,569 @@
+/*
+ * usrsub-harness check on user libraries written independently of this
+ * project (tests/user_libraries/README.md): correct ones pass; each planted bug
+ * is caught and named where it is (the routine, the output and input, the
+ * query, the signal); the harness survives a crash. The harness runs as a
+ * user runs it, as a program, its output read back.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+
+#include "host/session.h"
+#include "sim/dynamics/dynamics.h"
+#include "sim_support.h"
+#include "test_support.h"
+#include "tools/check/checks.h"
+
+/* Runs check on the model at path; returns the exit status and the output
+ * (stdout and stderr). */
+static int check_model(const char *path, char *output, size_t size)
+{
+    /* a sanitizer's own SEGV handler would turn the crash into an exit status */
+    setenv("ASAN_OPTIONS", "handle_segv=0:detect_leaks=1", 1);
+    char command[2048];
+    snprintf(command, sizeof command, "'%s' check '%s' --timeout 5 2>&1", HARNESS_EXE, path);
+    FILE *p = popen(command, "r");
+    assert_non_null(p);
+    size_t n = fread(output, 1, size - 1, p);
+    output[n] = '\0';
+    const int status = pclose(p);
+    if (!WIFEXITED(status))
+        fail_msg("check %s did not exit: status %d; output:\n%s", path, status, output);
+    return WEXITSTATUS(status);
+}
+
+/* check on tests/user_libraries/tp_NAME.xml. */
+static int check(const char *name, char *output, size_t size)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/tp_%s.xml", USER_LIBRARIES_DIR, name);
+    return check_model(path, output, size);
+}
+
+static char output[65536];
+
+static void expect(const char *name, int status, const char *const *needles,
+                   const char *const *absent)
+{
+    const int got = check(name, output, sizeof output);
+    if (got != status)
+        fail_msg("check tp_%s: exit %d, expected %d; output:\n%s", name, got, status, output);
+    for (; needles != NULL && *needles != NULL; ++needles)
+        if (strstr(output, *needles) == NULL)
+            fail_msg("check tp_%s: '%s' is not in the output:\n%s", name, *needles, output);
+    for (; absent != NULL && *absent != NULL; ++absent)
+        if (strstr(output, *absent) != NULL)
+            fail_msg("check tp_%s: '%s' should not be in the output:\n%s", name, *absent, output);
+}
+
+#define NEEDLES(...) ((const char *const[]){__VA_ARGS__, NULL})
+
+static void correct_libraries_pass(void **state)
+{
+    (void)state;
+    static const char *const good[] = {"good_sysary", "good_sysfnc", "good_field",
+                                       "coupler_good"};
+    for (size_t k = 0; k < sizeof good / sizeof good[0]; ++k)
+        expect(good[k], 0, NEEDLES("1 passed, 0 failed"), NEEDLES("FAIL"));
+}
+
+static void a_hidden_state_is_named(void **state)
+{
+    (void)state;
+    expect("hidden_state", 1, NEEDLES("history audit: FAIL: a hidden state"),
+           NEEDLES("which no declared query"));
+}
+
+/* A library built as on Linux, exporting only gfosub_, binds and passes. */
+static void a_linux_entry_name_binds(void **state)
+{
+    (void)state;
+    expect("linux_names", 0, NEEDLES("Force_Vector_TwoBody 1 (gfosub_ in libtp_linux_names.so)",
+                                     "1 passed, 0 failed"), NEEDLES("FAIL"));
+}
+
+/* Damping from a displacement cached at an earlier call, refreshed after the
+ * first ordinary call at a later time: two calls in a row differ. */
+static void a_cache_refreshed_when_time_advances_fails(void **state)
+{
+    (void)state;
+    expect("cached_displacement", 1,
+           NEEDLES("FAIL: two calls in a row at the same state and time", "a hidden state",
+                   "history audit: FAIL: a hidden state: at the same input A", "0 passed, 1 failed"),
+           NEEDLES("not judged"));
+}
+
+/* A rate estimated across time steps: calls in a row agree, the order of
+ * calls across times shows the hidden state. */
+static void a_cache_across_time_steps_fails(void **state)
+{
+    (void)state;
+    expect("step_cache", 1,
+           NEEDLES("history audit: FAIL: a hidden state: at the same input A",
+                   "a value kept from an earlier call", "0 passed, 1 failed"),
+           NEEDLES("two calls in a row", "not judged"));
+}
+
+/* What the host notes in the history audit's processes comes back: the late
+ * reads of tp_late_query (at t > 0, where the audit's calls are) are noted in
+ * this process, so that check fails them. */
+static void reads_noted_in_the_history_audit_come_back(void **state)
+{
+    (void)state;
+    hx_session s;
+    hx_message msg;
+    if (hx_session_open(&s, USER_LIBRARIES_DIR "/tp_late_query.xml", NULL, &msg) != 0)
+        fail_msg("%s", msg.text);
+    hx_binding *b = &s.bindings.items[0];
+    assert_int_equal(b->reported_undeclared.count, 0);
+    FILE *out = fopen("/dev/null", "w");
+    assert_non_null(out);
+    hx_audit_history(&s, b, out);
+    fclose(out);
+    assert_true(b->reported_undeclared.count > 0);
+    char text[64];
+    assert_string_equal(hx_query_text(&b->reported_undeclared.query[0], text, sizeof text),
+                        "VX(20,10,10,10)");
+    hx_session_close(&s);
+}
+
+static void a_read_at_a_later_time_is_caught(void **state)
+{
+    (void)state;
+    expect("late_query", 1, NEEDLES("reads outside the dependencies", "VX(20,10,10,10)",
+                                    "WZ(20,10,10)"), NULL);
+}
+
+static void a_wrong_field_partial_is_named_by_row_and_column(void **state)
+{
+    (void)state;
+    expect("wrong_partial", 1, NEEDLES("dfddis[1 + 6*3] = dFy/dax", "FAIL"), NULL);
+}
+
+static void a_crash_is_reported_and_survived(void **state)
+{
+    (void)state;
+    expect("crash", 1, NEEDLES("Force_Vector_TwoBody 1: FAIL: crashed with signal 11",
+                               "GFOSUB", "libtp_crash.so", "iflag = 0", "1 crashed or hung"),
+           NULL);
+}
+
+static void libraries_using_the_utilities_pass(void **state)
+{
+    (void)state;
+    expect("utilities", 0, NEEDLES("1 passed, 0 failed"), NEEDLES("FAIL", "host:"));
+}
+
+static void a_fortran_library_loads_and_passes(void **state)
+{
+    (void)state;
+#ifdef TP_FORTRAN
+    expect("fortran", 0, NEEDLES("gfosub_", "1 passed, 0 failed"), NEEDLES("FAIL", "host:"));
+#else
+    skip(); /* no Fortran compiler at configure time (Debian: gfortran) */
+#endif
+}
+
+static void a_utility_not_offered_is_named(void **state)
+{
+    (void)state;
+    expect("unoffered", 1, NEEDLES("host: Force_Vector_TwoBody 1 (GFOSUB) needs c_quispl, which"
+                                   " this host does not offer",
+                                   "FAIL: needs c_quispl, which this host does not offer"),
+           NULL);
+}
+
+static void host_habits_are_those_of_a_solver(void **state)
+{
+    (void)state;
+    /* outputs zeroed before each call; NaN in the dependency pass a warning */
+    expect("habits", 0, NEEDLES("note: GFOSUB never writes output 5 of its call",
+                                "returned a non-finite output in its dependency pass",
+                                "a warning only", "1 passed, 0 failed"),
+           NEEDLES("FAIL"));
+    /* partials asked for with dflag set, dfdvel zeroed first */
+    expect("habits_field", 0, NEEDLES("1 passed, 0 failed"), NEEDLES("FAIL", "never writes"));
+}
+
+/* VFOSUB and VTOSUB (Force_Vector_TwoBody ForceOnly, TorqueOnly) pass check,
+ * and together run as the GFOSUB of the same law: one trajectory. */
+static void vector_routines_run_as_the_gfosub_of_their_law(void **state)
+{
+    (void)state;
+    expect("vector", 0, NEEDLES("(VFOSUB in libtp_vector.so)", "(VTOSUB in libtp_vector.so)",
+                                "2 passed, 0 failed"),
+           NEEDLES("FAIL", "never writes"));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    sim one, two;
+    sim_run(&one, USER_LIBRARIES_DIR "/tp_good_sysfnc.xml", HX_METHOD_DOPRI5, 1e-10, 0.3, 0.3);
+    sim_run(&two, USER_LIBRARIES_DIR "/tp_vector.xml", HX_METHOD_DOPRI5, 1e-10, 0.3, 0.3);
+    const int last = one.path.rows - 1, n = one.dynamics.nq + one.dynamics.nu;
+    assert_int_equal(two.path.rows - 1, last);
+    double worst = 0.0, size = 0.0;
+    for (int k = 0; k < n; ++k) {
+        worst = fmax(worst, fabs(sim_state(&one, last, k) - sim_state(&two, last, k)));
+        size = fmax(size, fabs(sim_state(&one, last, k)));
+    }
+    printf("  VFOSUB + VTOSUB against GFOSUB after 0.3 s: largest state difference %.2g (of"
+           " %.3g)\n", worst, size);
+    assert_true(size > 0.1 && worst <= 1e-9 * size);
+    sim_close(&one);
+    sim_close(&two);
+}
+
+/* SFOSUB (Force_Scalar_TwoBody FORCE and TORQUE): check passes; a line spring
+ * on a slider and a twist spring on a hinge oscillate as spring-masses do,
+ * x - x0 = 2 (cos 1000 t - 1), a - a0 = 0.1 (cos 316.23 t - 1) (tp_scalar.xml). */
+static void scalar_routines_act_along_the_line_and_about_z(void **state)
+{
+    (void)state;
+    expect("scalar", 0, NEEDLES("Force_Scalar_TwoBody 1 (LINE_SPRING in libtp_scalar.so)",
+                                "Force_Scalar_TwoBody 2 (TWIST_SPRING in libtp_scalar.so)",
+                                "2 passed, 0 failed"),
+           NEEDLES("FAIL", "never writes"));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    sim s;
+    sim_run(&s, USER_LIBRARIES_DIR "/tp_scalar.xml", HX_METHOD_DOPRI5, 1e-11, 0.01, 0.001);
+    const int x = sim_joint_q(&s, 5), a = sim_joint_q(&s, 6);
+    double worst = 0.0;
+    for (int row = 0; row < s.path.rows; ++row) {
+        const double t = s.path.t[row];
+        worst = fmax(worst, fabs(sim_state(&s, row, x) - sim_state(&s, 0, x) -
+                                 2.0 * (cos(1000.0 * t) - 1.0)) / 2.0);
+        worst = fmax(worst, fabs(sim_state(&s, row, a) - sim_state(&s, 0, a) -
+                                 0.1 * (cos(sqrt(1e5) * t) - 1.0)) / 0.1);
+    }
+    printf("  SFOSUB line and twist springs over 0.01 s: off the closed form by %.2g of the"
+           " amplitude\n", worst);
+    assert_true(s.path.rows > 5 && worst < 1e-6);
+    sim_close(&s);
+}
+
+/* REQSUB, VARSUB, DIFSUB, MOTSUB and a VFOSUB on one body (tp_routines.c):
+ * check passes each; the run follows the closed forms of tp_routines.xml. */
+static void routines_that_are_not_forces_are_checked_and_run(void **state)
+{
+    (void)state;
+    expect("routines", 0,
+           NEEDLES("Force_Vector_OneBody 3 (ANCHOR in libtp_routines.so)",
+                   "Motion_Joint 6 (SWING in libtp_routines.so)",
+                   "SWING rate (iord 1) against differences in time",
+                   "Control_Diff 7 (LAG in libtp_routines.so)",
+                   "declared dependencies: AZ(30,12) DIF(7)",
+                   "Reference_Variable 9 (SPEED in libtp_routines.so)",
+                   "Post_Request 8 (REPORT in libtp_routines.so)", "5 passed, 0 failed"),
+           NEEDLES("FAIL", "never writes"));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    char csv[512];
+    snprintf(csv, sizeof csv, "%s/routines.csv", test_temp_dir());
+    const char *args[] = {"--end", "0.05", "--rtol", "1e-10", "--atol", "1e-12",
+                          "--output-interval", "0.001", "--quiet", NULL};
+    assert_int_equal(sim_run_csv(USER_LIBRARIES_DIR "/tp_routines.xml", csv, args), 0);
+    static const char *const names[] = {"t", "body2.x", "variable9", "joint6.q",
+                                        "motion6.error", "diff7", "request8.1", "request8.2",
+                                        "request8.3", "request8.4"};
+    int col[10];
+    for (int k = 0; k < 10; ++k)
+        assert_true((col[k] = csv_column(csv, names[k])) >= 0);
+    csv_table tb;
+    csv_read(csv, &tb);
+    double worst[5] = {0}, report = 0.0;
+    const double a = 0.2, w = 50.0, tau = 0.01, r = w * tau;
+    for (int row = 0; row < tb.rows; ++row) {
+        const double t = csv_at(&tb, row, col[0]);
+        const double lag = a / (1.0 + r * r) * (sin(w * t) - r * cos(w * t) + r * exp(-t / tau));
+        worst[0] = fmax(worst[0], fabs(csv_at(&tb, row, col[1]) - 10.0 - 2.0 * cos(1000.0 * t)) / 2.0);
+        worst[1] = fmax(worst[1], fabs(csv_at(&tb, row, col[2]) + 2000.0 * sin(1000.0 * t)) / 2000.0);
+        worst[2] = fmax(worst[2], fabs(csv_at(&tb, row, col[3]) - a * sin(w * t)) / a);
+        worst[3] = fmax(worst[3], fabs(csv_at(&tb, row, col[4])) / a);
+        worst[4] = fmax(worst[4], fabs(csv_at(&tb, row, col[5]) - lag) / a);
+        /* the request reports the states the run has */
+        const double z = csv_at(&tb, row, col[5]), q = csv_at(&tb, row, col[3]);
+        report = fmax(report, fabs(csv_at(&tb, row, col[6]) - z) / a);
+        report = fmax(report, fabs(csv_at(&tb, row, col[7]) - (q - z) / tau) * tau / a);
+        report = fmax(report, fabs(csv_at(&tb, row, col[8]) - q) / a);
+        report = fmax(report, fabs(csv_at(&tb, row, col[9]) - csv_at(&tb, row, col[1])) / 2.0);
+    }
+    printf("  tp_routines over 0.05 s, off the closed forms (of each amplitude): anchored body"
+           " %.2g, its speed variable %.2g, driven joint %.2g (motion error %.2g), lag %.2g;"
+           " request off the run's own values %.2g\n", worst[0], worst[1], worst[2], worst[3],
+           worst[4], report);
+    assert_true(tb.rows > 40);
+    for (int k = 0; k < 5; ++k)
+        assert_true(worst[k] < 1e-7);
+    assert_true(report < 1e-9);
+    csv_free(&tb);
+}
+
+/* tp_routines.xml with `from` replaced by `to`, in the temporary folder:
+ * run's set-up refuses it with a message holding `needle`. */
+static void run_refuses_variant(const char *name, const char *from, const char *to,
+                                const char *needle)
+{
+    FILE *f = fopen(USER_LIBRARIES_DIR "/tp_routines.xml", "r");
+    assert_non_null(f);
+    static char text[16384], changed[16384];
+    const size_t n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = '\0';
+    const char *at = strstr(text, from);
+    assert_non_null(at);
+    snprintf(changed, sizeof changed, "%.*s%s%s", (int)(at - text), text, to, at + strlen(from));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    hx_session s;
+    hx_message msg;
+    if (hx_session_open(&s, test_write_file(name, changed), NULL, &msg) != 0)
+        fail_msg("%s", msg.text);
+    hx_dynamics d;
+    const int status = hx_dynamics_init(&d, &s, &msg);
+    hx_dynamics_free(&d);
+    hx_session_close(&s);
+    assert_int_equal(status, -1);
+    assert_non_null(strstr(msg.text, needle));
+}
+
+/* What run does not integrate is refused, naming the element. */
+static void run_refuses_an_implicit_diff_and_a_motion_on_a_coupled_joint(void **state)
+{
+    (void)state;
+    run_refuses_variant("implicit.xml", "is_implicit=\"FALSE\"", "is_implicit=\"TRUE\"",
+                        "Control_Diff 7: is_implicit=\"TRUE\": the harness integrates explicit"
+                        " Control_Diff elements only");
+    run_refuses_variant("coupled.xml", "<Force_Vector_OneBody",
+                        "<Reference_Marker id=\"50\" body_id=\"5\"/>"
+                        "<Body_Rigid id=\"5\" cg_id=\"50\" mass=\"1\" inertia_xx=\"1\""
+                        " inertia_yy=\"1\" inertia_zz=\"1\"/><Reference_Marker id=\"13\" body_id=\"1\"/>"
+                        "<Constraint_Joint id=\"9\" type=\"REVOLUTE\" i_marker_id=\"50\""
+                        " j_marker_id=\"13\"/><Constraint_Coupler id=\"1\" joint1_id=\"6\""
+                        " freedom_1=\"R\" joint2_id=\"9\" freedom_2=\"R\" coefficients=\"1, -2\"/>"
+                        "<Force_Vector_OneBody",
+                        "Motion_Joint 6 drives joint 6, which Constraint_Coupler 1 couples");
+}
+
+/* C ported to Linux through a port header (tp_mdi_names.h: sfosub_, reqsub_),
+ * reading its spring from a relative path: the model's folder is the working
+ * folder, as the solver's; the body oscillates as x - 10 = 2 cos(1000 t). */
+static void ported_c_names_and_the_working_folder(void **state)
+{
+    (void)state;
+    expect("mdi", 0, NEEDLES("Force_Scalar_TwoBody 1 (sfosub_ in libtp_mdi.so)",
+                             "Post_Request 2 (reqsub_ in libtp_mdi.so)", "outputs at t = 0: 12 1000 10",
+                             "2 passed, 0 failed"),
+           NEEDLES("FAIL", "cannot read"));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    char csv[512];
+    snprintf(csv, sizeof csv, "%s/mdi.csv", test_temp_dir());
+    const char *args[] = {"--end", "0.01", "--rtol", "1e-11", "--atol", "1e-12",
+                          "--output-interval", "0.0005", "--quiet", NULL};
+    assert_int_equal(sim_run_csv(USER_LIBRARIES_DIR "/tp_mdi.xml", csv, args), 0);
+    const int t = csv_column(csv, "t"), x = csv_column(csv, "joint5.q"),
+              length = csv_column(csv, "request2.1"), k = csv_column(csv, "request2.2");
+    assert_true(t >= 0 && x >= 0 && length >= 0 && k >= 0);
+    csv_table tb;
+    csv_read(csv, &tb);
+    double worst = 0.0;
+    for (int row = 0; row < tb.rows; ++row) {
+        const double time = csv_at(&tb, row, t);
+        worst = fmax(worst, fabs(csv_at(&tb, row, x) - csv_at(&tb, 0, x) -
+                                 2.0 * (cos(1000.0 * time) - 1.0)) / 2.0);
+        assert_true(csv_at(&tb, row, k) == 1000.0);
+        assert_true(fabs(csv_at(&tb, row, length) - 10.0 - 2.0 * cos(1000.0 * time)) < 1e-6);
+    }
+    printf("  tp_mdi over 0.01 s: off x - 10 = 2 cos(1000 t) by %.2g of the amplitude\n", worst);
+    assert_true(tb.rows > 15 && worst < 1e-6);
+    csv_free(&tb);
+}
+
+/* Each routine's planted fault is named (tp_routines_faults.c): MOTSUB's
+ * acceleration, DIFSUB's read outside its declared queries, VARSUB's hidden
+ * state; REQSUB's unwritten values are a note. */
+static void faults_of_the_routines_are_named(void **state)
+{
+    (void)state;
+    expect("routines_faults", 1,
+           NEEDLES("BAD_SWING rate (iord 1) against differences in time of its value (iord 0)"
+                   " at 11 times: worst",
+                   "BAD_SWING acceleration (iord 2) against differences in time of its rate"
+                   " (iord 1)",
+                   "Control_Diff 7: FAIL: the output depends on body 3's rotation about z, which"
+                   " no declared query (DIF(7)) reaches",
+                   "Reference_Variable 9: history audit: FAIL: a hidden state",
+                   "note: SHORT_REPORT never writes outputs 6, 7, 8",
+                   "check: 5 elements: 2 passed, 3 failed"),
+           NEEDLES("Post_Request 8: FAIL", "(iord 1) at 11 times: worst |error| 2.1e-10 at t"
+                   " = 0.818182 (-9.9766256, differences -9.9766256; tolerance 9.98e-05): FAIL"));
+    const char *acceleration = strstr(output, "BAD_SWING acceleration (iord 2)");
+    assert_non_null(acceleration);
+    const char *end = strchr(acceleration, '\n');
+    assert_non_null(end);
+    assert_memory_equal(end - 6, ": FAIL", 6); /* on its own line */
+}
+
+/* Adams' C-style form (tp_records.c): bound by the mixed-case default names
+ * when the library has no classic ones, given records whose fields the
+ * routines check (a wrong one returns NaN); the run follows the closed forms. */
+static void the_c_style_record_form_binds_and_runs(void **state)
+{
+    (void)state;
+    expect("records", 0,
+           NEEDLES("Force_Vector_TwoBody 1 (Gfosub in libtp_records.so)",
+                   "Force_Scalar_TwoBody 2 (Sfosub in libtp_records.so)",
+                   "Motion_Joint 6 (Motsub in libtp_records.so)",
+                   "Control_Diff 7 (Difsub in libtp_records.so)",
+                   "Reference_Variable 9 (Varsub in libtp_records.so)",
+                   "Post_Request 8 (Reqsub in libtp_records.so)", "6 passed, 0 failed"),
+           NEEDLES("FAIL", "never writes", "non-finite"));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    char csv[512];
+    snprintf(csv, sizeof csv, "%s/records.csv", test_temp_dir());
+    const char *args[] = {"--end", "0.02", "--rtol", "1e-10", "--atol", "1e-12",
+                          "--output-interval", "0.001", "--quiet", NULL};
+    assert_int_equal(sim_run_csv(USER_LIBRARIES_DIR "/tp_records.xml", csv, args), 0);
+    static const char *const names[] = {"t", "body2.x", "joint5.q", "variable9", "joint6.q",
+                                        "diff7", "request8.1", "request8.2", "request8.3"};
+    int col[9];
+    for (int k = 0; k < 9; ++k)
+        assert_true((col[k] = csv_column(csv, names[k])) >= 0);
+    csv_table tb;
+    csv_read(csv, &tb);
+    double worst = 0.0;
+    const double a = 0.2, w = 50.0, tau = 0.01, r = w * tau;
+    for (int row = 0; row < tb.rows; ++row) {
+        const double t = csv_at(&tb, row, col[0]);
+        const double lag = a / (1.0 + r * r) * (sin(w * t) - r * cos(w * t) + r * exp(-t / tau));
+        const double errors[8] = {
+            (csv_at(&tb, row, col[1]) - 10.0 - 2.0 * cos(1000.0 * t)) / 2.0,
+            (csv_at(&tb, row, col[2]) - csv_at(&tb, 0, col[2]) - 2.0 * (cos(1000.0 * t) - 1.0)) / 2.0,
+            (csv_at(&tb, row, col[3]) + 2000.0 * sin(1000.0 * t)) / 2000.0,
+            (csv_at(&tb, row, col[4]) - a * sin(w * t)) / a,
+            (csv_at(&tb, row, col[5]) - lag) / a,
+            (csv_at(&tb, row, col[6]) - csv_at(&tb, row, col[5])) / a,
+            (csv_at(&tb, row, col[7]) - csv_at(&tb, row, col[4])) / a,
+            (csv_at(&tb, row, col[8]) - csv_at(&tb, row, col[1])) / 2.0};
+        for (int k = 0; k < 8; ++k)
+            worst = fmax(worst, fabs(errors[k]));
+    }
+    printf("  tp_records over 0.02 s: off the closed forms and the run's own values by %.2g of"
+           " each amplitude\n", worst);
+    assert_true(tb.rows > 15 && worst < 1e-7);
+    csv_free(&tb);
+}
+
+/* SFOSUB laws read from the model's curves with c_akispl and c_cubspl: check
+ * passes; the curves are straight lines (the spring's continued linearly
+ * beyond its points), so the bodies oscillate as tp_scalar's do:
+ * x - x0 = 2 (cos 1000 t - 1), a - a0 = 0.1 (cos 316.23 t - 1) (tp_spline.xml). */
+static void spline_laws_are_answered_from_the_models_curves(void **state)
+{
+    (void)state;
+    expect("spline", 0, NEEDLES("Force_Scalar_TwoBody 1 (SPLINE_SPRING in libtp_spline.so)",
+                                "Force_Scalar_TwoBody 2 (SPLINE_TWIST in libtp_spline.so)",
+                                "2 passed, 0 failed"),
+           NEEDLES("FAIL", "host:", "ERRMES"));
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    sim s;
+    sim_run(&s, USER_LIBRARIES_DIR "/tp_spline.xml", HX_METHOD_DOPRI5, 1e-11, 0.01, 0.001);
+    const int x = sim_joint_q(&s, 5), a = sim_joint_q(&s, 6);
+    double worst = 0.0, stretch = 0.0;
+    for (int row = 0; row < s.path.rows; ++row) {
+        const double t = s.path.t[row];
+        worst = fmax(worst, fabs(sim_state(&s, row, x) - sim_state(&s, 0, x) -
+                                 2.0 * (cos(1000.0 * t) - 1.0)) / 2.0);
+        worst = fmax(worst, fabs(sim_state(&s, row, a) - sim_state(&s, 0, a) -
+                                 0.1 * (cos(sqrt(1e5) * t) - 1.0)) / 0.1);
+        stretch = fmin(stretch, sim_state(&s, row, x) - sim_state(&s, 0, x));
+    }
+    printf("  AKISPL and CUBSPL laws over 0.01 s: off the closed form by %.2g of the amplitude;"
+           " the spring's stretch reached %.3g mm (its points end at -1)\n", worst,
+           2.0 + stretch);
+    assert_true(s.path.rows > 5 && worst < 1e-6);
+    assert_true(2.0 + stretch < -1.5); /* well beyond the points: linear_extrap */
+    sim_close(&s);
+}
+
+/* The same library asking for a spline the model does not have: the host
+ * answers errflg and names the id; the library stops the run. */
+static void an_unknown_spline_is_named(void **state)
+{
+    (void)state;
+    char path[1024], *xml = NULL;
+    snprintf(path, sizeof path, "%s/tp_spline.xml", USER_LIBRARIES_DIR);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t size = 0;
+    assert_true(getdelim(&xml, &size, '\0', f) > 0);
+    fclose(f);
+    char *spring = strstr(xml, "USER(20, 10, 101,"); /* spline 999 for the spring */
+    assert_non_null(spring);
+    memcpy(strstr(spring, "101"), "999", 3);
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1); /* the model is elsewhere */
+    const int status = check_model(test_write_file("tp_spline_missing.xml", xml), output,
+                                   sizeof output);
+    free(xml);
+    assert_int_equal(status, 1);
+    assert_contains(output, "host: Force_Scalar_TwoBody 1 (SPLINE_SPRING) called c_akispl with"
+                    " id 999, which names no Reference_Spline of the model; it answered"
+                    " errflg = 1", "the spline utility set errflg");
+}
+
+static void a_refused_query_is_reported(void **state)
+{
+    (void)state;
+    expect("bad_query", 1, NEEDLES("host: Force_Vector_TwoBody 1 (GFOSUB) asked c_sysary"
+                                   " ACC(20,10,10,10)", "asks queries the host refuses"), NULL);
+}
+
+static void a_wrong_couxx_is_reported_as_couxx(void **state)
+{
+    (void)state;
+    expect("coupler_wrong_couxx", 1,
+           NEEDLES("COUXX against central differences of COUSUB", "entry 2 (dphi/dM2)",
+                   "COUXX2 not judged"), NULL);
+    expect("coupler_consistent_wrong", 1,
+           NEEDLES("COUXX against central differences of COUSUB", "entry 2 (dphi/dM2)"), NULL);
+}
+
+static void a_wrong_couxx2_is_named_by_row_and_column(void **state)
+{
+    (void)state;
+    expect("coupler_wrong_couxx2", 1,
+           NEEDLES("row 2, column 2 (d2phi/dM2 dM2)", "FAIL"), NULL);
+    const char *couxx = strstr(output, "COUXX against central differences of COUSUB");
+    assert_non_null(couxx);
+    assert_true(strstr(couxx, ": pass") < strstr(couxx, "\n")); /* COUXX itself passes */
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(correct_libraries_pass),
+        cmocka_unit_test(a_hidden_state_is_named),
+        cmocka_unit_test(a_linux_entry_name_binds),
+        cmocka_unit_test(a_cache_refreshed_when_time_advances_fails),
+        cmocka_unit_test(a_cache_across_time_steps_fails),
+        cmocka_unit_test(a_read_at_a_later_time_is_caught),
+        cmocka_unit_test(reads_noted_in_the_history_audit_come_back),
+        cmocka_unit_test(a_wrong_field_partial_is_named_by_row_and_column),
+        cmocka_unit_test(a_crash_is_reported_and_survived),
+        cmocka_unit_test(a_refused_query_is_reported),
+        cmocka_unit_test(routines_that_are_not_forces_are_checked_and_run),
+        cmocka_unit_test(faults_of_the_routines_are_named),
+        cmocka_unit_test(ported_c_names_and_the_working_folder),
+        cmocka_unit_test(run_refuses_an_implicit_diff_and_a_motion_on_a_coupled_joint),
+        cmocka_unit_test(the_c_style_record_form_binds_and_runs),
+        cmocka_unit_test(libraries_using_the_utilities_pass),
+        cmocka_unit_test(a_fortran_library_loads_and_passes),
+        cmocka_unit_test(a_utility_not_offered_is_named),
+        cmocka_unit_test(host_habits_are_those_of_a_solver),
+        cmocka_unit_test(vector_routines_run_as_the_gfosub_of_their_law),
+        cmocka_unit_test(scalar_routines_act_along_the_line_and_about_z),
+        cmocka_unit_test(spline_laws_are_answered_from_the_models_curves),
+        cmocka_unit_test(an_unknown_spline_is_named),
+        cmocka_unit_test(a_wrong_couxx_is_reported_as_couxx),
+        cmocka_unit_test(a_wrong_couxx2_is_named_by_row_and_column),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
