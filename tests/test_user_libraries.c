@@ -509,6 +509,29 @@ static void an_unknown_spline_is_named(void **state)
                     " errflg = 1", "the spline utility set errflg");
 }
 
+/* run calls the library in its own process: a crash there is reported by the
+ * signal handler, written with write(2) alone, naming the element, the entry,
+ * the signal and the time, and the harness exits with 128 + the signal. */
+static void run_reports_a_crash_in_the_users_code(void **state)
+{
+    (void)state;
+    setenv("ASAN_OPTIONS", "handle_segv=0:detect_leaks=0", 1);
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    char command[2048];
+    snprintf(command, sizeof command, "'%s' run '%s/tp_crash.xml' --end 0.01 2>&1", HARNESS_EXE,
+             USER_LIBRARIES_DIR);
+    FILE *p = popen(command, "r");
+    assert_non_null(p);
+    const size_t n = fread(output, 1, sizeof output - 1, p);
+    output[n] = '\0';
+    const int status = pclose(p);
+    assert_true(WIFEXITED(status));
+    assert_int_equal(WEXITSTATUS(status), 128 + 11);
+    if (strstr(output, "usrsub-harness: Force_Vector_TwoBody 1 crashed in GFOSUB with signal 11"
+                       " (segmentation fault) at t = 0.") == NULL)
+        fail_msg("no crash report in:\n%s", output);
+}
+
 static void a_refused_query_is_reported(void **state)
 {
     (void)state;
@@ -549,6 +572,7 @@ int main(void)
         cmocka_unit_test(a_wrong_field_partial_is_named_by_row_and_column),
         cmocka_unit_test(a_crash_is_reported_and_survived),
         cmocka_unit_test(a_refused_query_is_reported),
+        cmocka_unit_test(run_reports_a_crash_in_the_users_code),
         cmocka_unit_test(routines_that_are_not_forces_are_checked_and_run),
         cmocka_unit_test(faults_of_the_routines_are_named),
         cmocka_unit_test(ported_c_names_and_the_working_folder),
