@@ -46,9 +46,9 @@ static int world_aligned(const hx_model *m, const hx_force *f)
     return 1;
 }
 
-int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg)
+/* hx_dynamics_init's work; on failure what it took is left for the caller. */
+static int init_parts(hx_dynamics *d, hx_session *s, hx_message *msg)
 {
-    memset(d, 0, sizeof *d);
     d->s = s;
     d->m = s->model;
     const hx_model *m = d->m;
@@ -98,6 +98,15 @@ int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg)
         d->world_aligned[k] = (unsigned char)world_aligned(m, &m->forces[k]);
     }
     return 0;
+}
+
+int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg)
+{
+    memset(d, 0, sizeof *d);
+    if (init_parts(d, s, msg) == 0)
+        return 0;
+    hx_dynamics_free(d);
+    return -1;
 }
 
 void hx_dynamics_free(hx_dynamics *d)

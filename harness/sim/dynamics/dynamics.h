@@ -76,7 +76,9 @@ typedef struct hx_dynamics {
     double max_phi, max_phidot; /* largest constraint residuals after projections */
 } hx_dynamics;
 
-/* Refuses models with elements the harness does not model (model.h). */
+/* Refuses models with elements the harness does not model (model.h). On
+ * failure it has freed what it took (d is zeroed: hx_dynamics_free may still
+ * be called on it, and does nothing). */
 int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg);
 void hx_dynamics_free(hx_dynamics *d);
 

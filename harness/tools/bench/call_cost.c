@@ -277,6 +277,8 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
             const hx_coupler *c = &s->model->couplers[b->index];
             for (int fn = 0; fn < 3 && rows < capacity; ++fn) {
                 coupler_bench *cb = calloc(1, sizeof *cb);
+                if (cb == NULL)
+                    goto out_of_memory;
                 cb->id = b->id, cb->npar = b->npar, cb->ndisp = c->njoints, cb->par = b->par;
                 cb->fn = b->coupler[fn];
                 coupler_points(s, b, c->njoints, cb);
@@ -292,15 +294,19 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
             }
         } else if (b->kind == HX_BIND_GFOSUB && rows < capacity) {
             hx_call dep, *eval = calloc(1, sizeof *eval);
+            if (eval == NULL)
+                goto out_of_memory;
+            contexts[ncontexts++] = eval;
             double out[6];
             hx_binding_call_init(b, &dep, 0, &s->state, 1);
             hx_call_gfosub(b, &s->state, 0, 1, out, &dep);
             hx_binding_call_init(b, eval, 0, &s->state, 0);
             hx_call_gfosub(b, &s->state, 0, 0, out, eval);
             gfosub_bench *gb = calloc(1, sizeof *gb);
+            if (gb == NULL)
+                goto out_of_memory;
             *gb = (gfosub_bench){b->gfosub, eval, b->id, b->npar, b->par, {0}, 0.0};
             contexts[ncontexts++] = gb;
-            contexts[ncontexts++] = eval;
             if (replays != NULL) {
                 hx_host_replay_init(&replays[nreplays], eval);
                 replay_of[rows] = nreplays++;
@@ -317,6 +323,8 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
             r->in_rhs = 1;
         } else if (b->kind == HX_BIND_FIESUB && rows < capacity) {
             fiesub_bench *fb = calloc(1, sizeof *fb);
+            if (fb == NULL)
+                goto out_of_memory;
             fb->fn = b->fiesub, fb->id = b->id, fb->npar = b->npar, fb->par = b->par;
             field_points(s, b, fb);
             contexts[ncontexts++] = fb;
@@ -332,6 +340,8 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
             for (int which = 0; which < 5 && rows < capacity; ++which) {
                 state_bench *sb = which == 0 || b->state_partial[which - 1] != NULL
                                       ? state_points(s, b, which) : NULL;
+                if (sb == NULL && (which == 0 || b->state_partial[which - 1] != NULL))
+                    goto out_of_memory;
                 if (sb == NULL)
                     continue; /* a partial routine the library does not export */
                 contexts[ncontexts++] = sb;
@@ -357,10 +367,14 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
     for (int k = 0; k < nextra; ++k)
         entries[timed++] = (timed_entry){extra[k].run, extra[k].ctx, 0, NULL};
     spin_up();
-    for (int k = 0; k < timed; ++k) {
+    for (int k = 0; k < timed; ++k)
+        if ((entries[k].ns = malloc(sizeof(double) * (size_t)repeats)) == NULL) {
+            while (k-- > 0)
+                free(entries[k].ns);
+            goto out_of_memory;
+        }
+    for (int k = 0; k < timed; ++k)
         entries[k].calls = calibrate(entries[k].run, entries[k].ctx);
-        entries[k].ns = malloc(sizeof(double) * (size_t)repeats);
-    }
     /* rounds of one batch per entry: a slow spell of the machine falls on all alike */
     for (int round = 0; round < repeats; ++round)
         for (int k = 0; k < timed; ++k) {
@@ -377,12 +391,12 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
     for (int k = 0; k < rows; ++k) {
         hx_call_cost *c = &costs[k];
         c->rounds = entries[k].ns; /* the caller frees them */
-        double *sorted = malloc(sizeof(double) * (size_t)repeats);
-        memcpy(sorted, entries[k].ns, sizeof(double) * (size_t)repeats);
-        c->median_ns = hx_median(sorted, repeats);
-        c->min_ns = sorted[0];
-        c->max_ns = sorted[repeats - 1];
-        free(sorted);
+        c->median_ns = median_of(entries[k].ns, repeats);
+        c->min_ns = c->max_ns = entries[k].ns[0];
+        for (int r = 1; r < repeats; ++r) {
+            c->min_ns = fmin(c->min_ns, entries[k].ns[r]);
+            c->max_ns = fmax(c->max_ns, entries[k].ns[r]);
+        }
         const double *host = replay_of[k] >= 0 ? entries[first_replay + replay_of[k]].ns : NULL;
         c->empty_ns = empty_median;
         c->host_ns = host != NULL ? median_of(host, repeats) : 0.0;
@@ -394,6 +408,11 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
         free(contexts[k]);
     free(replays);
     return rows;
+out_of_memory:
+    for (int k = 0; k < ncontexts; ++k)
+        free(contexts[k]);
+    free(replays);
+    return -1;
 }
 
 void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count)

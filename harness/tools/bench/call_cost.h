@@ -37,7 +37,7 @@ typedef struct hx_timed_body {
 
 /* Times each entry of each user element (COUSUB, COUXX and COUXX2 separately),
  * and the extra bodies in the same rounds. Returns the number of rows written
- * into costs (at most capacity). */
+ * into costs (at most capacity), or -1 when out of memory (nothing timed). */
 int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
                                hx_timed_body *extra, int nextra);
 

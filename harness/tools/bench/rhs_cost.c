@@ -236,10 +236,8 @@ int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int cap
                            hx_binding_routine(b, 0));
     }
     hx_dynamics d;
-    if (hx_dynamics_init(&d, s, msg) != 0) {
-        hx_dynamics_free(&d);
+    if (hx_dynamics_init(&d, s, msg) != 0)
         return -1;
-    }
     const int nb = s->bindings.count;
     double *y = calloc((size_t)d.n, sizeof(double)), *ydot = calloc((size_t)d.n, sizeof(double));
     double *rounds = calloc(5 * (size_t)repeats, sizeof(double));
@@ -259,6 +257,14 @@ int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int cap
                                    {run_rhs, &replayed, replay},
                                    {run_standins, &alone, alone_ns}};
         *ncosts = hx_measure_call_costs_with(s, repeats, costs, capacity, bodies, 3);
+        if (*ncosts < 0) {
+            *ncosts = 0;
+            status = hx_fail(msg, "out of memory");
+        }
+    }
+    if (status == 0) {
+        double *real = rounds, *replay = rounds + repeats, *alone_ns = rounds + 2 * repeats;
+        double *harness = rounds + 3 * repeats, *user = rounds + 4 * repeats;
         for (int k = 0; k < *ncosts; ++k)
             out->user_calls += costs[k].in_rhs;
         for (int r = 0; r < repeats; ++r) {
