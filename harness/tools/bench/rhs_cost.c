@@ -249,7 +249,6 @@ int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int cap
         status = hx_fail(msg, "the model's right-hand side failed: %s", d.message);
     if (status == 0) {
         double *real = rounds, *replay = rounds + repeats, *alone_ns = rounds + 2 * repeats;
-        double *harness = rounds + 3 * repeats, *user = rounds + 4 * repeats;
         rhs_bench as_is = {s, &d, y, ydot, NULL, saved, 0.0};
         rhs_bench replayed = {s, &d, y, ydot, records, saved, 0.0};
         standin_bench alone = {s, records, 0.0};
