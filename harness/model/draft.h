@@ -51,7 +51,7 @@ typedef struct hx_draft {
     int cap_splines;
 } hx_draft;
 
-/* The first error wins: "file:line: what"; the reader then stops. */
+/* The first error wins: "file:line: what"; the reader then stops (draft.c). */
 void hx_draft_fail(hx_draft *d, int line, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 void hx_draft_warn(hx_draft *d, int line, const char *fmt, ...)

@@ -12,15 +12,12 @@
 #include <libgen.h>
 #include <limits.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
 
 #include "model/xml_schema.h"
-
-/* ---- the draft's diagnostics and arrays ------------------------------------------ */
 
 typedef struct xml_reader {
     hx_draft d;
@@ -31,93 +28,6 @@ typedef struct xml_reader {
     char *text;                    /* its text so far */
     size_t text_length, text_capacity;
 } xml_reader;
-
-void hx_draft_fail(hx_draft *d, int line, const char *fmt, ...)
-{
-    if (d->failed)
-        return;
-    char what[HX_MESSAGE_MAX];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(what, sizeof what, fmt, ap);
-    va_end(ap);
-    if (line > 0)
-        hx_fail(d->msg, "%s:%d: %s", d->path, line, what);
-    else
-        hx_fail(d->msg, "%s: %s", d->path, what);
-    d->failed = 1;
-}
-
-void hx_draft_warn(hx_draft *d, int line, const char *fmt, ...)
-{
-    d->m->nwarnings++;
-    if (d->warnings == NULL)
-        return;
-    va_list ap;
-    va_start(ap, fmt);
-    fprintf(d->warnings, "%s:%d: warning: ", d->path, line);
-    vfprintf(d->warnings, fmt, ap);
-    fputc('\n', d->warnings);
-    va_end(ap);
-}
-
-static int grow(hx_draft *d, void **array, int count, int capacity, size_t size)
-{
-    void *p = realloc(*array, size * (size_t)capacity);
-    if (p == NULL) {
-        hx_draft_fail(d, 0, "out of memory");
-        return -1;
-    }
-    *array = p;
-    memset((char *)p + size * (size_t)count, 0, size);
-    return 0;
-}
-
-void *hx_draft_push(hx_draft *d, void **array, int *count, int *capacity, size_t size,
-                    void **raw, size_t raw_size)
-{
-    const int needed = *count + 1;
-    const int grown = *count == *capacity ? (*capacity ? 2 * *capacity : 16) : *capacity;
-    if (grow(d, array, *count, grown, size) != 0 ||
-        (raw != NULL && grow(d, raw, *count, grown, raw_size) != 0))
-        return NULL;
-    *capacity = grown;
-    *count = needed;
-    return (char *)*array + size * (size_t)(needed - 1);
-}
-
-/* ---- attributes ------------------------------------------------------------------- */
-
-static int find_attr(const hx_element_read *e, const char *name)
-{
-    for (int k = 0; k < e->nspec; ++k)
-        if (strcasecmp(e->spec[k].name, name) == 0)
-            return k;
-    return -1;
-}
-
-int hx_attr_present(const hx_element_read *e, const char *name)
-{
-    const int k = find_attr(e, name);
-    return k >= 0 && e->value[k].present;
-}
-
-double hx_attr_number(const hx_element_read *e, const char *name, double fallback)
-{
-    const int k = find_attr(e, name);
-    return k >= 0 && e->value[k].present ? e->value[k].number : fallback;
-}
-
-int hx_attr_int(const hx_element_read *e, const char *name, int fallback)
-{
-    return (int)hx_attr_number(e, name, fallback);
-}
-
-const char *hx_attr_text(const hx_element_read *e, const char *name)
-{
-    const int k = find_attr(e, name);
-    return k >= 0 && e->value[k].present ? e->value[k].text : NULL;
-}
 
 static int parse_number(const char *text, double *out)
 {
@@ -185,7 +95,7 @@ static int read_element(hx_draft *d, const hx_element_spec *spec, const XML_Char
     for (int k = 0; atts[k] != NULL; k += 2)
         if (strcasecmp(atts[k], "id") == 0)
             id_text = atts[k + 1];
-    const int id_spec = find_attr(e, "id");
+    const int id_spec = hx_attr_find(e, "id");
     if (id_spec >= 0 && (e->spec[id_spec].required || id_text != NULL)) {
         double id;
         if (id_text == NULL || parse_number(id_text, &id) != 0 || id != floor(id) || id <= 0 ||
@@ -199,7 +109,7 @@ static int read_element(hx_draft *d, const hx_element_spec *spec, const XML_Char
     char label[96];
     snprintf(label, sizeof label, e->id ? "%s %d" : "%s", e->name, e->id);
     for (int k = 0; atts[k] != NULL; k += 2) {
-        const int a = find_attr(e, atts[k]);
+        const int a = hx_attr_find(e, atts[k]);
         if (a < 0) {
             hx_draft_fail(d, e->line, "%s: attribute %s is not one the harness reads (it could"
                           " change the model; docs/interface.md §7 lists what it reads)", label, atts[k]);

@@ -60,7 +60,10 @@ extern const hx_element_spec hx_element_specs[];
 extern const int hx_element_spec_count;
 int hx_element_is_output_only(const char *name);
 
-/* Access to an element's attributes by name (the description's spelling). */
+/* Access to an element's attributes by name (the description's spelling;
+ * element_attributes.c): hx_attr_find gives its place in the description, or
+ * -1 when the description has no such attribute. */
+int hx_attr_find(const hx_element_read *e, const char *name);
 int hx_attr_present(const hx_element_read *e, const char *name);
 double hx_attr_number(const hx_element_read *e, const char *name, double fallback);
 int hx_attr_int(const hx_element_read *e, const char *name, int fallback);

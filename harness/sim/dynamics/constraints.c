@@ -12,6 +12,7 @@
 #include "base/vecmath.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraints.h"
+#include "sim/dynamics/stage_failure.h"
 
 #define PROJECTION_ITERATIONS 25
 #define PHI_TOLERANCE 1e-13

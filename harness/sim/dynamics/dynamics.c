@@ -7,30 +7,9 @@
 #include "sim/dynamics/routines.h"
 #include "sim/dynamics/state_elements.h"
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-int hx_dynamics_fail(hx_dynamics *d, const char *fmt, ...)
-{
-    if (!d->failed) {
-        va_list ap;
-        va_start(ap, fmt);
-        vsnprintf(d->message, sizeof d->message, fmt, ap);
-        va_end(ap);
-        d->failed = 1;
-    }
-    return -1;
-}
-
-int hx_dynamics_check_stop(hx_dynamics *d, const hx_binding *b)
-{
-    if (hx_messages_stopped(&d->s->messages))
-        return hx_dynamics_fail(d, "%s %d stopped the run (c_errmes STOP) at t = %g: %s",
-                                b->element, b->id, d->state.time, d->s->messages.stop_message);
-    return 0;
-}
 
 /* A force element's result axes are the world's for good: on ground, unturned. */
 static int world_aligned(const hx_model *m, const hx_force *f)

@@ -92,12 +92,6 @@ int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot);
 /* The kinematics of y into d->state: bodies' frames, then markers. */
 void hx_dynamics_set_state(hx_dynamics *d, double t, const double *y);
 
-/* ---- for the stages of an evaluation (bodies.h, loads.h, element_forces.h,
- * state_elements.h, constraints.h) ----------------------------------------------- */
-
-/* Records the first failure in d->message; returns -1. */
-int hx_dynamics_fail(hx_dynamics *d, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-/* -1 when an element asked to stop the run (c_errmes STOP). */
-int hx_dynamics_check_stop(hx_dynamics *d, const hx_binding *b);
+/* How the stages of an evaluation fail: sim/dynamics/stage_failure.h. */
 
 #endif

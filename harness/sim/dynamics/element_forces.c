@@ -6,6 +6,7 @@
 #include "base/vecmath.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/element_forces.h"
+#include "sim/dynamics/stage_failure.h"
 #include "state/measures.h"
 
 int hx_element_forces_apply(hx_dynamics *d, double *power)

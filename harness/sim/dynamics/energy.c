@@ -34,3 +34,8 @@ hx_energy hx_energy_of(hx_dynamics *d, double t, const double *y)
     e.balance = (kinetic + potential) / d->ucf - y[d->load_work] - y[d->element_work];
     return e;
 }
+
+double hx_dissipated(const hx_energy *e, const hx_energy *e0)
+{
+    return (e0->total - e0->balance) - (e->total - e->balance);
+}

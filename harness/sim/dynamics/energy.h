@@ -16,4 +16,9 @@ typedef struct hx_energy {
 
 hx_energy hx_energy_of(hx_dynamics *d, double t, const double *y);
 
+/* Energy the force elements took out between two energies of a run: the work
+ * they did not store as elastic energy (total - balance is elastic + their
+ * work). */
+double hx_dissipated(const hx_energy *e, const hx_energy *e0);
+
 #endif

@@ -1,5 +1,6 @@
 /* The user routines that are not forces in the equations of motion (routines.h). */
 #include "sim/dynamics/routines.h"
+#include "sim/dynamics/stage_failure.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,6 +1,7 @@
 /* The Force_StateEqn elements in the equations of motion (state_elements.h). */
-#include "sim/dynamics/state_elements.h"
 #include "sim/dynamics/bodies.h"
+#include "sim/dynamics/stage_failure.h"
+#include "sim/dynamics/state_elements.h"
 
 #include <stdlib.h>
 #include <string.h>

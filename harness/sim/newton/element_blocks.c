@@ -17,6 +17,7 @@
 
 #include "base/finite.h"
 #include "base/vecmath.h"
+#include "sim/dynamics/stage_failure.h"
 #include "sim/newton/newton_parts.h"
 #include "state/measures.h"
 

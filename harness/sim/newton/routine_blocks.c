@@ -9,6 +9,7 @@
 
 #include "host/queries.h"
 #include "sim/dynamics/routines.h"
+#include "sim/dynamics/stage_failure.h"
 #include "sim/newton/newton_parts.h"
 
 static void add_column(int *cols, int *n, int max, int c)

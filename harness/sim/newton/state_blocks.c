@@ -20,6 +20,7 @@
 #include "base/finite.h"
 #include "base/vecmath.h"
 #include "host/state_inputs.h"
+#include "sim/dynamics/stage_failure.h"
 #include "sim/dynamics/state_elements.h"
 #include "sim/newton/newton_parts.h"
 

@@ -11,14 +11,6 @@
 #include "sim/dynamics/constraints.h"
 #include "sim/newton/newton_matrix.h"
 
-
-/* Energy the force elements took out since the start: the work they did not
- * store as elastic energy (total - balance is elastic + their work). */
-double hx_dissipated(const hx_energy *e, const hx_energy *e0)
-{
-    return (e0->total - e0->balance) - (e->total - e->balance);
-}
-
 typedef struct run_context {
     hx_dynamics *d;
     const hx_simulation_options *opt;

@@ -53,10 +53,6 @@ int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
 void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_options *opt,
                            const hx_simulation_result *result);
 
-/* Energy the force elements took out between two energies of a run: the work
- * they did not store as elastic energy. */
-double hx_dissipated(const hx_energy *e, const hx_energy *e0);
-
 /* The CSV header and one row of a state (re-evaluating the right-hand side at
  * that state, so that multipliers and element loads belong to it). */
 void hx_csv_header(FILE *f, const hx_dynamics *d);

@@ -1,0 +1,60 @@
+/* The draft model's diagnostics and growing arrays (draft.h). */
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "model/draft.h"
+
+void hx_draft_fail(hx_draft *d, int line, const char *fmt, ...)
+{
+    if (d->failed)
+        return;
+    char what[HX_MESSAGE_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    if (line > 0)
+        hx_fail(d->msg, "%s:%d: %s", d->path, line, what);
+    else
+        hx_fail(d->msg, "%s: %s", d->path, what);
+    d->failed = 1;
+}
+
+void hx_draft_warn(hx_draft *d, int line, const char *fmt, ...)
+{
+    d->m->nwarnings++;
+    if (d->warnings == NULL)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(d->warnings, "%s:%d: warning: ", d->path, line);
+    vfprintf(d->warnings, fmt, ap);
+    fputc('\n', d->warnings);
+    va_end(ap);
+}
+
+static int grow(hx_draft *d, void **array, int count, int capacity, size_t size)
+{
+    void *p = realloc(*array, size * (size_t)capacity);
+    if (p == NULL) {
+        hx_draft_fail(d, 0, "out of memory");
+        return -1;
+    }
+    *array = p;
+    memset((char *)p + size * (size_t)count, 0, size);
+    return 0;
+}
+
+void *hx_draft_push(hx_draft *d, void **array, int *count, int *capacity, size_t size,
+                    void **raw, size_t raw_size)
+{
+    const int needed = *count + 1;
+    const int grown = *count == *capacity ? (*capacity ? 2 * *capacity : 16) : *capacity;
+    if (grow(d, array, *count, grown, size) != 0 ||
+        (raw != NULL && grow(d, raw, *count, grown, raw_size) != 0))
+        return NULL;
+    *capacity = grown;
+    *count = needed;
+    return (char *)*array + size * (size_t)(needed - 1);
+}
