@@ -4,8 +4,7 @@
 # trailing underscore that a Linux solver looks up, both at one address.
 set -u
 lib=$1
-entries="COUSUB COUXX COUXX2 GFOSUB FIESUB ABM_BUSHING ABM_BUSHING_FIELD MOUNT_LIMITS
-MOUNT_LIMITS_FIELD FLEX_JOINT FLEX_JOINT_FIELD YFOSUB YFOXX YFOXU YFOYX YFOYU"
+entries=$(grep -v '^#' "$(dirname "$0")/library_entries.txt")
 failures=0
 complain() { echo "check_exports: $*"; failures=$((failures + 1)); }
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # check_dll.sh OBJDUMP usrsub.dll UTILITY_DLL DEF: what usrsub.dll exports and
 # imports (docs/windows.md), read from its PE tables with mingw-w64's objdump:
-#  - exports: exactly the entries of tests/check_exports.sh, each under NAME
+#  - exports: exactly the entries of tests/library_entries.txt, each under NAME
 #    and name_, both at one address;
 #  - imports: from UTILITY_DLL only the utilities DEF lists, and otherwise only
 #    from Windows' own DLLs (kernel32, the C runtime), so that nothing but the
@@ -11,8 +11,7 @@ objdump=$1
 dll=$2
 utility=$3
 def=$4
-entries="COUSUB COUXX COUXX2 GFOSUB FIESUB ABM_BUSHING ABM_BUSHING_FIELD MOUNT_LIMITS
-MOUNT_LIMITS_FIELD FLEX_JOINT FLEX_JOINT_FIELD YFOSUB YFOXX YFOXU YFOYX YFOYU"
+entries=$(grep -v '^#' "$(dirname "$0")/../library_entries.txt")
 failures=0
 complain() { echo "check_dll: $*"; failures=$((failures + 1)); }
 
