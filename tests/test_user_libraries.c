@@ -214,6 +214,27 @@ static void vector_routines_run_as_the_gfosub_of_their_law(void **state)
     sim_close(&two);
 }
 
+/* A line spring on slider 5 and a twist spring on hinge 6 (tp_scalar.xml,
+ * tp_spline.xml): the largest distance of a run from x - x0 = 2 (cos 1000 t
+ * - 1) and a - a0 = 0.1 (cos 316.23 t - 1), of each amplitude; *stretch (may
+ * be NULL) receives the least x - x0. */
+static double off_the_springs_closed_forms(const sim *s, double *stretch)
+{
+    const int x = sim_joint_q(s, 5), a = sim_joint_q(s, 6);
+    double worst = 0.0, least = 0.0;
+    for (int row = 0; row < s->path.rows; ++row) {
+        const double t = s->path.t[row];
+        worst = fmax(worst, fabs(sim_state(s, row, x) - sim_state(s, 0, x) -
+                                 2.0 * (cos(1000.0 * t) - 1.0)) / 2.0);
+        worst = fmax(worst, fabs(sim_state(s, row, a) - sim_state(s, 0, a) -
+                                 0.1 * (cos(sqrt(1e5) * t) - 1.0)) / 0.1);
+        least = fmin(least, sim_state(s, row, x) - sim_state(s, 0, x));
+    }
+    if (stretch != NULL)
+        *stretch = least;
+    return worst;
+}
+
 /* SFOSUB (Force_Scalar_TwoBody FORCE and TORQUE): check passes; a line spring
  * on a slider and a twist spring on a hinge oscillate as spring-masses do,
  * x - x0 = 2 (cos 1000 t - 1), a - a0 = 0.1 (cos 316.23 t - 1) (tp_scalar.xml). */
@@ -227,15 +248,7 @@ static void scalar_routines_act_along_the_line_and_about_z(void **state)
     setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
     sim s;
     sim_run(&s, USER_LIBRARIES_DIR "/tp_scalar.xml", HX_METHOD_DOPRI5, 1e-11, 0.01, 0.001);
-    const int x = sim_joint_q(&s, 5), a = sim_joint_q(&s, 6);
-    double worst = 0.0;
-    for (int row = 0; row < s.path.rows; ++row) {
-        const double t = s.path.t[row];
-        worst = fmax(worst, fabs(sim_state(&s, row, x) - sim_state(&s, 0, x) -
-                                 2.0 * (cos(1000.0 * t) - 1.0)) / 2.0);
-        worst = fmax(worst, fabs(sim_state(&s, row, a) - sim_state(&s, 0, a) -
-                                 0.1 * (cos(sqrt(1e5) * t) - 1.0)) / 0.1);
-    }
+    const double worst = off_the_springs_closed_forms(&s, NULL);
     printf("  SFOSUB line and twist springs over 0.01 s: off the closed form by %.2g of the"
            " amplitude\n", worst);
     assert_true(s.path.rows > 5 && worst < 1e-6);
@@ -466,16 +479,8 @@ static void spline_laws_are_answered_from_the_models_curves(void **state)
     setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
     sim s;
     sim_run(&s, USER_LIBRARIES_DIR "/tp_spline.xml", HX_METHOD_DOPRI5, 1e-11, 0.01, 0.001);
-    const int x = sim_joint_q(&s, 5), a = sim_joint_q(&s, 6);
-    double worst = 0.0, stretch = 0.0;
-    for (int row = 0; row < s.path.rows; ++row) {
-        const double t = s.path.t[row];
-        worst = fmax(worst, fabs(sim_state(&s, row, x) - sim_state(&s, 0, x) -
-                                 2.0 * (cos(1000.0 * t) - 1.0)) / 2.0);
-        worst = fmax(worst, fabs(sim_state(&s, row, a) - sim_state(&s, 0, a) -
-                                 0.1 * (cos(sqrt(1e5) * t) - 1.0)) / 0.1);
-        stretch = fmin(stretch, sim_state(&s, row, x) - sim_state(&s, 0, x));
-    }
+    double stretch;
+    const double worst = off_the_springs_closed_forms(&s, &stretch);
     printf("  AKISPL and CUBSPL laws over 0.01 s: off the closed form by %.2g of the amplitude;"
            " the spring's stretch reached %.3g mm (its points end at -1)\n", worst,
            2.0 + stretch);

@@ -365,17 +365,30 @@ static hx_force *push_force(hx_draft *d, const hx_element_read *e, enum hx_force
     return f;
 }
 
-/* The user routine's output for a vector force's type attribute; -1 with
- * the draft failed when it is none. */
-static int vector_part(hx_draft *d, const hx_element_read *e, const char *type)
+/* A vector force with a user routine (GFOSUB, VFOSUB or VTOSUB by its type,
+ * which defaults to ForceAndTorque), its markers' ids as written (0 when
+ * absent); NULL with the draft failed when the type is none of those. */
+static hx_force *push_vector_user_force(hx_draft *d, const hx_element_read *e, const char *type,
+                                        int i_id, int j_id, int ref_id)
 {
     static const char *const types[3] = {"ForceAndTorque", "ForceOnly", "TorqueOnly"};
-    for (int part = 0; part < 3; ++part)
-        if (strcasecmp(type, types[part]) == 0)
-            return part;
-    hx_draft_fail(d, e->line, "%s %d: type \"%s\" is not one the harness reads (ForceAndTorque:"
-                  " GFOSUB, ForceOnly: VFOSUB, TorqueOnly: VTOSUB)", e->name, e->id, type);
-    return -1;
+    int part = 0;
+    while (part < 3 && strcasecmp(type != NULL ? type : types[0], types[part]) != 0)
+        ++part;
+    if (part == 3) {
+        hx_draft_fail(d, e->line, "%s %d: type \"%s\" is not one the harness reads"
+                      " (ForceAndTorque: GFOSUB, ForceOnly: VFOSUB, TorqueOnly: VTOSUB)", e->name,
+                      e->id, type);
+        return NULL;
+    }
+    hx_force *f = push_force(d, e, HX_FORCE_GFOSUB);
+    if (f == NULL)
+        return NULL;
+    f->part = (enum hx_user_output)part;
+    raw_refs *refs = &d->rforces[d->m->nforces - 1];
+    refs->ids[0] = i_id, refs->ids[1] = j_id, refs->ids[2] = ref_id;
+    hx_draft_user_call(d, e, &f->user);
+    return f;
 }
 
 static const hx_attr_spec force_vector_attrs[] = {
@@ -385,18 +398,9 @@ static const hx_attr_spec force_vector_attrs[] = {
 
 static void build_force_vector(hx_draft *d, const hx_element_read *e)
 {
-    const int part = vector_part(d, e, hx_attr_text(e, "type"));
-    if (part < 0)
-        return;
-    hx_force *f = push_force(d, e, HX_FORCE_GFOSUB);
-    if (f == NULL)
-        return;
-    f->part = (enum hx_user_output)part;
-    raw_refs *refs = &d->rforces[d->m->nforces - 1];
-    refs->ids[0] = hx_attr_int(e, "i_marker_id", 0);
-    refs->ids[1] = hx_attr_int(e, "j_floating_marker_id", 0);
-    refs->ids[2] = hx_attr_int(e, "ref_marker_id", 0);
-    hx_draft_user_call(d, e, &f->user);
+    push_vector_user_force(d, e, hx_attr_text(e, "type"), hx_attr_int(e, "i_marker_id", 0),
+                           hx_attr_int(e, "j_floating_marker_id", 0),
+                           hx_attr_int(e, "ref_marker_id", 0));
 }
 
 static const hx_attr_spec force_field_attrs[] = {
@@ -456,19 +460,11 @@ static const hx_attr_spec vector_load_attrs[] = {
  * ground (resolve.c); its results are in ref_marker_id's axes. */
 static void build_vector_user_load(hx_draft *d, const hx_element_read *e)
 {
-    const char *type = hx_attr_text(e, "type");
-    const int part = vector_part(d, e, type != NULL ? type : "ForceAndTorque");
-    if (part < 0)
-        return;
-    hx_force *f = push_force(d, e, HX_FORCE_GFOSUB);
-    if (f == NULL)
-        return;
-    f->part = (enum hx_user_output)part;
-    f->one_body = 1;
-    raw_refs *refs = &d->rforces[d->m->nforces - 1];
-    refs->ids[0] = hx_attr_int(e, "marker_id", 0);
-    refs->ids[2] = hx_attr_int(e, "ref_marker_id", 0);
-    hx_draft_user_call(d, e, &f->user);
+    hx_force *f = push_vector_user_force(d, e, hx_attr_text(e, "type"),
+                                         hx_attr_int(e, "marker_id", 0), 0,
+                                         hx_attr_int(e, "ref_marker_id", 0));
+    if (f != NULL)
+        f->one_body = 1;
 }
 
 static void build_vector_load(hx_draft *d, const hx_element_read *e)
