@@ -57,7 +57,9 @@ int hx_routine_blocks(hx_newton_matrix *nm, double t, const double *y);
 
 /* The columns the row of Control_Diff routine `routine` depends on: its own
  * state's, and those its DIFSUB's declared queries read; their count (at
- * most max). */
+ * most max). DIFF_COLUMNS_MAX holds them all: at most HX_MAX_QUERIES queries
+ * of four markers' bodies (13 columns each) or one Control_Diff each. */
+#define DIFF_COLUMNS_MAX (1 + HX_MAX_QUERIES * 4 * 13)
 int hx_diff_columns(const hx_dynamics *d, int routine, int *cols, int max);
 
 /* The pattern from the model's structure (pattern.c); 0 or -1. */

@@ -160,8 +160,8 @@ int hx_newton_pattern(hx_newton_matrix *nm)
         state_element(&p, d, k);
     for (int k = 0; k < m->nroutines; ++k)
         if (m->routines[k].kind == HX_ROUTINE_DIFF) {
-            int cols[256];
-            const int nc = hx_diff_columns(d, k, cols, 256);
+            int cols[DIFF_COLUMNS_MAX];
+            const int nc = hx_diff_columns(d, k, cols, DIFF_COLUMNS_MAX);
             for (int j = 0; j < nc; ++j)
                 add(&p, d->diffs + m->routines[k].slot, cols[j]);
         }

@@ -67,20 +67,28 @@ int hx_routine_blocks(hx_newton_matrix *nm, double t, const double *y)
     const hx_model *m = d->m;
     if (m->nroutines == 0)
         return 0;
-    int driven[2 * 64 + 2];
-    const int ndriven = m->nroutines_of[HX_ROUTINE_MOTION] <= 64 ? hx_routines_driven_rows(d, driven) : 0;
-    for (int c = 0; c < nm->n && ndriven > 0; ++c)
-        for (int p = nm->pattern.colptr[c]; p < nm->pattern.colptr[c + 1]; ++p)
-            for (int i = 0; i < ndriven; ++i)
-                if (nm->pattern.rowind[p] == driven[i])
-                    nm->values[p] = 0.0;
+    if (m->nroutines_of[HX_ROUTINE_MOTION] > 0) {
+        int *driven = malloc(sizeof(int) * (2 * (size_t)m->nroutines_of[HX_ROUTINE_MOTION] + 1));
+        unsigned char *is_driven = calloc((size_t)nm->n, 1);
+        if (driven == NULL || is_driven == NULL) {
+            free(driven), free(is_driven);
+            return hx_dynamics_fail(d, "out of memory");
+        }
+        const int ndriven = hx_routines_driven_rows(d, driven);
+        for (int i = 0; i < ndriven; ++i)
+            is_driven[driven[i]] = 1;
+        for (int p = 0; p < nm->pattern.nnz; ++p)
+            if (is_driven[nm->pattern.rowind[p]])
+                nm->values[p] = 0.0;
+        free(driven), free(is_driven);
+    }
     double *yp = nm->y;
-    int cols[256];
+    int cols[DIFF_COLUMNS_MAX];
     for (int k = 0; k < m->nroutines; ++k) {
         if (m->routines[k].kind != HX_ROUTINE_DIFF)
             continue;
         const int row = d->diffs + m->routines[k].slot;
-        const int nc = hx_diff_columns(d, k, cols, 256);
+        const int nc = hx_diff_columns(d, k, cols, DIFF_COLUMNS_MAX);
         for (int j = 0; j < nc; ++j) {
             const int c = cols[j];
             const double h = hx_newton_step(y, c);
