@@ -5,6 +5,7 @@
  *   2 I J      result = c_sysfnc DX DY DZ (I,J,J) and AX AY AZ (I,J)
  *   3 I J      result = c_sysary VEL(I,J,J,J)
  *   4 I J      asks DISP only outside the dependency pass (an undeclared read)
+ *   6 I J      result = (errflg, nstates) of c_sysary DISP(I,J,J) with a null array
  *   5 S        result[0] = length of Reference_String S, result[1..4] = c_gtunts scales
  *              (time, length, force, mass), result[5] = 1 when nothing past four
  *              sizes and twelve characters was written
@@ -61,6 +62,11 @@ void STDCALL GFOSUB(int *id, double *time, double *par, int *npar, int *dflag, i
         result[5] = intact;
         break;
     }
+    case 6:
+        c_sysary("DISP", ipar, 3, NULL, &n, &err);
+        result[0] = err;
+        result[1] = n;
+        break;
     case 98:
         if (*time > 0.0)
             c_errmes(1, "probe asked to stop later", *id, "STOP");

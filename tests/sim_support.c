@@ -307,7 +307,10 @@ double newton_matrix_against_differences(hx_dynamics *d, double t, const double 
         double row = 0.0;
         for (int c = 0; c < n; ++c)
             row = fmax(row, fabs(D[r + (size_t)n * c]));
-        for (int c = 0; c < n && row > 0.0; ++c) {
+        /* a row the differences find all zero (a driven joint's) must be
+         * zero in the matrix too: measured absolutely */
+        const double scale = row > 0.0 ? row : 1.0;
+        for (int c = 0; c < n; ++c) {
             const size_t at = r + (size_t)n * c;
             if (!in[at] && fabs(D[at]) > 1e-9 * row) {
                 if (*outside < 5)
@@ -315,7 +318,7 @@ double newton_matrix_against_differences(hx_dynamics *d, double t, const double 
                            what, r, c, D[at]);
                 ++*outside;
             }
-            const double e = fabs(A[at] - D[at]) / row;
+            const double e = fabs(A[at] - D[at]) / scale;
             if (e > worst)
                 worst = e, worst_r = r, worst_c = c;
         }

@@ -179,6 +179,18 @@ static void undeclared_read_is_noted(void **state)
                         "DISP(21,11,11)");
 }
 
+/* A null array for the answer is refused (errflg 1, no values), not written through. */
+static void a_null_answer_array_is_refused(void **state)
+{
+    (void)state;
+    double r[6];
+    hx_call call;
+    evaluate_probe(6, 21, 11, r, &call);
+    assert_close(r[0], 1.0, 0, 0);
+    assert_close(r[1], 0.0, 0, 0);
+    assert_int_equal(call.refused.count, 1);
+}
+
 static void strings_and_units(void **state)
 {
     (void)state;
@@ -270,6 +282,7 @@ int main(void)
         cmocka_unit_test(angles_and_arrays),
         cmocka_unit_test(dependency_pass_records_queries),
         cmocka_unit_test(undeclared_read_is_noted),
+        cmocka_unit_test(a_null_answer_array_is_refused),
         cmocka_unit_test(strings_and_units),
         cmocka_unit_test(unit_names),
         cmocka_unit_test(a_stop_in_the_history_audit_stops_the_run),

@@ -401,6 +401,14 @@ static void routine_errors_name_element_and_line(void **state)
     expect_refused("r_onemarker.xml", "<Force_Vector_OneBody id=\"4\" type=\"ForceOnly\""
                    " marker_id=\"99\"" USERLIB "/>\n", "r_onemarker.xml:7:",
                    "Force_Vector_OneBody 4", "marker_id 99 is not a Reference_Marker");
+    /* a user routine and a value of the element's own: neither is guessed */
+    expect_refused("r_oneboth.xml", "<Force_Vector_OneBody id=\"4\" type=\"ForceOnly\""
+                   " marker_id=\"20\" fy_expression=\"3\"" USERLIB "/>\n", "r_oneboth.xml:7:",
+                   "Force_Vector_OneBody 4", "fy_expression = \"3\" and a user routine");
+    expect_refused("r_scalarboth.xml", "<Force_Scalar_TwoBody id=\"5\" type=\"FORCE\""
+                   " i_marker_id=\"20\" j_marker_id=\"10\" val=\"2\"" USERLIB "/>\n",
+                   "r_scalarboth.xml:7:", "Force_Scalar_TwoBody 5",
+                   "val = \"2\" and a user routine");
 }
 
 static void the_partial_routines_are_optional_unless_named(void **state)
@@ -429,6 +437,29 @@ static void the_partial_routines_are_optional_unless_named(void **state)
     /* the probe library exports no state-equation entry at all: YFOSUB is needed */
     assert_int_equal(hx_bind(m, &messages, &bindings, &msg), -1);
     assert_contains(msg.text, "Force_StateEqn 7", "'YFOSUB' not found");
+    hx_bindings_free(&bindings);
+    hx_messages_destroy(&messages);
+    hx_model_free(m);
+}
+
+/* A routine with its default name found in neither form: both lookups named. */
+static void a_routine_in_neither_form_is_named(void **state)
+{
+    (void)state;
+    char parts[1024];
+    snprintf(parts, sizeof parts, "<Post_Request id=\"8\" usrsub_param_string=\"USER(1)\""
+             " usrsub_dll_name=\"%s\"/>\n", HOSTPROBE_LIBRARY);
+    hx_message msg;
+    hx_model *m = read_parts("neither.xml", parts, &msg);
+    if (m == NULL)
+        fail_msg("%s", msg.text);
+    hx_messages messages;
+    hx_messages_init(&messages, NULL);
+    hx_bindings bindings;
+    assert_int_equal(hx_bind(m, &messages, &bindings, &msg), -1);
+    assert_contains(msg.text, "Post_Request 8", "function 'REQSUB' not found",
+                    "(looked up REQSUB, reqsub_ and reqsub)",
+                    "nor in the C-style form: function 'Reqsub' not found");
     hx_bindings_free(&bindings);
     hx_messages_destroy(&messages);
     hx_model_free(m);
@@ -466,6 +497,7 @@ int main(void)
         cmocka_unit_test(routines_are_read_with_their_attributes),
         cmocka_unit_test(routine_errors_name_element_and_line),
         cmocka_unit_test(the_partial_routines_are_optional_unless_named),
+        cmocka_unit_test(a_routine_in_neither_form_is_named),
         cmocka_unit_test(a_wrong_input_count_is_the_librarys_to_report),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

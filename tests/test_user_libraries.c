@@ -17,22 +17,28 @@
 #include "test_support.h"
 #include "tools/check/checks.h"
 
-/* Runs check on the model at path; returns the exit status and the output
- * (stdout and stderr). */
-static int check_model(const char *path, char *output, size_t size)
+/* Runs the harness's `verb` on the model at path with options; returns the
+ * exit status and the output (stdout and stderr). */
+static int harness_on(const char *verb, const char *path, const char *options, char *output,
+                      size_t size)
 {
     /* a sanitizer's own SEGV handler would turn the crash into an exit status */
     setenv("ASAN_OPTIONS", "handle_segv=0:detect_leaks=1", 1);
     char command[2048];
-    snprintf(command, sizeof command, "'%s' check '%s' --timeout 5 2>&1", HARNESS_EXE, path);
+    snprintf(command, sizeof command, "'%s' %s '%s' %s 2>&1", HARNESS_EXE, verb, path, options);
     FILE *p = popen(command, "r");
     assert_non_null(p);
     size_t n = fread(output, 1, size - 1, p);
     output[n] = '\0';
     const int status = pclose(p);
     if (!WIFEXITED(status))
-        fail_msg("check %s did not exit: status %d; output:\n%s", path, status, output);
+        fail_msg("%s %s did not exit: status %d; output:\n%s", verb, path, status, output);
     return WEXITSTATUS(status);
+}
+
+static int check_model(const char *path, char *output, size_t size)
+{
+    return harness_on("check", path, "--timeout 5", output, size);
 }
 
 /* check on tests/user_libraries/tp_NAME.xml. */
@@ -68,6 +74,9 @@ static void correct_libraries_pass(void **state)
                                        "coupler_good"};
     for (size_t k = 0; k < sizeof good / sizeof good[0]; ++k)
         expect(good[k], 0, NEEDLES("1 passed, 0 failed"), NEEDLES("FAIL"));
+    /* a query answered with more than six numbers: twelve gains of an array */
+    expect("array_gains", 0, NEEDLES("ARRAY(7) uses 12 of 12", "1 passed, 0 failed"),
+           NEEDLES("FAIL"));
 }
 
 static void a_hidden_state_is_named(void **state)
@@ -309,26 +318,48 @@ static void routines_that_are_not_forces_are_checked_and_run(void **state)
         assert_true(worst[k] < 1e-7);
     assert_true(report < 1e-9);
     csv_free(&tb);
+    /* bench measures what its cost split can replay and says what it cannot */
+    assert_int_equal(harness_on("bench", USER_LIBRARIES_DIR "/tp_routines.xml", "--quick", output,
+                                sizeof output), 0);
+    assert_contains(output, "cost per call and right-hand side split: not measured: Motion_Joint 6"
+                    " (SWING): bench splits the cost of force elements, couplers and state"
+                    " equations in the classic form only", "stability at t = 0");
 }
 
 /* tp_routines.xml with `from` replaced by `to`, in the temporary folder:
  * run's set-up refuses it with a message holding `needle`. */
+/* tp_BASE.xml with each of the n texts from[k] replaced by to[k], written as
+ * `name` in the temporary folder: its path. */
+static const char *model_variant(const char *base, const char *name, int n,
+                                 const char *const *from, const char *const *to)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/tp_%s.xml", USER_LIBRARIES_DIR, base);
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    static char text[16384], changed[16384];
+    const size_t size = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[size] = '\0';
+    for (int k = 0; k < n; ++k) {
+        const char *at = strstr(text, from[k]);
+        if (at == NULL)
+            fail_msg("'%s' is not in %s", from[k], path);
+        snprintf(changed, sizeof changed, "%.*s%s%s", (int)(at - text), text, to[k],
+                 at + strlen(from[k]));
+        memcpy(text, changed, strlen(changed) + 1);
+    }
+    return test_write_file(name, text);
+}
+
 static void run_refuses_variant(const char *name, const char *from, const char *to,
                                 const char *needle)
 {
-    FILE *f = fopen(USER_LIBRARIES_DIR "/tp_routines.xml", "r");
-    assert_non_null(f);
-    static char text[16384], changed[16384];
-    const size_t n = fread(text, 1, sizeof text - 1, f);
-    fclose(f);
-    text[n] = '\0';
-    const char *at = strstr(text, from);
-    assert_non_null(at);
-    snprintf(changed, sizeof changed, "%.*s%s%s", (int)(at - text), text, to, at + strlen(from));
+    const char *path = model_variant("routines", name, 1, &from, &to);
     setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
     hx_session s;
     hx_message msg;
-    if (hx_session_open(&s, test_write_file(name, changed), NULL, &msg) != 0)
+    if (hx_session_open(&s, path, NULL, &msg) != 0)
         fail_msg("%s", msg.text);
     hx_dynamics d;
     const int status = hx_dynamics_init(&d, &s, &msg);
@@ -336,6 +367,80 @@ static void run_refuses_variant(const char *name, const char *from, const char *
     hx_session_close(&s);
     assert_int_equal(status, -1);
     assert_non_null(strstr(msg.text, needle));
+}
+
+/* SWING as a velocity (val_type V, from ic_disp 0.05) and as an acceleration
+ * (A, from ic_vel 0.3 and, ic_disp not written, the model's angle 0.1):
+ *   V: q = 0.05 + (a / w) (1 - cos w t), its rate error column zero;
+ *   A: q = 0.1 + (0.3 + a / w) t - (a / w^2) sin w t, and no error column. */
+static void velocity_and_acceleration_motions_follow_their_integrals(void **state)
+{
+    (void)state;
+    const double a = 0.2, w = 50.0, c = cos(0.1), sn = sin(0.1);
+    char turned[256];
+    snprintf(turned, sizeof turned, "<Reference_Marker id=\"30\" body_id=\"3\" a00=\"%.17g\""
+             " a01=\"%.17g\" a10=\"%.17g\" a11=\"%.17g\"/>", c, -sn, sn, c);
+    const char *const from[3] = {"val_type=\"D\"", "ic_disp=\"0\" ic_vel=\"0\"",
+                                 "<Reference_Marker id=\"30\" body_id=\"3\"/>"};
+    const char *const to_v[2] = {"val_type=\"V\"", "ic_disp=\"0.05\""};
+    const char *const to_a[3] = {"val_type=\"A\"", "ic_vel=\"0.3\"", turned};
+    const char *const args[] = {"--end", "0.05", "--rtol", "1e-10", "--atol", "1e-12",
+                                "--output-interval", "0.001", "--quiet", NULL};
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    double worst[3] = {0};
+    for (int variant = 0; variant < 2; ++variant) {
+        const char *path = variant == 0 ? model_variant("routines", "motion_v.xml", 2, from, to_v)
+                                        : model_variant("routines", "motion_a.xml", 3, from, to_a);
+        char csv[512];
+        snprintf(csv, sizeof csv, "%s/motion_%c.csv", test_temp_dir(), "va"[variant]);
+        assert_int_equal(sim_run_csv(path, csv, args), 0);
+        const int t_col = csv_column(csv, "t"), q_col = csv_column(csv, "joint6.q");
+        const int error_col = csv_column(csv, "motion6.error");
+        assert_true(t_col >= 0 && q_col >= 0);
+        assert_true(variant == 0 ? error_col >= 0 : error_col < 0);
+        csv_table tb;
+        csv_read(csv, &tb);
+        assert_true(tb.rows > 40);
+        for (int row = 0; row < tb.rows; ++row) {
+            const double t = csv_at(&tb, row, t_col), q = csv_at(&tb, row, q_col);
+            const double expected = variant == 0 ? 0.05 + a / w * (1.0 - cos(w * t))
+                                                 : 0.1 + (0.3 + a / w) * t - a / (w * w) * sin(w * t);
+            worst[variant] = fmax(worst[variant], fabs(q - expected) / a);
+            if (variant == 0)
+                worst[2] = fmax(worst[2], fabs(csv_at(&tb, row, error_col)) / a);
+        }
+        csv_free(&tb);
+    }
+    printf("  SWING as a velocity: joint off its integral by %.2g of the amplitude (rate error"
+           " %.2g); as an acceleration: %.2g\n", worst[0], worst[2], worst[1]);
+    for (int k = 0; k < 3; ++k)
+        assert_true(worst[k] < 1e-7);
+}
+
+/* Queries a routine may not make, or of what does not exist, are named by
+ * check; a NaN from DIFSUB or MOTSUB stops run, naming the routine and the
+ * time (tp_routines_bad.c). */
+static void bad_queries_and_values_of_the_routines_are_named(void **state)
+{
+    (void)state;
+    expect("routines_bad", 1,
+           NEEDLES("Motion_Joint 6: FAIL: asks queries the host refuses: DX(30,12)",
+                   "Motion_Joint 6 (PEEKING_SWING) asked c_sysfnc DX(30,12) at t = 0, which the"
+                   " host refuses: this routine may not call c_sysary or c_sysfnc",
+                   "Control_Diff 7: FAIL: output 1 is nan at t = 0.0909090909",
+                   "Control_Diff 7: FAIL: asks queries the host refuses: DIF(99) at t = 0,"
+                   " DIF(7,7) at t = 0", "0 passed, 2 failed"),
+           NULL);
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    const char *path = USER_LIBRARIES_DIR "/tp_routines_bad.xml";
+    assert_int_not_equal(harness_on("run", path, "--end 0.02 --quiet", output, sizeof output), 0);
+    assert_contains(output, "Control_Diff 7 (LOST_LAG) returned a non-finite value at t = 0.005");
+    const char *const from[2] = {"USER(0.2, 50, 30, 12, 0)", "USER(99, 0.01, 0.005)"};
+    const char *const to[2] = {"USER(0.2, 50, 30, 12, 0.002)", "USER(99, 0.01, 0)"};
+    path = model_variant("routines_bad", "nan_motion.xml", 2, from, to);
+    assert_int_not_equal(harness_on("run", path, "--end 0.02 --quiet", output, sizeof output), 0);
+    assert_contains(output, "Motion_Joint 6 (PEEKING_SWING) returned a non-finite value at iord 2,"
+                    " t = 0.002");
 }
 
 /* What run does not integrate is refused, naming the element. */
@@ -402,17 +507,23 @@ static void faults_of_the_routines_are_named(void **state)
                    "BAD_SWING acceleration (iord 2) against differences in time of its rate"
                    " (iord 1)",
                    "Control_Diff 7: FAIL: the output depends on body 3's rotation about z, which"
-                   " no declared query (DIF(7)) reaches",
+                   " no declared query (none) reaches",
+                   "Control_Diff 7: FAIL: the output depends on Control_Diff 7's state, which no"
+                   " declared query (none) reaches",
                    "Reference_Variable 9: history audit: FAIL: a hidden state",
                    "note: SHORT_REPORT never writes outputs 6, 7, 8",
                    "check: 5 elements: 2 passed, 3 failed"),
-           NEEDLES("Post_Request 8: FAIL", "(iord 1) at 11 times: worst |error| 2.1e-10 at t"
-                   " = 0.818182 (-9.9766256, differences -9.9766256; tolerance 9.98e-05): FAIL"));
-    const char *acceleration = strstr(output, "BAD_SWING acceleration (iord 2)");
-    assert_non_null(acceleration);
-    const char *end = strchr(acceleration, '\n');
-    assert_non_null(end);
-    assert_memory_equal(end - 6, ": FAIL", 6); /* on its own line */
+           NEEDLES("Post_Request 8: FAIL"));
+    /* each on its own line: the rate passes, the acceleration fails */
+    static const char *const lines[2][2] = {{"BAD_SWING rate (iord 1)", ": pass"},
+                                           {"BAD_SWING acceleration (iord 2)", ": FAIL"}};
+    for (int k = 0; k < 2; ++k) {
+        const char *at = strstr(output, lines[k][0]);
+        assert_non_null(at);
+        const char *end = strchr(at, '\n');
+        assert_non_null(end);
+        assert_memory_equal(end - strlen(lines[k][1]), lines[k][1], strlen(lines[k][1]));
+    }
 }
 
 /* Adams' C-style form (tp_records.c): bound by the mixed-case default names
@@ -427,7 +538,8 @@ static void the_c_style_record_form_binds_and_runs(void **state)
                    "Motion_Joint 6 (Motsub in libtp_records.so)",
                    "Control_Diff 7 (Difsub in libtp_records.so)",
                    "Reference_Variable 9 (Varsub in libtp_records.so)",
-                   "Post_Request 8 (Reqsub in libtp_records.so)", "6 passed, 0 failed"),
+                   "Post_Request 8 (Reqsub in libtp_records.so)",
+                   "Force_Vector_OneBody 11 (Vfosub in libtp_records.so)", "7 passed, 0 failed"),
            NEEDLES("FAIL", "never writes", "non-finite"));
     setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
     char csv[512];
@@ -436,9 +548,10 @@ static void the_c_style_record_form_binds_and_runs(void **state)
                           "--output-interval", "0.001", "--quiet", NULL};
     assert_int_equal(sim_run_csv(USER_LIBRARIES_DIR "/tp_records.xml", csv, args), 0);
     static const char *const names[] = {"t", "body2.x", "joint5.q", "variable9", "joint6.q",
-                                        "diff7", "request8.1", "request8.2", "request8.3"};
-    int col[9];
-    for (int k = 0; k < 9; ++k)
+                                        "diff7", "request8.1", "request8.2", "request8.3",
+                                        "body5.x"};
+    int col[10];
+    for (int k = 0; k < 10; ++k)
         assert_true((col[k] = csv_column(csv, names[k])) >= 0);
     csv_table tb;
     csv_read(csv, &tb);
@@ -447,7 +560,7 @@ static void the_c_style_record_form_binds_and_runs(void **state)
     for (int row = 0; row < tb.rows; ++row) {
         const double t = csv_at(&tb, row, col[0]);
         const double lag = a / (1.0 + r * r) * (sin(w * t) - r * cos(w * t) + r * exp(-t / tau));
-        const double errors[8] = {
+        const double errors[9] = {
             (csv_at(&tb, row, col[1]) - 10.0 - 2.0 * cos(1000.0 * t)) / 2.0,
             (csv_at(&tb, row, col[2]) - csv_at(&tb, 0, col[2]) - 2.0 * (cos(1000.0 * t) - 1.0)) / 2.0,
             (csv_at(&tb, row, col[3]) + 2000.0 * sin(1000.0 * t)) / 2000.0,
@@ -455,8 +568,9 @@ static void the_c_style_record_form_binds_and_runs(void **state)
             (csv_at(&tb, row, col[5]) - lag) / a,
             (csv_at(&tb, row, col[6]) - csv_at(&tb, row, col[5])) / a,
             (csv_at(&tb, row, col[7]) - csv_at(&tb, row, col[4])) / a,
-            (csv_at(&tb, row, col[8]) - csv_at(&tb, row, col[1])) / 2.0};
-        for (int k = 0; k < 8; ++k)
+            (csv_at(&tb, row, col[8]) - csv_at(&tb, row, col[1])) / 2.0,
+            (csv_at(&tb, row, col[9]) - 10.0 - 2.0 * cos(1000.0 * t)) / 2.0};
+        for (int k = 0; k < 9; ++k)
             worst = fmax(worst, fabs(errors[k]));
     }
     printf("  tp_records over 0.02 s: off the closed forms and the run's own values by %.2g of"
@@ -581,6 +695,8 @@ int main(void)
         cmocka_unit_test(routines_that_are_not_forces_are_checked_and_run),
         cmocka_unit_test(faults_of_the_routines_are_named),
         cmocka_unit_test(ported_c_names_and_the_working_folder),
+        cmocka_unit_test(velocity_and_acceleration_motions_follow_their_integrals),
+        cmocka_unit_test(bad_queries_and_values_of_the_routines_are_named),
         cmocka_unit_test(run_refuses_an_implicit_diff_and_a_motion_on_a_coupled_joint),
         cmocka_unit_test(the_c_style_record_form_binds_and_runs),
         cmocka_unit_test(libraries_using_the_utilities_pass),

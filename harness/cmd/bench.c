@@ -95,6 +95,11 @@ typedef struct bench_options {
 static int costs_section(hx_session *s, const bench_options *o)
 {
     hx_message msg;
+    if (hx_rhs_cost_supported(s, &msg) != 0) {
+        /* the rest of bench still applies */
+        printf("cost per call and right-hand side split: not measured: %s\n", msg.text);
+        return 0;
+    }
     hx_call_cost *costs = calloc(256, sizeof *costs);
     hx_rhs_cost rc;
     int n = 0;

@@ -216,6 +216,10 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
                        " in its arguments)");
         return -1;
     }
+    if (values == NULL) {
+        report_refused(c, &q, "its array for the answer is a null pointer");
+        return -1;
+    }
     const int count = hx_answer(c->state, &q, ipar, values);
     if (count < 0) {
         report_refused(c, &q, "not a function and argument list the harness answers (c_sysary: DISP TDISP"
@@ -252,8 +256,7 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
 void c_sysary(const char *fnc, const int *ipar, int nsize, double *states, int *nstates,
               int *errflg)
 {
-    double scratch[6] = {0};
-    const int count = query(fnc, ipar, nsize, states != NULL ? states : scratch, 1);
+    const int count = query(fnc, ipar, nsize, states, 1);
     if (nstates != NULL)
         *nstates = count > 0 ? count : 0;
     if (errflg != NULL)

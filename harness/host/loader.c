@@ -120,6 +120,19 @@ void *hx_loader_entry(void *handle, const char *path, const char *name, char *bo
     return NULL;
 }
 
+void *hx_loader_entry_exact(void *handle, const char *path, const char *name, char *bound,
+                            size_t size, hx_message *msg)
+{
+    dlerror();
+    void *symbol = dlsym(handle, name);
+    if (symbol == NULL) {
+        hx_fail(msg, "function '%s' not found in library '%s'", name, path);
+        return NULL;
+    }
+    snprintf(bound, size, "%s", name);
+    return symbol;
+}
+
 void hx_loader_close_all(hx_loader *loader)
 {
     for (int k = 0; k < loader->count; ++k) {

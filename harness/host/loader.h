@@ -39,6 +39,9 @@ void *hx_loader_open(hx_loader *loader, const char *path, hx_message *msg);
  * bound receives the name found; NULL with a message naming all three. */
 void *hx_loader_entry(void *handle, const char *path, const char *name, char *bound,
                       size_t size, hx_message *msg);
+/* An entry by its exact name alone (Adams' C-style names, e.g. Gfosub). */
+void *hx_loader_entry_exact(void *handle, const char *path, const char *name, char *bound,
+                            size_t size, hx_message *msg);
 
 /* dlclose every library. */
 void hx_loader_close_all(hx_loader *loader);

@@ -130,6 +130,15 @@ static int array_numbers(const hx_model *m, int id, double *values)
     return m->arrays[k].count;
 }
 
+int hx_query_capacity(const hx_model *m)
+{
+    int most = 6;
+    for (int k = 0; k < m->narrays; ++k)
+        if (m->arrays[k].type == HX_ARRAY_IC && m->arrays[k].count > most)
+            most = m->arrays[k].count;
+    return most;
+}
+
 /* The 3-2-1 (yaw, pitch, roll) angles of a rotation matrix: R = Rz Ry Rx. */
 static void angles321(const double R[9], double a[3])
 {

@@ -138,8 +138,6 @@ static void c_style_name(const char *name, char *out, size_t size)
 
 int hx_record_bind(hx_binding *b, void *handle, const char *path, hx_message *msg)
 {
-    if (b->kind == HX_BIND_YFOSUB)
-        return hx_fail(msg, "Force_StateEqn has no C-style form");
     hx_record *r = calloc(1, sizeof *r);
     if (r == NULL)
         return hx_fail(msg, "out of memory");
@@ -147,8 +145,8 @@ int hx_record_bind(hx_binding *b, void *handle, const char *path, hx_message *ms
     for (int k = 0; k < nfun; ++k) {
         char name[HX_ENTRY_NAME_MAX];
         c_style_name(b->names[k], name, sizeof name);
-        if ((r->fn[k] = hx_loader_entry(handle, path, name, b->symbols[k], sizeof b->symbols[k],
-                                        msg)) == NULL) {
+        if ((r->fn[k] = hx_loader_entry_exact(handle, path, name, b->symbols[k],
+                                              sizeof b->symbols[k], msg)) == NULL) {
             free(r);
             return -1;
         }

@@ -14,7 +14,8 @@
 
 /* Binds the C-style functions of b (its default names, e.g. GFOSUB as
  * Gfosub) in the library `handle`, at `path`, and builds b->record: 0, or -1
- * (out of memory, or a name the library does not export: msg). */
+ * (out of memory, or a name the library does not export: msg). Not for a
+ * YFOSUB, which has no C-style form (binding.c never asks). */
 int hx_record_bind(hx_binding *b, void *handle, const char *path, hx_message *msg);
 void hx_record_free(struct hx_record *r);
 

@@ -467,17 +467,36 @@ static void build_vector_user_load(hx_draft *d, const hx_element_read *e)
         f->one_body = 1;
 }
 
+static int names_a_user_routine(const hx_element_read *e)
+{
+    return hx_attr_present(e, "usrsub_param_string") || hx_attr_present(e, "usrsub_dll_name");
+}
+
+/* An element given both a user routine and a value of its own (value_attr):
+ * which one a solver takes is not documented, so neither is guessed. */
+static void refuse_routine_and_value(hx_draft *d, const hx_element_read *e, const char *value_attr)
+{
+    hx_draft_fail(d, e->line, "%s %d: %s = \"%s\" and a user routine (usrsub_param_string,"
+                  " usrsub_dll_name): give one of them", e->name, e->id, value_attr,
+                  hx_attr_text(e, value_attr));
+}
+
 static void build_vector_load(hx_draft *d, const hx_element_read *e)
 {
-    if (hx_attr_present(e, "usrsub_param_string") || hx_attr_present(e, "usrsub_dll_name")) {
+    static const char *const comps[6] = {"fx_expression", "fy_expression", "fz_expression",
+                                         "tx_expression", "ty_expression", "tz_expression"};
+    if (names_a_user_routine(e)) {
+        for (int k = 0; k < 6; ++k)
+            if (hx_attr_present(e, comps[k])) {
+                refuse_routine_and_value(d, e, comps[k]);
+                return;
+            }
         build_vector_user_load(d, e);
         return;
     }
     hx_load *l = push_load(d, e, HX_LOAD_VECTOR);
     if (l == NULL)
         return;
-    static const char *const comps[6] = {"fx_expression", "fy_expression", "fz_expression",
-                                         "tx_expression", "ty_expression", "tz_expression"};
     for (int k = 0; k < 6; ++k)
         if (load_value(d, e, comps[k], k < 3 ? &l->force[k] : &l->torque[k - 3]) != 0)
             return;
@@ -520,9 +539,11 @@ static void build_scalar_load(hx_draft *d, const hx_element_read *e)
         return;
     }
     const char *value = hx_attr_present(e, "val") ? "val" : "val_expression";
-    if (!hx_attr_present(e, value) && (hx_attr_present(e, "usrsub_dll_name") ||
-                                       hx_attr_present(e, "usrsub_param_string"))) {
-        build_scalar_user_force(d, e, torque);
+    if (names_a_user_routine(e)) {
+        if (hx_attr_present(e, value))
+            refuse_routine_and_value(d, e, value);
+        else
+            build_scalar_user_force(d, e, torque);
         return;
     }
     if (!hx_attr_present(e, value)) {

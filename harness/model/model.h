@@ -170,6 +170,8 @@ typedef struct hx_routine {
     /* Control_Diff: ic and ic_dot (its state and rate at t = 0);
      * Motion_Joint: ic_disp and ic_vel */
     double ic[2];
+    int ic_given[2];     /* Motion_Joint: whether ic_disp, ic_vel were written (else the
+                          * joint's coordinate and rate as the model places it) */
     int implicit;        /* Control_Diff is_implicit (read; check only) */
     int static_hold;     /* Control_Diff is_static_hold (read, no effect) */
     int joint_id;        /* Motion_Joint: the joint it drives, as written */

@@ -12,9 +12,10 @@
 static hx_routine *push_routine(hx_draft *d, const hx_element_read *e, enum hx_routine_kind kind)
 {
     hx_model *m = d->m;
-    if (hx_model_routine(m, kind, e->id) >= 0) {
+    const int earlier = hx_model_routine(m, kind, e->id);
+    if (earlier >= 0) {
         hx_draft_fail(d, e->line, "%s %d is defined twice (line %d)", e->name, e->id,
-                      m->routines[hx_model_routine(m, kind, e->id)].line);
+                      m->routines[earlier].line);
         return NULL;
     }
     if (hx_attr_present(e, "script_name")) {
@@ -36,6 +37,17 @@ static hx_routine *push_routine(hx_draft *d, const hx_element_read *e, enum hx_r
     return r;
 }
 
+/* type="USERSUB", or no type: any other is a form the harness does not read. */
+static int user_type(hx_draft *d, const hx_element_read *e)
+{
+    const char *type = hx_attr_text(e, "type");
+    if (type == NULL || strcasecmp(type, "USERSUB") == 0)
+        return 0;
+    hx_draft_fail(d, e->line, "%s %d: type \"%s\" with a user routine: expected USERSUB", e->name,
+                  e->id, type);
+    return -1;
+}
+
 const hx_attr_spec hx_request_attrs[] = {
     ID, TEXT("type"), IGNORED("expr1"), IGNORED("expr2"), IGNORED("expr3"), IGNORED("expr4"),
     IGNORED("expr5"), IGNORED("expr6"), IGNORED("expr7"), IGNORED("expr8"), IGNORED("comment"),
@@ -43,13 +55,8 @@ const hx_attr_spec hx_request_attrs[] = {
 
 void hx_build_request(hx_draft *d, const hx_element_read *e)
 {
-    const char *type = hx_attr_text(e, "type");
-    if (type != NULL && strcasecmp(type, "USERSUB") != 0) {
-        hx_draft_fail(d, e->line, "Post_Request %d: type \"%s\" with a user routine: expected"
-                      " USERSUB", e->id, type);
-        return;
-    }
-    push_routine(d, e, HX_ROUTINE_REQUEST);
+    if (user_type(d, e) == 0)
+        push_routine(d, e, HX_ROUTINE_REQUEST);
 }
 
 void hx_build_user_variable(hx_draft *d, const hx_element_read *e)
@@ -62,17 +69,6 @@ void hx_build_user_variable(hx_draft *d, const hx_element_read *e)
     hx_routine *r = push_routine(d, e, HX_ROUTINE_VARIABLE);
     if (r != NULL)
         r->ic[0] = hx_attr_number(e, "ic", 0.0);
-}
-
-/* type="USERSUB", or no type: any other is a form the harness does not read. */
-static int user_type(hx_draft *d, const hx_element_read *e)
-{
-    const char *type = hx_attr_text(e, "type");
-    if (type == NULL || strcasecmp(type, "USERSUB") == 0)
-        return 0;
-    hx_draft_fail(d, e->line, "%s %d: type \"%s\" with a user routine: expected USERSUB", e->name,
-                  e->id, type);
-    return -1;
 }
 
 const hx_attr_spec hx_diff_attrs[] = {
@@ -122,6 +118,8 @@ void hx_build_motion(hx_draft *d, const hx_element_read *e)
     r->val_type = (char)(val_type[0] & ~0x20); /* upper case */
     r->ic[0] = hx_attr_number(e, "ic_disp", 0.0);
     r->ic[1] = hx_attr_number(e, "ic_vel", 0.0);
+    r->ic_given[0] = hx_attr_present(e, "ic_disp");
+    r->ic_given[1] = hx_attr_present(e, "ic_vel");
     r->joint_id = hx_attr_int(e, "joint_id", 0);
     r->motion_type = motion_type == NULL ? 0 : (char)(motion_type[0] & ~0x20);
 }

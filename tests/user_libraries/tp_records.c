@@ -1,12 +1,14 @@
 /*
  * tp_records.c -- test user library in Adams' C-style form: entries
- * named Gfosub, Sfosub, Motsub, Difsub, Varsub, Reqsub (the default names in
+ * named Gfosub, Vfosub, Sfosub, Motsub, Difsub, Varsub, Reqsub (the default names in
  * mixed case), each given a constant record of its element, then the time
  * and flags by value. The records are laid out here from Adams' published
  * description: the id, the USER list's length and the list, then the
  * element's ids (docs/interface.md §5.3). Each routine checks its record
  * against what the model says and returns NaN when a field is wrong.
  *   Gfosub: a spring from I to the point (x0, 0, 0) of J, USER(k, x0, i, j);
+ *   Vfosub (a Force_Vector_OneBody, whose JFLOAT is 0): the same spring
+ *       from I to the point (x0, 0, 0) of RM, USER(k, x0);
  *   Sfosub: -k (DM(I, J) - L0) along the line, USER(k, L0);
  *   Motsub: a sin(w t) and its derivatives, USER(a, w);
  *   Difsub: (AZ(i, j) - DIF(self)) / tau, USER(i, j, tau);
@@ -20,6 +22,7 @@
 #include <string.h>
 
 struct sGforce { int ID; int NPAR; const double *PAR; int I; int RM; int JFLOAT; };
+struct sVforce { int ID; int NPAR; const double *PAR; int I; int JFLOAT; int RM; };
 struct sSforce { int ID; int NPAR; const double *PAR; int I; int J; int ACTION_ONLY; const char *Type; };
 struct sMotion {
     int ID; int NPAR; const double *PAR; int JOINT; const char *Type; int I; int J;
@@ -30,6 +33,7 @@ struct sVariable { int ID; int NPAR; const double *PAR; double IC; };
 struct sRequest { int ID; int NPAR; const double *PAR; const char *COMMENT; const char *TITLE[8]; };
 
 USRSUB_EXPORT void Gfosub(const struct sGforce *g, double time, int dflag, int iflag, double *result);
+USRSUB_EXPORT void Vfosub(const struct sVforce *v, double time, int dflag, int iflag, double *result);
 USRSUB_EXPORT void Sfosub(const struct sSforce *s, double time, int dflag, int iflag, double *result);
 USRSUB_EXPORT void Motsub(const struct sMotion *m, double time, int iord, int iflag, double *result);
 USRSUB_EXPORT void Difsub(const struct sDiff *d, double time, int dflag, int iflag, double *result);
@@ -49,7 +53,7 @@ USRSUB_EXPORT void Gfosub(const struct sGforce *g, double time, int dflag, int i
 {
     (void)time, (void)dflag, (void)iflag;
     if (g->ID != 1 || g->NPAR != 4 || g->I != (int)g->PAR[2] || g->JFLOAT != (int)g->PAR[3] ||
-        g->RM != 10) {
+        g->RM != 12) {
         result[0] = NAN;
         return;
     }
@@ -58,6 +62,17 @@ USRSUB_EXPORT void Gfosub(const struct sGforce *g, double time, int dflag, int i
     result[1] = -k * measure("DY", g->I, g->JFLOAT);
     result[2] = -k * measure("DZ", g->I, g->JFLOAT);
     result[3] = result[4] = result[5] = 0.0;
+}
+
+USRSUB_EXPORT void Vfosub(const struct sVforce *v, double time, int dflag, int iflag, double *result)
+{
+    (void)time, (void)dflag, (void)iflag;
+    if (v->ID != 11 || v->NPAR != 2 || v->I != 50 || v->JFLOAT != 0 || v->RM != 12) {
+        result[0] = NAN;
+        return;
+    }
+    result[0] = -v->PAR[0] * (measure("DX", v->I, v->RM) - v->PAR[1]);
+    result[1] = result[2] = 0.0;
 }
 
 USRSUB_EXPORT void Sfosub(const struct sSforce *s, double time, int dflag, int iflag, double *result)
@@ -87,7 +102,8 @@ USRSUB_EXPORT void Motsub(const struct sMotion *m, double time, int iord, int if
 USRSUB_EXPORT void Difsub(const struct sDiff *d, double time, int dflag, int iflag, double *result)
 {
     (void)time, (void)dflag, (void)iflag;
-    if (d->ID != 7 || d->NPAR != 3 || d->IMPLICIT != 0 || d->IC_R1 != 0.0) {
+    if (d->ID != 7 || d->NPAR != 3 || d->IMPLICIT != 0 || d->IC_R1 != 0.0 ||
+        d->IC_R2 != 3.0) {
         *result = NAN;
         return;
     }
@@ -100,7 +116,7 @@ USRSUB_EXPORT void Difsub(const struct sDiff *d, double time, int dflag, int ifl
 USRSUB_EXPORT void Varsub(const struct sVariable *v, double time, int dflag, int iflag, double *result)
 {
     (void)time, (void)dflag, (void)iflag;
-    if (v->ID != 9 || v->NPAR != 2) {
+    if (v->ID != 9 || v->NPAR != 2 || v->IC != 0.5) {
         *result = NAN;
         return;
     }

@@ -3,9 +3,9 @@
  * not forces, each with a planted fault check must name.
  *   BAD_SWING (MOTSUB): a sin(w t), but its acceleration (iord 2) has the
  *       wrong sign, USER(a, w);
- *   SLY_LAG (DIFSUB): (AZ(i, j) - DIF(self)) / tau, but it asks for AZ only
- *       when iflag is not set, so the dependency pass never learns of it,
- *       USER(i, j, tau);
+ *   SLY_LAG (DIFSUB): (AZ(i, j) - DIF(self)) / tau, but it asks for AZ and
+ *       DIF only when iflag is not set, so the dependency pass learns of
+ *       neither the body nor its own state, USER(i, j, tau);
  *   COUNTER (VARSUB): DX(i, j) plus a count of its calls (a hidden state),
  *       USER(i, j);
  *   SHORT_REPORT (REQSUB): writes only its first five values, USER(i, j).
@@ -50,7 +50,8 @@ USRSUB_EXPORT void STDCALL SLY_LAG(int *id, double *time, double *par, int *npar
         return;
     const int ipar[2] = {(int)par[0], (int)par[1]};
     const double angle = *iflag ? 0.0 : measure("AZ", ipar, 2);
-    *value = (angle - measure("DIF", id, 1)) / par[2];
+    const double lagged = *iflag ? 0.0 : measure("DIF", id, 1);
+    *value = (angle - lagged) / par[2];
 }
 
 USRSUB_EXPORT void STDCALL COUNTER(int *id, double *time, double *par, int *npar, int *dflag,

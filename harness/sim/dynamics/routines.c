@@ -26,11 +26,8 @@ int hx_routines_init(hx_dynamics *d, hx_message *msg)
                            " this one)", m->path, r->line, r->id);
         if (r->kind != HX_ROUTINE_MOTION)
             continue;
+        /* the joint carries its I marker's body (model/resolve.c) */
         const int body = m->markers[m->joints[r->joint].i_marker].body;
-        if (m->bodies[body].joint != r->joint)
-            return hx_fail(msg, "%s:%d: Motion_Joint %d: joint %d's I marker is on body %d,"
-                           " which the joint does not carry", m->path, r->line, r->id,
-                           r->joint_id, m->bodies[body].id);
         for (int c = 0; c < m->ncouplers; ++c)
             for (int j = 0; j < m->couplers[c].njoints; ++j)
                 if (m->couplers[c].joint[j] == r->joint)
@@ -74,8 +71,13 @@ int hx_routines_initial(hx_dynamics *d, double *y)
     const hx_model *m = d->m;
     for (int k = 0; k < m->nroutines; ++k) {
         const hx_routine *r = &m->routines[k];
-        if (r->kind == HX_ROUTINE_DIFF)
-            y[d->diffs + r->slot] = r->ic[0];
+        if (r->kind != HX_ROUTINE_DIFF)
+            continue;
+        y[d->diffs + r->slot] = r->ic[0];
+        /* what DIF and DIF1 answer a MOTSUB called below, and any call before
+         * the first right-hand side */
+        d->state.diffs[2 * r->slot] = r->ic[0];
+        d->state.diffs[2 * r->slot + 1] = r->ic[1];
     }
     d->state.time = 0.0;
     for (int body = 0; body < m->nbodies; ++body) {
@@ -84,8 +86,11 @@ int hx_routines_initial(hx_dynamics *d, double *y)
             continue;
         const hx_routine *r = &m->routines[k];
         double *q = &y[d->dof[body].q], *u = &y[d->nq + d->dof[body].u];
-        *q = r->ic[0];
-        *u = r->ic[1];
+        /* an initial value not written stays the model's (hx_bodies_initial_state) */
+        if (r->ic_given[0])
+            *q = r->ic[0];
+        if (r->ic_given[1])
+            *u = r->ic[1];
         if ((r->val_type == 'D' && (motion(d, k, 0, q) != 0 || motion(d, k, 1, u) != 0)) ||
             (r->val_type == 'V' && motion(d, k, 0, u) != 0))
             return -1;

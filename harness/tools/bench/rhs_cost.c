@@ -221,11 +221,8 @@ static void run_standins(void *ctx, long calls)
     b->sink += sink;
 }
 
-int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
-                        int *ncosts, hx_rhs_cost *out, hx_message *msg)
+int hx_rhs_cost_supported(const hx_session *s, hx_message *msg)
 {
-    memset(out, 0, sizeof *out);
-    *ncosts = 0;
     /* the stand-ins replay the classic forms of the force, coupler and state
      * equation routines (and nothing else calls the library in a run) */
     for (int k = 0; k < s->bindings.count; ++k) {
@@ -235,6 +232,16 @@ int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int cap
                            " and state equations in the classic form only", b->element, b->id,
                            hx_binding_routine(b, 0));
     }
+    return 0;
+}
+
+int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
+                        int *ncosts, hx_rhs_cost *out, hx_message *msg)
+{
+    memset(out, 0, sizeof *out);
+    *ncosts = 0;
+    if (hx_rhs_cost_supported(s, msg) != 0)
+        return -1;
     hx_dynamics d;
     if (hx_dynamics_init(&d, s, msg) != 0)
         return -1;

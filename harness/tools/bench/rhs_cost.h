@@ -21,6 +21,11 @@ typedef struct hx_rhs_cost {
     int user_calls;    /* entry calls per evaluation */
 } hx_rhs_cost;
 
+/* Whether the cost split can be measured on s's model: 0, or -1 with msg
+ * naming the first element it cannot split (its stand-ins replay the classic
+ * forms of force, coupler and state-equation routines only). */
+int hx_rhs_cost_supported(const hx_session *s, hx_message *msg);
+
 /* Fills costs (as hx_measure_call_costs; *ncosts rows) and out at the
  * model's initial state. Returns 0, or -1 with msg. */
 int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int capacity,

@@ -13,6 +13,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "base/vecmath.h"
@@ -23,6 +24,8 @@
 #include "tools/check/element_samples.h"
 
 #define MAX_OUT 8
+/* Components of one query whose use is recorded: an ARRAY may be longer. */
+#define USED_BITS 32
 
 static int outputs_at(hx_binding *b, const hx_state *s, hx_call *call, double out[MAX_OUT])
 {
@@ -71,8 +74,9 @@ typedef struct audit {
     int nout;           /* outputs compared */
     const char *what;   /* "force", or "output" for the routines that are not forces */
     int failures, states, checked, influencing, unreached;
-    unsigned used[HX_MAX_QUERIES];
+    unsigned used[HX_MAX_QUERIES]; /* a bit per component, the first USED_BITS */
     int counts[HX_MAX_QUERIES];
+    double *answer0, *answer1; /* room for any query's answer (hx_query_capacity) */
     FILE *out;
 } audit;
 
@@ -102,13 +106,26 @@ static void report_unrepeatable(const audit *a, const double *first, const doubl
             consequence);
 }
 
+/* An output that is not a number at the base state: named, 1; else 0. */
+static int report_non_finite(const audit *a, const double *out)
+{
+    for (int k = 0; k < a->nout; ++k)
+        if (!isfinite(out[k])) {
+            fprintf(a->out, "  %s %d: FAIL: output %d is %g at t = %.9g (a sampled state): a"
+                    " solver stops there\n", a->b->element, a->b->id, k + 1, out[k],
+                    a->base.time);
+            return 1;
+        }
+    return 0;
+}
+
 /* Whether a declared query's answer differs between the base and moved states. */
 static int reached_by_declared(const audit *a)
 {
     const hx_binding *b = a->b;
     for (int q = 0; q < b->deps.count; ++q) {
         const hx_query *dq = &b->deps.query[q];
-        double a0[6], a1[6];
+        double *a0 = a->answer0, *a1 = a->answer1;
         const int n0 = hx_answer_query(&a->base, dq->fnc, dq->ipar, dq->nsize, dq->is_array, a0);
         const int n1 = hx_answer_query(&a->moved, dq->fnc, dq->ipar, dq->nsize, dq->is_array, a1);
         if (n0 > 0 && n0 == n1 && differs(a0, a1, n0, 1e-13))
@@ -177,10 +194,10 @@ static int audit_queries(audit *a, const double *out0)
 {
     hx_binding *b = a->b;
     for (int q = 0; q < b->deps.count; ++q) {
-        double v[6];
+        double *v = a->answer0;
         const hx_query *dq = &b->deps.query[q];
         a->counts[q] = hx_answer_query(&a->base, dq->fnc, dq->ipar, dq->nsize, dq->is_array, v);
-        for (int c = 0; c < a->counts[q]; ++c) {
+        for (int c = 0; c < a->counts[q] && c < USED_BITS; ++c) {
             hx_call call;
             double out1[MAX_OUT];
             hx_binding_call_init(b, &call, 0, &a->base, 0);
@@ -250,6 +267,14 @@ static void summarize(audit *a, double t_last)
             used_text[0] ? used_text : "no queries declared", a->failures ? "FAIL" : "pass");
 }
 
+static void audit_free(audit *a)
+{
+    hx_state_free(&a->base);
+    hx_state_free(&a->moved);
+    free(a->answer0);
+    free(a->answer1);
+}
+
 int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
 {
     const hx_model *m = s->model;
@@ -258,8 +283,13 @@ int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
     a.s = s, a.b = b, a.out = out;
     a.nout = b->kind == HX_BIND_GFOSUB ? 6 : hx_binding_output_count(b);
     a.what = b->kind == HX_BIND_GFOSUB ? "force" : "output";
-    if (hx_state_clone(&a.base, &s->state) != 0 || hx_state_clone(&a.moved, &s->state) != 0) {
-        hx_state_free(&a.base);
+    const size_t capacity = (size_t)hx_query_capacity(m);
+    a.answer0 = malloc(sizeof(double) * capacity);
+    a.answer1 = malloc(sizeof(double) * capacity);
+    if (a.answer0 == NULL || a.answer1 == NULL || hx_state_clone(&a.base, &s->state) != 0 ||
+        hx_state_clone(&a.moved, &s->state) != 0) {
+        fprintf(out, "  %s %d: FAIL: out of memory for the dependency audit\n", b->element, b->id);
+        audit_free(&a);
         return 1;
     }
     double t_last = 0.0;
@@ -272,10 +302,13 @@ int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
             ++a.failures;
             break;
         }
+        if (report_non_finite(&a, out0) != 0) {
+            ++a.failures;
+            break;
+        }
         if (memcmp(out0, again, sizeof(double) * (size_t)a.nout) != 0) {
             report_unrepeatable(&a, out0, again);
-            hx_state_free(&a.base);
-            hx_state_free(&a.moved);
+            audit_free(&a);
             return 1; /* nothing else can be judged of outputs that do not repeat */
         }
         if (audit_states(&a, scale, out0) != 0 || audit_queries(&a, out0) != 0) {
@@ -284,7 +317,6 @@ int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
         }
     }
     summarize(&a, t_last);
-    hx_state_free(&a.base);
-    hx_state_free(&a.moved);
+    audit_free(&a);
     return a.failures ? 1 : 0;
 }

@@ -13,10 +13,14 @@ double hx_jitter(unsigned *seed)
     return ((*seed >> 8) & 0xffff) / 32767.5 - 1.0;
 }
 
+double hx_model_second(const hx_model *m)
+{
+    return 1.0 / (m->has_units ? m->unit_scales[HX_UNIT_TIME] : 1.0);
+}
+
 double hx_sample_time(const hx_model *m, int k)
 {
-    const double second = 1.0 / (m->has_units ? m->unit_scales[HX_UNIT_TIME] : 1.0);
-    return k == 0 ? 0.0 : second * (double)k / (HX_FORCE_SAMPLES - 1);
+    return k == 0 ? 0.0 : hx_model_second(m) * (double)k / (HX_FORCE_SAMPLES - 1);
 }
 
 /* The typical steps of a model: 1 mm, 0.02 rad, and those over 10 ms. */

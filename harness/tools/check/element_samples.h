@@ -39,6 +39,8 @@ void hx_sample_state_element(const hx_session *s, int element, int k, double *st
  * states (as hx_sample_element_state's). The state's time is left as it is. */
 void hx_sample_model_state(const hx_session *s, int k, hx_state *out, double scale[12]);
 
+/* One second in the model's time unit. */
+double hx_model_second(const hx_model *m);
 /* The time of sample k: 0, then spread over the model's first second. */
 double hx_sample_time(const hx_model *m, int k);
 

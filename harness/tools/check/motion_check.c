@@ -24,8 +24,7 @@ static int motion_at(hx_binding *b, hx_state *s, double t, int iord, double *val
 int hx_check_motion(hx_session *s, hx_binding *b, FILE *out)
 {
     const hx_model *m = s->model;
-    const double second = 1.0 / (m->has_units ? m->unit_scales[HX_UNIT_TIME] : 1.0);
-    const double h = 1e-4 * second;
+    const double h = 1e-4 * hx_model_second(m);
     double worst[2] = {0, 0}, worst_time[2] = {0, 0}, size[2] = {0, 0}, at_worst[2][2] = {{0}};
     const double saved = s->state.time;
     int failed = 0;
