@@ -17,14 +17,14 @@
 #include "host/call.h" /* the harness as host (entries/host.h is the library's adapter) */
 #include "model/model.h"
 #include "property_cache.h"
-#include "state/state.h"
+#include "frames/frames.h"
 #include "usrsub/solver_abi.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 
 static hx_model *model;
-static hx_state state;
+static hx_frames state;
 static hx_messages messages;
 static hx_call call;
 
@@ -51,7 +51,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
         fprintf(stderr, "fuzz_user_lists: %s\n", msg.text);
         abort();
     }
-    if (hx_state_init(&state, model) != 0)
+    if (hx_frames_init(&state, model) != 0)
         abort();
     hx_messages_init(&messages, NULL);
     hx_call_init(&call, "fuzzed element", 0, "entry", model, &state, &messages, 0, NULL);
@@ -107,8 +107,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static long inputs;
     if (++inputs % 512 == 0) { /* each new USER list is a new set-up: start afresh */
-        element_cache_clear();
-        property_cache_clear();
+        usrsub_element_cache_clear();
+        usrsub_property_cache_clear();
     }
     stream s = {data, size, 0};
     const int entry = next_byte(&s) % 11;

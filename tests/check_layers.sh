@@ -2,7 +2,7 @@
 # The architecture, checked (docs/architecture.md, "Layers"):
 #  - arrows run one way: a file includes only headers of its own layer or a
 #    lower one (library: entries -> readers -> core; harness: cmd -> tools ->
-#    sim/simulation -> sim/newton -> sim/dynamics -> sim/ode -> host -> state
+#    sim/simulation -> sim/newton -> sim/dynamics -> sim/ode -> host -> frames
 #    -> model -> base; the ODE solvers know nothing of the model);
 #  - the harness shares no code with the library it verifies: of the
 #    library's headers it includes only the solver ABI;
@@ -22,7 +22,7 @@ rank_of() { # layer rank of a path inside a tree, or empty
     usrsub/entries/*) echo 2 ;;
     harness/base/*) echo 0 ;;
     harness/model/*) echo 1 ;;
-    harness/state/*) echo 2 ;;
+    harness/frames/*) echo 2 ;;
     harness/host/*) echo 3 ;;
     harness/sim/ode/*) echo 4 ;;
     harness/sim/dynamics/*) echo 5 ;;

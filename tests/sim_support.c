@@ -11,7 +11,7 @@
 #include <unistd.h>
 
 #include "cmd/commands.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 #include "test_support.h"
 
 static const char *model_path(const char *model)
@@ -180,10 +180,10 @@ void host_model_attach(host_model *h, const char *name, const char *xml)
     h->model = hx_model_read(test_write_file(name, xml), NULL, &msg);
     if (h->model == NULL)
         fail_msg("%s", msg.text);
-    if (hx_state_init(&h->state, h->model) != 0)
+    if (hx_frames_init(&h->frames, h->model) != 0)
         fail_msg("out of memory");
     hx_messages_init(&h->messages, stderr);
-    hx_call_init(&h->call, "test element", 0, "entry", h->model, &h->state, &h->messages, 0, NULL);
+    hx_call_init(&h->call, "test element", 0, "entry", h->model, &h->frames, &h->messages, 0, NULL);
     hx_host_bind(&h->call);
 }
 
@@ -191,7 +191,7 @@ void host_model_detach(host_model *h)
 {
     hx_host_unbind();
     hx_messages_destroy(&h->messages);
-    hx_state_free(&h->state);
+    hx_frames_free(&h->frames);
     hx_model_free(h->model);
     h->model = NULL;
 }
@@ -211,13 +211,13 @@ void expect_one_setup_error(const char *model_path, const char *const needles[3]
     hx_model *m = hx_model_read(model_path, NULL, &msg);
     if (m == NULL)
         fail_msg("%s", msg.text);
-    hx_state state;
+    hx_frames state;
     hx_messages messages;
     hx_bindings bindings;
     char start[4096];
     assert_non_null(getcwd(start, sizeof start));
     assert_int_equal(chdir(m->dir), 0); /* relative property files, as a session sees them */
-    assert_int_equal(hx_state_init(&state, m), 0);
+    assert_int_equal(hx_frames_init(&state, m), 0);
     hx_messages_init(&messages, NULL);
     if (hx_bind(m, &messages, &bindings, &msg) != 0)
         fail_msg("%s", msg.text);
@@ -227,7 +227,7 @@ void expect_one_setup_error(const char *model_path, const char *const needles[3]
     assert_contains(messages.last_error, needles[0], needles[1], needles[2]);
     hx_bindings_free(&bindings);
     hx_messages_destroy(&messages);
-    hx_state_free(&state);
+    hx_frames_free(&state);
     hx_model_free(m);
     assert_int_equal(chdir(start), 0);
 }

@@ -66,7 +66,7 @@ int sim_run_csv(const char *model, const char *csv, const char *const *args);
  * loaded directly then query it, as they would a solver's. */
 typedef struct host_model {
     hx_model *model;
-    hx_state state;
+    hx_frames frames;
     hx_messages messages; /* printed on stderr unless the test silences them */
     hx_call call;         /* bound: entries called directly answer from state */
 } host_model;

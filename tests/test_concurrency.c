@@ -12,7 +12,7 @@
 #include <string.h>
 
 #include "model/model.h"
-#include "state/state.h"
+#include "frames/frames.h"
 #include "sim_support.h"
 #include "test_support.h"
 #include "usrsub/solver_abi.h"
@@ -82,7 +82,7 @@ static void *work(void *arg)
     worker *w = arg;
     /* the host's binding is per thread: each binds a call to the shared state */
     hx_call call;
-    hx_call_init(&call, "thread", 0, "entry", w->host->model, &w->host->state,
+    hx_call_init(&call, "thread", 0, "entry", w->host->model, &w->host->frames,
                  &w->host->messages, 0, NULL);
     hx_host_bind(&call);
     /* every thread covers every element, from a different start, again and again */

@@ -66,7 +66,7 @@ static void values_and_full_hessian(void **state)
     for (int k = 0; k < 9; ++k)
         H[k] = 99.0;
     hx_call record;
-    hx_call_init(&record, "coupler", 3, "COUSUB", host.model, &host.state, &host.messages, 1, NULL);
+    hx_call_init(&record, "coupler", 3, "COUSUB", host.model, &host.frames, &host.messages, 1, NULL);
     hx_host_bind(&record);
     call(cousub, 3, par, 10, disp, 3, 1, &phi); /* dependency pass: no queries */
     hx_host_bind(&host.call);

@@ -17,7 +17,7 @@ typedef struct fake_model {
 
 static atomic_int setups, releases;
 
-static void *setup_fake(const element_signature *sig, void *ctx, element_setup_report *report)
+static void *setup_fake(const usrsub_element_signature *sig, void *ctx, usrsub_element_setup_report *report)
 {
     const int delay_us = ctx != NULL ? *(const int *)ctx : 0;
     if (delay_us > 0)
@@ -41,15 +41,15 @@ static void release_fake(void *model)
 
 static const fake_model *get(int interface, int id, const double *par, int npar, int *now)
 {
-    element_signature sig = {interface, id, 0, par, npar};
-    element_setup_report report;
-    return element_cache_get(&sig, setup_fake, release_fake, NULL, now, &report);
+    usrsub_element_signature sig = {interface, id, 0, par, npar};
+    usrsub_element_setup_report report;
+    return usrsub_element_cache_get(&sig, setup_fake, release_fake, NULL, now, &report);
 }
 
 static int reset(void **state)
 {
     (void)state;
-    element_cache_clear();
+    usrsub_element_cache_clear();
     atomic_store(&setups, 0);
     atomic_store(&releases, 0);
     return 0;
@@ -84,8 +84,8 @@ static void changed_list_is_rebuilt(void **state)
     const fake_model *c = get(ELEMENT_GFOSUB, 7, par, 1, &now);
     assert_int_equal(now, 1);
     assert_int_equal(c->serial, 3);
-    assert_int_equal(element_cache_size(), 1); /* superseded records are not live */
-    element_cache_clear();
+    assert_int_equal(usrsub_element_cache_size(), 1); /* superseded records are not live */
+    usrsub_element_cache_clear();
     assert_int_equal(atomic_load(&releases), 3); /* superseded ones freed at unload */
 }
 
@@ -99,7 +99,7 @@ static void interfaces_and_ids_are_separate(void **state)
     const fake_model *c = get(ELEMENT_GFOSUB, 4, par, 1, &now);
     assert_ptr_not_equal(a, b);
     assert_ptr_not_equal(a, c);
-    assert_int_equal(element_cache_size(), 3);
+    assert_int_equal(usrsub_element_cache_size(), 3);
 }
 
 static void failure_is_cached_and_reported_once(void **state)
@@ -136,11 +136,11 @@ static void *race(void *arg)
 {
     racer *r = arg;
     const double par[] = {8.0};
-    element_signature sig = {ELEMENT_FIESUB, r->id, 0, par, 1};
-    element_setup_report report;
+    usrsub_element_signature sig = {ELEMENT_FIESUB, r->id, 0, par, 1};
+    usrsub_element_setup_report report;
     int now;
     pthread_barrier_wait(r->barrier);
-    r->got = element_cache_get(&sig, setup_fake, release_fake, &r->delay_us, &now, &report);
+    r->got = usrsub_element_cache_get(&sig, setup_fake, release_fake, &r->delay_us, &now, &report);
     return NULL;
 }
 

@@ -14,9 +14,9 @@
 #include <string.h>
 
 #include "model/model.h"
-#include "state/state.h"
+#include "frames/frames.h"
 #include "host/session.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 #include "sim_support.h"
 #include "test_support.h"
 #include "usrsub/solver_abi.h"

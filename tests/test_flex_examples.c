@@ -12,7 +12,7 @@
 
 #include "host/binding.h"
 #include "host/session.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 #include "sim_support.h"
 #include "test_support.h"
 
@@ -81,7 +81,7 @@ static void each_column_of_k_and_d(void **state)
                 disp[j] = 1.0;
             else
                 velo[j - 6] = 1.0;
-            hx_call_fiesub(&s.bindings.items[e], &s.state, disp, velo, 0, 0, F, dfd, dfv, NULL);
+            hx_invoke_fiesub(&s.bindings.items[e], &s.frames, disp, velo, 0, 0, F, dfd, dfv, NULL);
             for (int r = 0; r < 6; ++r) {
                 /* a unit deformation gives minus that column, plus the preload */
                 const double column = j < 6 ? k_entry(r, j) : 0.5 * k_entry(r, j - 6) + 100.0;
@@ -116,9 +116,9 @@ static void gfosub_and_fiesub_forms_agree_and_query_what_they_need(void **state)
         assert_non_null(field);
         assert_non_null(vector);
         double disp[6], velo[6], F[6], G[6], dfd[36], dfv[36];
-        hx_force_deformation(&s.state, field->index, disp, velo);
-        hx_call_fiesub(field, &s.state, disp, velo, 0, 0, F, dfd, dfv, NULL);
-        hx_call_gfosub(vector, &s.state, 0, 0, G, NULL);
+        hx_force_deformation(&s.frames, field->index, disp, velo);
+        hx_invoke_fiesub(field, &s.frames, disp, velo, 0, 0, F, dfd, dfv, NULL);
+        hx_invoke_gfosub(vector, &s.frames, 0, 0, G, NULL);
         for (int i = 0; i < 6; ++i)
             assert_close(G[i], F[i], 1e-12, 1e-9);
         char text[256];

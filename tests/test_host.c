@@ -66,9 +66,9 @@ static void evaluate_probe(int probe, int i, int j, double result[6], hx_call *c
     hx_session s;
     open_probe(&s, probe, i, j, stderr);
     hx_binding *b = &s.bindings.items[0];
-    hx_call_gfosub(b, &s.state, 0, 1, result, NULL); /* dependency pass */
-    hx_binding_call_init(b, call, 0, &s.state, 0);
-    hx_call_gfosub(b, &s.state, 0, 0, result, call);
+    hx_invoke_gfosub(b, &s.frames, 0, 1, result, NULL); /* dependency pass */
+    hx_binding_call_init(b, call, 0, &s.frames, 0);
+    hx_invoke_gfosub(b, &s.frames, 0, 0, result, call);
     hx_session_close(&s);
 }
 
@@ -131,22 +131,22 @@ static void angles_and_arrays(void **state)
     const double expected[6] = {-30 * DEG, 0.0, 40 * DEG, -30 * DEG, 40 * DEG, 0.0};
     for (int k = 0; k < 6; ++k) {
         double v = 99.0;
-        assert_int_equal(hx_answer_query(&s.state, names[k], ipar, 2, 0, &v), 1);
+        assert_int_equal(hx_answer_query(&s.frames, names[k], ipar, 2, 0, &v), 1);
         assert_close(v, expected[k], 0, 1e-14);
     }
     /* marker 21 (Rz(30)) relative to ground: all of it is yaw */
     double v = 0.0;
     const int about_z[2] = {21, 10};
-    assert_int_equal(hx_answer_query(&s.state, "YAW", about_z, 2, 0, &v), 1);
+    assert_int_equal(hx_answer_query(&s.frames, "YAW", about_z, 2, 0, &v), 1);
     assert_close(v, 30 * DEG, 0, 1e-14);
     double a[4] = {0, 0, 0, 0};
     const int array[1] = {5};
-    assert_int_equal(hx_answer_query(&s.state, "ARRAY", array, 1, 1, a), 3);
+    assert_int_equal(hx_answer_query(&s.frames, "ARRAY", array, 1, 1, a), 3);
     assert_true(a[0] == 1.5 && a[1] == -2.0 && a[2] == 7.0);
     const int missing[1] = {6};
-    assert_int_equal(hx_answer_query(&s.state, "ARRAY", missing, 1, 1, a), -1);
-    assert_int_equal(hx_answer_query(&s.state, "ACC", ipar, 2, 1, a), -1);
-    assert_int_equal(hx_answer_query(&s.state, "YAW", ipar, 2, 1, a), -1); /* a scalar */
+    assert_int_equal(hx_answer_query(&s.frames, "ARRAY", missing, 1, 1, a), -1);
+    assert_int_equal(hx_answer_query(&s.frames, "ACC", ipar, 2, 1, a), -1);
+    assert_int_equal(hx_answer_query(&s.frames, "YAW", ipar, 2, 1, a), -1); /* a scalar */
     hx_session_close(&s);
 }
 
@@ -158,7 +158,7 @@ static void dependency_pass_records_queries(void **state)
     assert_int_equal(hx_session_open(&s, probe_model(1, 21, 11), stderr, &msg), 0);
     hx_binding *b = &s.bindings.items[0];
     double r[6] = {1, 1, 1, 1, 1, 1};
-    hx_call_gfosub(b, &s.state, 0, 1, r, NULL);
+    hx_invoke_gfosub(b, &s.frames, 0, 1, r, NULL);
     assert_int_equal(b->deps.count, 1);
     char text[128];
     assert_string_equal(hx_query_text(&b->deps.query[0], text, sizeof text), "DISP(21,11,11)");
@@ -213,7 +213,7 @@ static void unit_names(void **state)
     hx_session s;
     open_probe(&s, 5, 7, 0, stderr);
     hx_call call;
-    hx_binding_call_init(&s.bindings.items[0], &call, 0, &s.state, 0);
+    hx_binding_call_init(&s.bindings.items[0], &call, 0, &s.frames, 0);
     hx_host_bind(&call);
     int exists = 0;
     char units[16];

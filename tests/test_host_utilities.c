@@ -16,7 +16,7 @@
 #include <string.h>
 
 #include "host/utilities.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 #include "test_support.h"
 #include "usrsub/solver_abi.h"
 

@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "model/model.h"
-#include "state/state.h"
+#include "frames/frames.h"
 #include "sim_support.h"
 #include "test_support.h"
 #include "usrsub/solver_abi.h"
@@ -22,7 +22,7 @@ static const double values[] = {NAN, INFINITY, -INFINITY, 1e308, -1e308, 4.9e-32
                                 DBL_MIN, 0.0, -0.0, 1e-300, 1e150, 3.0};
 #define NVALUES ((int)(sizeof values / sizeof values[0]))
 
-static int all_finite(const double *v, int n)
+static int usrsub_all_finite(const double *v, int n)
 {
     for (int k = 0; k < n; ++k)
         if (!isfinite(v[k]))
@@ -87,7 +87,7 @@ static void couplers_take_any_disp(void **state)
                     double t = 0.0, out[9];
                     fn[w](&id, &t, par, &npar, disp, &nd, &flag, out);
                     const int count = w == 0 ? 1 : w == 1 ? nd : nd * nd;
-                    if (!all_finite(out, count))
+                    if (!usrsub_all_finite(out, count))
                         fail_msg("%s coupler %zu at disp (%g %g %g): a non-finite output",
                                  w == 0 ? "COUSUB" : w == 1 ? "COUXX" : "COUXX2", c, disp[0],
                                  disp[1], disp[2]);
@@ -133,7 +133,7 @@ static void field_entries_take_any_state(void **state)
                     int id = 600 + (int)e, npar = fields[e].npar, dflag = 0, iflag = 0;
                     double t = 0.0;
                     fn(&id, &t, par, &npar, disp, velo, &dflag, &iflag, F, J, J + 36);
-                    if (!all_finite(F, 6) || !all_finite(J, 72))
+                    if (!usrsub_all_finite(F, 6) || !usrsub_all_finite(J, 72))
                         fail_msg("%s USER(%g, ...): a non-finite output with %s[%d] = %g over %g",
                                  fields[e].entry, par[0], slot < 6 ? "disp" : "velo", slot % 6,
                                  values[a], base);
@@ -157,8 +157,8 @@ static void gfosub_entries_take_any_host_answer(void **state)
         {"MOUNT_LIMITS", 3, {20, 10, 402}}, {"FLEX_JOINT", 3, {20, 10, 403}},
         {"ABM_BUSHING", 3, {20, 10, 405}},
     };
-    hx_state initial;
-    assert_int_equal(hx_state_clone(&initial, &host.state), 0);
+    hx_frames initial;
+    assert_int_equal(hx_frames_clone(&initial, &host.frames), 0);
     long calls = 0;
     for (size_t e = 0; e < sizeof forces / sizeof forces[0]; ++e) {
         usrsub_gfosub_fn *fn = (usrsub_gfosub_fn *)dlsym(library, forces[e].entry);
@@ -166,8 +166,8 @@ static void gfosub_entries_take_any_host_answer(void **state)
         for (int a = 0; a < NVALUES; ++a)
             for (int slot = 0; slot < 12; ++slot) {
                 /* body 2 placed with one hostile position, angle or velocity */
-                hx_state_copy(&host.state, &initial);
-                hx_frame *f = &host.state.bodies[1];
+                hx_frames_copy(&host.frames, &initial);
+                hx_frame *f = &host.frames.bodies[1];
                 if (slot < 3)
                     f->p[slot] = values[a];
                 else if (slot < 6)
@@ -177,20 +177,20 @@ static void gfosub_entries_take_any_host_answer(void **state)
                     f->v[slot - 6] = values[a];
                 else
                     f->w[slot - 9] = values[a];
-                hx_state_update(&host.state);
+                hx_frames_update(&host.frames);
                 double par[6], out[6];
                 memcpy(par, forces[e].par, sizeof par);
                 int id = 700 + (int)e, npar = forces[e].npar, dflag = 0, iflag = 0;
                 double t = 0.0;
                 fn(&id, &t, par, &npar, &dflag, &iflag, out);
-                if (!all_finite(out, 6))
+                if (!usrsub_all_finite(out, 6))
                     fail_msg("%s: a non-finite output with state slot %d = %g", forces[e].entry,
                              slot, values[a]);
                 ++calls;
             }
     }
-    hx_state_copy(&host.state, &initial);
-    hx_state_free(&initial);
+    hx_frames_copy(&host.frames, &initial);
+    hx_frames_free(&initial);
     tear_down();
     printf("GFOSUB-form entries: %ld calls, every output finite\n", calls);
 }

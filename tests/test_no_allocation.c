@@ -14,7 +14,7 @@
 #include "host/call.h"
 #include "host/session.h"
 #include "sim_support.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 #include "test_support.h"
 
 #define CALLS 1000000L
@@ -122,7 +122,7 @@ static long allocations_in_calls(const char *model)
         int id = b->id, npar = b->npar, flag = 0, dflag = 0;
         double time = 0.0, out[64], disp[6], velo[6], dfd[36], dfv[36];
         hx_call call;
-        hx_binding_call_init(b, &call, 0, &s.state, 0);
+        hx_binding_call_init(b, &call, 0, &s.frames, 0);
         if (b->kind == HX_BIND_COUPLER) {
             double q[3] = {0.1, -0.2, 0.3};
             int n = s.model->couplers[b->index].njoints;
@@ -144,7 +144,7 @@ static long allocations_in_calls(const char *model)
             counted += stop_counting();
             hx_host_unbind();
         } else {
-            hx_force_deformation(&s.state, b->index, disp, velo);
+            hx_force_deformation(&s.frames, b->index, disp, velo);
             b->fiesub(&id, &time, b->par, &npar, disp, velo, &dflag, &flag, out, dfd, dfv);
             start_counting();
             for (long c = 0; c < CALLS; ++c) {

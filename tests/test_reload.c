@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "model/model.h"
-#include "state/state.h"
+#include "frames/frames.h"
 #include "sim_support.h"
 #include "test_support.h"
 #include "usrsub/solver_abi.h"

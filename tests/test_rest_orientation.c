@@ -13,7 +13,7 @@
 #include "host/session.h"
 #include "rest_scenario.h"
 #include "sim_support.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 #include "test_support.h"
 
 static const char *marker(char *text, size_t size, int id, int body, const double R[9])
@@ -57,16 +57,16 @@ static void torque_at_rest_with_the_harness(void **state)
             if (hx_session_open(&s, test_write_file("rest.xml", xml), stderr, &msg) != 0)
                 fail_msg("%s", msg.text);
             double T[6], Tref[6], dfd[36], dfv[36];
-            hx_call_gfosub(&s.bindings.items[0], &s.state, 0, 0, T, NULL);
+            hx_invoke_gfosub(&s.bindings.items[0], &s.frames, 0, 0, T, NULL);
             const double disp[6] = {0, 0, 0, exact[0], exact[1], exact[2]}, velo[6] = {0};
-            hx_call_fiesub(&s.bindings.items[1], &s.state, disp, velo, 0, 0, Tref, dfd, dfv, NULL);
+            hx_invoke_fiesub(&s.bindings.items[1], &s.frames, disp, velo, 0, 0, Tref, dfd, dfv, NULL);
             const double size = sqrt(Tref[3] * Tref[3] + Tref[4] * Tref[4] + Tref[5] * Tref[5]);
             for (int i = 3; i < 6; ++i)
                 worst = fmax(worst, fabs(T[i] - Tref[i]) / size);
             /* the harness's own Euler angles: psi + phi is the twist at every tilt */
             double e[3];
-            hx_relative_euler313(&s.state.markers[hx_model_marker(s.model, 20)],
-                                 &s.state.markers[hx_model_marker(s.model, 10)], e);
+            hx_relative_euler313(&s.frames.markers[hx_model_marker(s.model, 20)],
+                                 &s.frames.markers[hx_model_marker(s.model, 10)], e);
             worst_sum = fmax(worst_sum, fabs(remainder(e[0] + e[2] - exact[2], 2 * M_PI)));
             hx_session_close(&s);
         }

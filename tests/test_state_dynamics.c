@@ -15,7 +15,7 @@
 #include <string.h>
 
 #include "sim/newton/newton_matrix.h"
-#include "sim/dynamics/state_elements.h"
+#include "sim/dynamics/stateeqns.h"
 #include "sim_support.h"
 #include "test_support.h"
 
@@ -311,7 +311,7 @@ static void a_library_without_partials_is_differenced(void **state)
     sim_run(&a, plain, HX_METHOD_DOPRI5, 1e-7, 0.3, 0.3);
     const double *y = a.path.y + (a.path.rows - 1) * a.path.n;
     assert_true(newton_matrix_error(&a.dynamics, 0.3, y, "scaled_state without partial routines") < 1e-6);
-    hx_binding *bp = hx_binding_of_state_eqn(&a.session.bindings, 0);
+    hx_binding *bp = hx_binding_of_stateeqn(&a.session.bindings, 0);
     for (int r = 0; r < 4; ++r)
         assert_null(bp->state_partial[r]);
     /* BDF on either agrees with DOPRI5 on the end state */

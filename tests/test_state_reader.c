@@ -82,8 +82,8 @@ static void every_attribute_is_read(void **state)
     hx_model *m = read_parts("good.xml", good, &msg);
     if (m == NULL)
         fail_msg("%s", msg.text);
-    assert_int_equal(m->nstate_eqns, 1);
-    const hx_state_eqn *f = &m->state_eqns[0];
+    assert_int_equal(m->nstateeqns, 1);
+    const hx_stateeqn *f = &m->stateeqns[0];
     assert_int_equal(f->id, 7);
     assert_int_equal(f->line, 19);
     assert_int_equal(m->markers[f->i_marker].id, 20);
@@ -124,11 +124,11 @@ static void variables_are_measured_by_the_harness(void **state)
     hx_model *m = read_parts("measured.xml", good, &msg);
     if (m == NULL)
         fail_msg("%s", msg.text);
-    hx_state s;
-    assert_int_equal(hx_state_init(&s, m), 0);
+    hx_frames s;
+    assert_int_equal(hx_frames_init(&s, m), 0);
     /* marker 20 at (3, 4, 0) of a body at rest: DX = 3, -VY = 0, AZ = 0, -2.5 */
     double u[4];
-    assert_int_equal(hx_state_eqn_inputs(&s, 0, u), 0);
+    assert_int_equal(hx_stateeqn_inputs(&s, 0, u), 0);
     assert_close(u[0], 3.0, 0, 1e-15);
     assert_close(u[1], 0.0, 0, 1e-15);
     assert_close(u[2], 0.0, 0, 1e-15);
@@ -138,12 +138,12 @@ static void variables_are_measured_by_the_harness(void **state)
     const double c = cos(0.3), sn = sin(0.3);
     const double R[9] = {c, -sn, 0, sn, c, 0, 0, 0, 1};
     memcpy(s.bodies[1].R, R, sizeof R);
-    hx_state_update(&s);
-    assert_int_equal(hx_state_eqn_inputs(&s, 0, u), 0);
+    hx_frames_update(&s);
+    assert_int_equal(hx_stateeqn_inputs(&s, 0, u), 0);
     assert_close(u[1], -2.0, 0, 1e-12);
     assert_close(u[2], 0.3, 0, 1e-12);
     assert_true(hx_variable_is_angle(&m->variables[2]) && !hx_variable_is_angle(&m->variables[0]));
-    hx_state_free(&s);
+    hx_frames_free(&s);
     hx_model_free(m);
 }
 
@@ -156,7 +156,7 @@ static void defaults_without_optional_attributes(void **state)
                              ELEMENT("x_array_id=\"31\" num_state=\"2\""), &msg);
     if (m == NULL)
         fail_msg("%s", msg.text);
-    const hx_state_eqn *f = &m->state_eqns[0];
+    const hx_stateeqn *f = &m->stateeqns[0];
     assert_int_equal(f->ninput, 0);
     assert_int_equal(f->u_array, -1);
     assert_int_equal(f->ic_array, -1);
@@ -171,7 +171,7 @@ static void defaults_without_optional_attributes(void **state)
 
 #define X3 "<Reference_Array id=\"31\" type=\"X\" num_element=\"3\"/>\n"
 
-static void state_eqn_errors_name_element_and_line(void **state)
+static void stateeqn_errors_name_element_and_line(void **state)
 {
     (void)state;
     expect_refused("type.xml", X3 "<Force_StateEqn id=\"7\" type=\"LINEAR\" x_array_id=\"31\""
@@ -491,7 +491,7 @@ int main(void)
         cmocka_unit_test(every_attribute_is_read),
         cmocka_unit_test(variables_are_measured_by_the_harness),
         cmocka_unit_test(defaults_without_optional_attributes),
-        cmocka_unit_test(state_eqn_errors_name_element_and_line),
+        cmocka_unit_test(stateeqn_errors_name_element_and_line),
         cmocka_unit_test(array_errors_name_element_and_line),
         cmocka_unit_test(variable_errors_name_element_attribute_and_line),
         cmocka_unit_test(routines_are_read_with_their_attributes),

@@ -24,7 +24,7 @@
 #include "host/evaluate.h"
 #include "host/session.h"
 #include "host/state_inputs.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 #include "tools/check/checks.h"
 
 static void usage(FILE *f)
@@ -47,8 +47,8 @@ static void usage(FILE *f)
  * the partials it is not asked for). */
 static int call_once(hx_session *s, hx_binding *b, double *in, double *out)
 {
-    hx_binding_inputs(b, &s->state, NULL, in);
-    const int n = hx_binding_evaluate(b, &s->state, in, 0, 0, out);
+    hx_binding_inputs(b, &s->frames, NULL, in);
+    const int n = hx_binding_evaluate(b, &s->frames, in, 0, 0, out);
     return b->kind == HX_BIND_FIESUB ? 6 : n;
 }
 

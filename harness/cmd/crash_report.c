@@ -96,7 +96,7 @@ static void on_crash(int sig)
     put(&t, ")");
     if (c != NULL) {
         put(&t, " at t = ");
-        put_time(&t, c->state != NULL ? c->state->time : 0.0);
+        put_time(&t, c->frames != NULL ? c->frames->time : 0.0);
     } else {
         put(&t, " outside any user call");
     }

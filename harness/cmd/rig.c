@@ -12,7 +12,7 @@
 #include "cmd/options.h"
 #include "tools/plot.h"
 #include "tools/rig/rig.h"
-#include "tools/rig/state_rig.h"
+#include "tools/rig/stateeqn_rig.h"
 
 static void usage(FILE *f)
 {
@@ -47,11 +47,11 @@ static void usage(FILE *f)
 static int find_element(const hx_model *m, const char *text, int *index, hx_message *msg)
 {
     if (strncasecmp(text, "stateeqn:", 9) == 0)
-        return hx_model_find_state_eqn(m, text, index, msg) == 0 ? 1 : -1;
+        return hx_model_find_stateeqn(m, text, index, msg) == 0 ? 1 : -1;
     hx_message none;
     int state = -1;
     const int plain = strchr(text, ':') == NULL;
-    if (plain && hx_model_find_state_eqn(m, text, &state, &none) != 0)
+    if (plain && hx_model_find_stateeqn(m, text, &state, &none) != 0)
         state = -1;
     const int force = hx_model_find_force(m, text, index, msg) == 0;
     if (force && state >= 0)
@@ -67,10 +67,10 @@ static int find_element(const hx_model *m, const char *text, int *index, hx_mess
 /* The Force_StateEqn rig's run and summary lines; 0 or -1. */
 static int run_state_rig(hx_rig *r, const char *plot, const char *csv_path, const char *prefix)
 {
-    const hx_state_eqn *f = &r->s->model->state_eqns[r->force];
-    hx_state_rig_result result;
+    const hx_stateeqn *f = &r->s->model->stateeqns[r->force];
+    hx_stateeqn_rig_result result;
     hx_crash_report_begin();
-    const int status = hx_state_rig_run(r, &result);
+    const int status = hx_stateeqn_rig_run(r, &result);
     hx_crash_report_end();
     if (r->csv != NULL)
         fclose(r->csv);
@@ -81,7 +81,7 @@ static int run_state_rig(hx_rig *r, const char *plot, const char *csv_path, cons
         printf("  %d states integrated by bdf (CVODE, rtol 1e-8): %ld steps, %ld Newton"
                " iterations, %ld Jacobians (%s)\n", f->nstate, result.stats.steps,
                result.stats.newton_iterations, result.stats.jacobians,
-               hx_binding_of_state_eqn(&r->s->bindings, r->force)->state_partial[0] != NULL
+               hx_binding_of_stateeqn(&r->s->bindings, r->force)->state_partial[0] != NULL
                    ? "YFOXX" : "differences of YFOSUB");
     printf("  work done on the element over the path (stored or dissipated): %.8g\n", result.work);
     if (status != 0) {
@@ -178,7 +178,7 @@ int hx_command_rig(int argc, char **argv)
         hx_fail(&msg, "Force_StateEqn %s: the rig drives a Force_StateEqn along deformation"
                 " paths only (its states follow the path)", element);
     }
-    if (kind < 0 || kind_error || hx_state_clone(&r.scratch, &s.state) != 0) {
+    if (kind < 0 || kind_error || hx_frames_clone(&r.scratch, &s.frames) != 0) {
         fprintf(stderr, "usrsub-harness rig: %s\n", msg.text);
         hx_session_close(&s);
         hx_rig_path_free(&r.path);
@@ -194,14 +194,14 @@ int hx_command_rig(int argc, char **argv)
         snprintf(csv_path, sizeof csv_path, "%s.csv", prefix);
     if ((out != NULL || plot != NULL) && (r.csv = hx_open_output(csv_path, &msg)) == NULL) {
         fprintf(stderr, "usrsub-harness rig: %s\n", msg.text);
-        hx_state_free(&r.scratch);
+        hx_frames_free(&r.scratch);
         hx_session_close(&s);
         hx_rig_path_free(&r.path);
         return 1;
     }
     if (kind == 1) {
         const int state_status = run_state_rig(&r, plot, csv_path, prefix);
-        hx_state_free(&r.scratch);
+        hx_frames_free(&r.scratch);
         hx_session_close(&s);
         hx_rig_path_free(&r.path);
         return state_status == 0 ? 0 : 1;
@@ -236,7 +236,7 @@ int hx_command_rig(int argc, char **argv)
             printf("  plots: %s_force_path.png, %s_deformation_path.png, %s_force_deformation.png\n",
                    prefix, prefix, prefix);
     }
-    hx_state_free(&r.scratch);
+    hx_frames_free(&r.scratch);
     hx_session_close(&s);
     hx_rig_path_free(&r.path);
     return status == 0 && plot_status <= 0 ? (plot_status < 0 ? 1 : 0) : 1;

@@ -145,7 +145,7 @@ void c_gtaray(int id, double *array, int *number, int *istat)
 
 void c_getstm(double *time)
 {
-    *time = bound != NULL && bound->state != NULL ? bound->state->time : 0.0;
+    *time = bound != NULL && bound->frames != NULL ? bound->frames->time : 0.0;
 }
 
 void c_timget(double *time)
@@ -164,7 +164,7 @@ void c_getinm(int *value)
 
 static void report_refused(hx_call *c, const hx_query *q, const char *why)
 {
-    const double t = c->state != NULL ? c->state->time : 0.0;
+    const double t = c->frames != NULL ? c->frames->time : 0.0;
     hx_note_query(&c->refused, q, t);
     const int fresh = c->reported_refused != NULL ? hx_note_query(c->reported_refused, q, t) : 1;
     if (fresh && c->messages != NULL) {
@@ -178,7 +178,7 @@ static void report_refused(hx_call *c, const hx_query *q, const char *why)
 
 static void report_undeclared(hx_call *c, const hx_query *q)
 {
-    const double t = c->state != NULL ? c->state->time : 0.0;
+    const double t = c->frames != NULL ? c->frames->time : 0.0;
     hx_note_query(&c->undeclared, q, t);
     const int fresh =
         c->reported_undeclared != NULL ? hx_note_query(c->reported_undeclared, q, t) : 1;
@@ -220,7 +220,7 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
         report_refused(c, &q, "its array for the answer is a null pointer");
         return -1;
     }
-    const int count = hx_answer(c->state, &q, ipar, values);
+    const int count = hx_answer(c->frames, &q, ipar, values);
     if (count < 0) {
         report_refused(c, &q, "not a function and argument list the harness answers (c_sysary: DISP TDISP"
                        " RDISP VEL TVEL RVEL, ARRAY of an IC Reference_Array; c_sysfnc: DX DY DZ DM"

@@ -10,7 +10,7 @@
 #include "base/finite.h"
 #include "host/records.h"
 #include "host/state_inputs.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 
 /* A state equation's partial routines: one the model names (usrsub_derN_name)
  * must exist; a default name the library does not export is left NULL, and
@@ -129,7 +129,7 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
     int user_couplers = 0;
     for (int k = 0; k < m->ncouplers; ++k)
         user_couplers += m->couplers[k].is_user;
-    const int total = user_couplers + m->nforces + m->nstate_eqns + m->nroutines;
+    const int total = user_couplers + m->nforces + m->nstateeqns + m->nroutines;
     bs->items = calloc((size_t)(total > 0 ? total : 1), sizeof *bs->items);
     if (bs->items == NULL)
         return hx_fail(msg, "out of memory");
@@ -170,8 +170,8 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
         if (gfo && f->part == HX_OUTPUT_FORCE_AND_TORQUE && bind_twin(bs, b) != 0)
             return hx_fail(msg, "out of memory");
     }
-    for (int k = 0; k < m->nstate_eqns; ++k) {
-        const hx_state_eqn *f = &m->state_eqns[k];
+    for (int k = 0; k < m->nstateeqns; ++k) {
+        const hx_stateeqn *f = &m->stateeqns[k];
         hx_binding *b = &bs->items[bs->count++];
         static const char *const defaults[5] = {"YFOSUB", "YFOXX", "YFOXU", "YFOYX", "YFOYU"};
         const char *named[5] = {f->user.fnc_name, f->user.der1_name, f->user.der2_name,
@@ -236,7 +236,7 @@ hx_binding *hx_binding_of_force(hx_bindings *bs, int force_index)
     return NULL;
 }
 
-hx_binding *hx_binding_of_state_eqn(hx_bindings *bs, int element_index)
+hx_binding *hx_binding_of_stateeqn(hx_bindings *bs, int element_index)
 {
     for (int k = 0; k < bs->count; ++k)
         if (bs->items[k].kind == HX_BIND_YFOSUB && bs->items[k].index == element_index)
@@ -257,7 +257,7 @@ const char *hx_binding_routine(const hx_binding *b, int which)
     return b->symbols[which][0] != '\0' ? b->symbols[which] : b->names[which];
 }
 
-void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_state *s, int iflag)
+void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_frames *s, int iflag)
 {
     hx_call_init(call, b->element, b->id, hx_binding_routine(b, which), b->model, s, b->messages,
                  iflag != 0, &b->deps);
@@ -295,7 +295,7 @@ static void fill(double *out, int n, double value)
  * has no reference marker): along the line from J to I, positive pushing I
  * away (none where they meet), or about J's z axis. An unwritten value (NaN
  * in check's probe) is the first output's. */
-static void scalar_output(const hx_binding *b, const hx_state *s, double value, double out[6])
+static void scalar_output(const hx_binding *b, const hx_frames *s, double value, double out[6])
 {
     const hx_force *f = &b->model->forces[b->index];
     fill(out, 6, 0.0);
@@ -304,8 +304,8 @@ static void scalar_output(const hx_binding *b, const hx_state *s, double value, 
         return;
     }
     hx_frame scratch[2];
-    const hx_frame *I = hx_state_marker(s, f->i_marker, &scratch[0]);
-    const hx_frame *J = hx_state_marker(s, f->j_marker, &scratch[1]);
+    const hx_frame *I = hx_frames_marker(s, f->i_marker, &scratch[0]);
+    const hx_frame *J = hx_frames_marker(s, f->j_marker, &scratch[1]);
     if (b->part == HX_OUTPUT_SCALAR_TORQUE) {
         for (int k = 0; k < 3; ++k)
             out[3 + k] = value * J->R[3 * k + 2];
@@ -319,7 +319,7 @@ static void scalar_output(const hx_binding *b, const hx_state *s, double value, 
 }
 
 /* The caller's record (set up with hx_binding_call_init) or a default one. */
-static void begin(hx_binding *b, int which, const hx_state *s, int iflag, hx_call *call,
+static void begin(hx_binding *b, int which, const hx_frames *s, int iflag, hx_call *call,
                   hx_call *local)
 {
     if (call == NULL) {
@@ -331,7 +331,7 @@ static void begin(hx_binding *b, int which, const hx_state *s, int iflag, hx_cal
     hx_host_bind(call);
 }
 
-void hx_call_coupler(hx_binding *b, int which, const hx_state *s, const double *disp, int ndisp,
+void hx_invoke_coupler(hx_binding *b, int which, const hx_frames *s, const double *disp, int ndisp,
                      int iflag, double *out, hx_call *call)
 {
     hx_call local;
@@ -353,7 +353,7 @@ void hx_call_coupler(hx_binding *b, int which, const hx_state *s, const double *
     hx_host_unbind();
 }
 
-void hx_call_gfosub(hx_binding *b, const hx_state *s, int dflag, int iflag, double result[6],
+void hx_invoke_gfosub(hx_binding *b, const hx_frames *s, int dflag, int iflag, double result[6],
                     hx_call *call)
 {
     hx_call local;
@@ -383,7 +383,7 @@ void hx_call_gfosub(hx_binding *b, const hx_state *s, int dflag, int iflag, doub
     hx_host_unbind();
 }
 
-void hx_call_fiesub(hx_binding *b, const hx_state *s, const double disp[6], const double velo[6],
+void hx_invoke_fiesub(hx_binding *b, const hx_frames *s, const double disp[6], const double velo[6],
                     int dflag, int iflag, double field[6], double dfddis[36], double dfdvel[36],
                     hx_call *call)
 {
@@ -411,7 +411,7 @@ void hx_call_fiesub(hx_binding *b, const hx_state *s, const double disp[6], cons
     hx_host_unbind();
 }
 
-void hx_call_routine(hx_binding *b, const hx_state *s, int flag, int iflag, double *values,
+void hx_invoke_routine(hx_binding *b, const hx_frames *s, int flag, int iflag, double *values,
                      hx_call *call)
 {
     hx_call local;
@@ -432,10 +432,10 @@ void hx_call_routine(hx_binding *b, const hx_state *s, int flag, int iflag, doub
     hx_host_unbind();
 }
 
-void hx_call_yfosub(hx_binding *b, const hx_state *s, double *states, double *input, int dflag,
+void hx_invoke_yfosub(hx_binding *b, const hx_frames *s, double *states, double *input, int dflag,
                     int iflag, double *stated, double output[6], hx_call *call)
 {
-    const hx_state_eqn *f = &b->model->state_eqns[b->index];
+    const hx_stateeqn *f = &b->model->stateeqns[b->index];
     hx_call local;
     begin(b, 0, s, iflag, call, &local);
     int id = b->id, npar = b->npar, df = dflag, flag = iflag;
@@ -452,10 +452,10 @@ void hx_call_yfosub(hx_binding *b, const hx_state *s, double *states, double *in
     hx_host_unbind();
 }
 
-void hx_call_state_partial(hx_binding *b, int which, const hx_state *s, double *states,
+void hx_invoke_yfosub_partial(hx_binding *b, int which, const hx_frames *s, double *states,
                            double *input, double *matrix, hx_call *call)
 {
-    const hx_state_eqn *f = &b->model->state_eqns[b->index];
+    const hx_stateeqn *f = &b->model->stateeqns[b->index];
     hx_call local;
     begin(b, 1 + which, s, 0, call, &local);
     int id = b->id, npar = b->npar, flag = 0;
@@ -473,7 +473,7 @@ void hx_call_state_partial(hx_binding *b, int which, const hx_state *s, double *
     hx_host_unbind();
 }
 
-void hx_call_twin(hx_binding *b, const hx_state *s, const double disp[6], const double velo[6],
+void hx_invoke_twin(hx_binding *b, const hx_frames *s, const double disp[6], const double velo[6],
                   double field[6], double dfddis[36], double dfdvel[36], hx_messages *messages)
 {
     hx_call call;

@@ -46,7 +46,7 @@ typedef struct hx_call_log {
 
 typedef struct hx_binding {
     hx_binding_kind kind;
-    int index;           /* in the model's couplers[], forces[], state_eqns[] or routines[] */
+    int index;           /* in the model's couplers[], forces[], stateeqns[] or routines[] */
     int id;
     const char *element; /* "Constraint_Coupler", "Force_Vector_TwoBody", "Force_Field",
                           * "Force_StateEqn", "Post_Request", ... */
@@ -107,7 +107,7 @@ void hx_bindings_free(hx_bindings *b);
 /* The binding of a coupler or force element, or NULL (built-in element). */
 hx_binding *hx_binding_of_coupler(hx_bindings *b, int coupler_index);
 hx_binding *hx_binding_of_force(hx_bindings *b, int force_index);
-hx_binding *hx_binding_of_state_eqn(hx_bindings *b, int element_index);
+hx_binding *hx_binding_of_stateeqn(hx_bindings *b, int element_index);
 hx_binding *hx_binding_of_routine(hx_bindings *b, int routine_index);
 
 /* The name of function `which` of b as the library exports it (the symbol
@@ -116,39 +116,39 @@ const char *hx_binding_routine(const hx_binding *b, int which);
 
 /* A call record of function `which` of b at state s, recording into (iflag)
  * or checking against b->deps. */
-void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_state *s, int iflag);
+void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_frames *s, int iflag);
 
 
 /* Calls at state s (its time is the call's time); call (may be NULL) is the
  * record the call is bound with, set up by hx_binding_call_init. */
-void hx_call_coupler(hx_binding *b, int which, const hx_state *s, const double *disp, int ndisp,
+void hx_invoke_coupler(hx_binding *b, int which, const hx_frames *s, const double *disp, int ndisp,
                      int iflag, double *out, hx_call *call);
 /* A Force_Vector_TwoBody's routine: result receives force and torque, the
  * part a VFOSUB or VTOSUB does not return zero. */
-void hx_call_gfosub(hx_binding *b, const hx_state *s, int dflag, int iflag, double result[6],
+void hx_invoke_gfosub(hx_binding *b, const hx_frames *s, int dflag, int iflag, double result[6],
                     hx_call *call);
-void hx_call_fiesub(hx_binding *b, const hx_state *s, const double disp[6], const double velo[6],
+void hx_invoke_fiesub(hx_binding *b, const hx_frames *s, const double disp[6], const double velo[6],
                     int dflag, int iflag, double field[6], double dfddis[36], double dfdvel[36],
                     hx_call *call);
 /* A routine that is not a force at state s: REQSUB's eight values, or the
  * one value of VARSUB, DIFSUB (flag: dflag) or MOTSUB (flag: iord). */
-void hx_call_routine(hx_binding *b, const hx_state *s, int flag, int iflag, double *values,
+void hx_invoke_routine(hx_binding *b, const hx_frames *s, int flag, int iflag, double *values,
                      hx_call *call);
 /* YFOSUB of a Force_StateEqn at state s (its time): states (nstate) and
  * input (ninput), the caller's copies, which a library may write into;
  * stated (nstate) and output (6) receive its results. */
-void hx_call_yfosub(hx_binding *b, const hx_state *s, double *states, double *input, int dflag,
+void hx_invoke_yfosub(hx_binding *b, const hx_frames *s, double *states, double *input, int dflag,
                     int iflag, double *stated, double output[6], hx_call *call);
 /* Partial routine `which` (0 YFOXX, 1 YFOXU, 2 YFOYX, 3 YFOYU; it must be
  * exported) at states and input, into matrix (column-major, its rows first). */
-void hx_call_state_partial(hx_binding *b, int which, const hx_state *s, double *states,
+void hx_invoke_yfosub_partial(hx_binding *b, int which, const hx_frames *s, double *states,
                            double *input, double *matrix, hx_call *call);
 
 /* The FIESUB twin of a GFOSUB element (b->twin must be set), at the
  * deformation of its I marker relative to its J marker; it may not query.
  * Its messages go to `messages` (the caller's, kept apart from the session's:
  * a twin that refuses the list disqualifies itself, it does not stop the run). */
-void hx_call_twin(hx_binding *b, const hx_state *s, const double disp[6], const double velo[6],
+void hx_invoke_twin(hx_binding *b, const hx_frames *s, const double disp[6], const double velo[6],
                   double field[6], double dfddis[36], double dfdvel[36], hx_messages *messages);
 
 #endif

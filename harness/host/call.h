@@ -35,7 +35,7 @@ typedef struct hx_call {
     int id;
     const char *routine;       /* the entry called: "GFOSUB" */
     const hx_model *model;     /* strings and units */
-    const hx_state *state;     /* queries are answered from it */
+    const hx_frames *frames;    /* queries are answered from it */
     hx_messages *messages;
     int may_query;             /* the routine may call c_sysary/c_sysfnc */
     int dependency_pass;       /* iflag != 0: queries are recorded into declared */
@@ -59,7 +59,7 @@ typedef struct hx_call {
 } hx_call;
 
 void hx_call_init(hx_call *c, const char *element, int id, const char *routine,
-                  const hx_model *model, const hx_state *state, hx_messages *messages,
+                  const hx_model *model, const hx_frames *state, hx_messages *messages,
                   int dependency_pass, hx_dependencies *declared);
 
 /* The ABI's binding: the utilities answer for this call until unbound. */

@@ -17,7 +17,7 @@ static long allocated_bytes(void)
     return (long)(info.uordblks + info.hblkhd);
 }
 
-int hx_dependency_passes(hx_bindings *bs, const hx_state *s)
+int hx_dependency_passes(hx_bindings *bs, const hx_frames *s)
 {
     int size = 1;
     for (int k = 0; k < bs->count; ++k) {

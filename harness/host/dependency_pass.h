@@ -11,6 +11,6 @@
 /* Every element's pass at state s; what the library kept allocated across an
  * element's pass goes to its setup_bytes; a non-finite output is a warning.
  * Returns -1 when an element stopped the run (or memory ran out). */
-int hx_dependency_passes(hx_bindings *b, const hx_state *s);
+int hx_dependency_passes(hx_bindings *b, const hx_frames *s);
 
 #endif

@@ -20,11 +20,11 @@ int hx_binding_output_count(const hx_binding *b);
 
 /* Its inputs at state s; a state equation's states from states (NULL: its
  * initial states). */
-void hx_binding_inputs(const hx_binding *b, const hx_state *s, const double *states, double *in);
+void hx_binding_inputs(const hx_binding *b, const hx_frames *s, const double *states, double *in);
 
 /* One call at state s (its time is the call's) and inputs in, which a
  * library may write into (state equations): the number of outputs. */
-int hx_binding_evaluate(hx_binding *b, const hx_state *s, double *in, int iflag, int dflag,
+int hx_binding_evaluate(hx_binding *b, const hx_frames *s, double *in, int iflag, int dflag,
                         double *out);
 
 #endif

@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "base/vecmath.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 
 /* Function codes: the arrays, then the scalars (axis added to the base). */
 enum {
@@ -112,12 +112,12 @@ const char *hx_query_text(const hx_query *q, char *text, size_t size)
 }
 
 /* The world frame of a marker id (0: the world). */
-static const hx_frame *marker_world(const hx_state *s, int id, hx_frame *scratch)
+static const hx_frame *marker_world(const hx_frames *s, int id, hx_frame *scratch)
 {
     if (id == 0)
         return &hx_world_frame;
     const int index = hx_model_marker(s->model, id);
-    return index < 0 ? NULL : hx_state_marker(s, index, scratch);
+    return index < 0 ? NULL : hx_frames_marker(s, index, scratch);
 }
 
 /* The numbers of the Reference_Array of type IC with id: its count, or -1. */
@@ -147,7 +147,7 @@ static void angles321(const double R[9], double a[3])
     a[2] = atan2(R[7], R[8]);
 }
 
-int hx_answer(const hx_state *s, const hx_query *q, const int *ipar, double *values)
+int hx_answer(const hx_frames *s, const hx_query *q, const int *ipar, double *values)
 {
     const int code = q->function, nsize = q->nsize;
     const int array_function = code >= F_DISP && code <= F_ARRAY;
@@ -227,7 +227,7 @@ int hx_answer(const hx_state *s, const hx_query *q, const int *ipar, double *val
     return 1;
 }
 
-int hx_answer_family(const hx_state *s, char family, const int ipar[4], double v[3])
+int hx_answer_family(const hx_frames *s, char family, const int ipar[4], double v[3])
 {
     hx_frame scratch[4];
     const hx_frame *f[4];
@@ -247,7 +247,7 @@ int hx_answer_family(const hx_state *s, char family, const int ipar[4], double v
     }
 }
 
-int hx_answer_query(const hx_state *s, const char *fnc, const int *ipar, int nsize,
+int hx_answer_query(const hx_frames *s, const char *fnc, const int *ipar, int nsize,
                     int is_array, double *values)
 {
     hx_query q;

@@ -24,7 +24,7 @@ int hx_session_open(hx_session *s, const char *model_path, FILE *messages, hx_me
         hx_session_close(s);
         return -1;
     }
-    if (hx_state_init(&s->state, s->model) != 0) {
+    if (hx_frames_init(&s->frames, s->model) != 0) {
         hx_fail(msg, "out of memory");
         hx_session_close(s);
         return -1;
@@ -33,7 +33,7 @@ int hx_session_open(hx_session *s, const char *model_path, FILE *messages, hx_me
         hx_session_close(s);
         return -1;
     }
-    if (hx_dependency_passes(&s->bindings, &s->state) != 0) {
+    if (hx_dependency_passes(&s->bindings, &s->frames) != 0) {
         hx_fail(msg, "an element stopped the run in its dependency pass (c_errmes STOP): %s",
                 s->messages.stop_message);
         hx_session_close(s);
@@ -45,7 +45,7 @@ int hx_session_open(hx_session *s, const char *model_path, FILE *messages, hx_me
 void hx_session_close(hx_session *s)
 {
     hx_bindings_free(&s->bindings);
-    hx_state_free(&s->state);
+    hx_frames_free(&s->frames);
     hx_model_free(s->model);
     hx_messages_destroy(&s->messages);
     if (s->start_dir[0] != '\0' && chdir(s->start_dir) != 0)

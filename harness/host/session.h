@@ -14,13 +14,13 @@
 #include "host/binding.h"
 #include "host/messages.h"
 #include "model/model.h"
-#include "state/state.h"
+#include "frames/frames.h"
 
 typedef struct hx_session {
     hx_model *model;
     hx_messages messages;
     hx_bindings bindings;
-    hx_state state;            /* the model's initial pose and velocities, t = 0 */
+    hx_frames frames;           /* the model's initial pose and velocities, t = 0 */
     char start_dir[PATH_MAX];  /* where the harness was started */
 } hx_session;
 

@@ -3,7 +3,7 @@
 
 #include "host/queries.h"
 
-int hx_variable_value(const hx_state *s, const hx_variable *v, double *value)
+int hx_variable_value(const hx_frames *s, const hx_variable *v, double *value)
 {
     if (v->function[0] == '\0') {
         *value = v->number;
@@ -30,10 +30,10 @@ static int component(const hx_variable *v)
     return v->function[1] == 'X' ? 0 : v->function[1] == 'Y' ? 1 : v->function[1] == 'Z' ? 2 : -1;
 }
 
-int hx_state_eqn_inputs(const hx_state *s, int element, double *u)
+int hx_stateeqn_inputs(const hx_frames *s, int element, double *u)
 {
     const hx_model *m = s->model;
-    const hx_state_eqn *f = &m->state_eqns[element];
+    const hx_stateeqn *f = &m->stateeqns[element];
     family_values known[8];
     int nknown = 0;
     for (int i = 0; i < f->ninput; ++i) {

@@ -30,10 +30,10 @@ typedef struct raw_refs {
 } raw_refs;
 
 /* A Force_StateEqn's references. */
-typedef struct raw_state_eqn {
+typedef struct raw_stateeqn {
     int marker_ids[3]; /* i_marker_id, j_floating_marker_id, ref_marker_id */
     int x_array_id, u_array_id, ic_array_id; /* 0 when absent */
-} raw_state_eqn;
+} raw_stateeqn;
 
 typedef struct hx_draft {
     hx_model *m;
@@ -45,9 +45,9 @@ typedef struct hx_draft {
     raw_marker *rmarkers; /* parallel to m->markers */
     raw_body *rbodies;    /* parallel to m->bodies */
     raw_refs *rjoints, *rcouplers, *rforces, *rloads;
-    raw_state_eqn *rstate_eqns; /* parallel to m->state_eqns */
+    raw_stateeqn *rstateeqns; /* parallel to m->stateeqns */
     int cap_markers, cap_bodies, cap_joints, cap_couplers, cap_forces, cap_loads, cap_strings;
-    int cap_variables, cap_arrays, cap_state_eqns, cap_routines;
+    int cap_variables, cap_arrays, cap_stateeqns, cap_routines;
     int cap_splines;
 } hx_draft;
 
@@ -64,9 +64,9 @@ void *hx_draft_push(hx_draft *d, void **array, int *count, int *capacity, size_t
 
 /* The resolve passes; 0, or -1 with the draft failed. */
 int hx_draft_resolve(hx_draft *d);
-/* The state equations' pass (state_equation_elements.c): arrays, variables
+/* The state equations' pass (stateeqn_elements.c): arrays, variables
  * and Force_StateEqn references, after the markers; 0 or -1. */
-int hx_draft_resolve_state_eqns(hx_draft *d);
+int hx_draft_resolve_stateeqns(hx_draft *d);
 /* The routines' pass (routine_elements.c): Motion_Joint's joints, after the
  * joints; 0 or -1. */
 int hx_draft_resolve_routines(hx_draft *d);

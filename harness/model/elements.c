@@ -13,7 +13,7 @@
 #include "model/orientation.h"
 #include "model/units.h"
 #include "model/routine_elements.h"
-#include "model/state_equation_elements.h"
+#include "model/stateeqn_elements.h"
 #include "model/spline_elements.h"
 #include "model/user_list.h"
 #include "model/xml_attrs.h"
@@ -581,7 +581,7 @@ const hx_element_spec hx_element_specs[] = {
     {"Force_Field", force_field_attrs, build_force_field, NULL, 0},
     {"Force_Vector_OneBody", vector_load_attrs, build_vector_load, NULL, 0},
     {"Force_Scalar_TwoBody", scalar_load_attrs, build_scalar_load, NULL, 0},
-    {"Force_StateEqn", hx_state_eqn_attrs, hx_build_state_eqn, NULL, 0},
+    {"Force_StateEqn", hx_stateeqn_attrs, hx_build_stateeqn, NULL, 0},
     {"Reference_Array", hx_array_attrs, hx_build_array, hx_array_text, 0},
     {"Reference_Variable", hx_variable_attrs, hx_build_variable, NULL, 0},
     {"Post_Request", hx_request_attrs, hx_build_request, NULL, 1},

@@ -58,15 +58,15 @@ int hx_model_array(const hx_model *m, int id)
     return -1;
 }
 
-int hx_model_find_state_eqn(const hx_model *m, const char *text, int *index, hx_message *msg)
+int hx_model_find_stateeqn(const hx_model *m, const char *text, int *index, hx_message *msg)
 {
     const char *number = strncasecmp(text, "stateeqn:", 9) == 0 ? text + 9 : text;
     char *end;
     const long id = strtol(number, &end, 10);
     if (end == number || *end != '\0')
         return hx_fail(msg, "'%s' is not a Force_StateEqn id (ID or stateeqn:ID)", text);
-    for (int k = 0; k < m->nstate_eqns; ++k)
-        if (m->state_eqns[k].id == id) {
+    for (int k = 0; k < m->nstateeqns; ++k)
+        if (m->stateeqns[k].id == id) {
             *index = k;
             return 0;
         }
@@ -159,10 +159,10 @@ void hx_model_free(hx_model *m)
         free(m->arrays[k].variable_ids);
         free(m->arrays[k].variables);
     }
-    for (int k = 0; k < m->nstate_eqns; ++k) {
-        free_user_call(&m->state_eqns[k].user);
-        free(m->state_eqns[k].inputs);
-        free(m->state_eqns[k].initial);
+    for (int k = 0; k < m->nstateeqns; ++k) {
+        free_user_call(&m->stateeqns[k].user);
+        free(m->stateeqns[k].inputs);
+        free(m->stateeqns[k].initial);
     }
     for (int k = 0; k < m->nroutines; ++k)
         free_user_call(&m->routines[k].user);
@@ -177,7 +177,7 @@ void hx_model_free(hx_model *m)
     free(m->splines);
     free(m->variables);
     free(m->arrays);
-    free(m->state_eqns);
+    free(m->stateeqns);
     free(m->bodies);
     free(m->markers);
     free(m->joints);

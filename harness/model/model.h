@@ -1,7 +1,7 @@
 /*
  * The harness's model: the subset of a MotionSolve XML model it supports
  * (docs/interface.md §7). Immutable once read: what changes
- * during a run lives in a state (state/state.h). Indices below are positions
+ * during a run lives in a state (frames/frames.h). Indices below are positions
  * in the model's arrays; ids are the XML ids.
  */
 #ifndef HX_MODEL_MODEL_H
@@ -37,7 +37,7 @@ typedef struct hx_marker {
     int local_axes;      /* R_local is the identity: the marker turns with the body's axes */
     int at_body_origin;  /* r_local is zero */
     int tracked;         /* an element, load or joint of the model names it: states keep
-                          * its world frame (state/state.h) */
+                          * its world frame (frames/frames.h) */
     int line;
 } hx_marker;
 
@@ -139,7 +139,7 @@ typedef struct hx_array {
 
 /* A Force_StateEqn of type USERSUB: a force between two markers with
  * internal states (docs/interface.md §5, §7.10). */
-typedef struct hx_state_eqn {
+typedef struct hx_stateeqn {
     int id;
     int i_marker, j_marker; /* indices; J is the floating J marker */
     int ref_marker;          /* index of the frame of the outputs */
@@ -151,7 +151,7 @@ typedef struct hx_state_eqn {
     int static_hold;         /* is_static_hold: read, no effect (the harness runs dynamics) */
     hx_user_call user;
     int line;
-} hx_state_eqn;
+} hx_stateeqn;
 
 /* A user routine that is not a force (docs/interface.md §7.12): a
  * Post_Request's REQSUB (eight values written with the results), a USERSUB
@@ -226,8 +226,8 @@ typedef struct hx_model {
     int nvariables;
     hx_array *arrays;
     int narrays;
-    hx_state_eqn *state_eqns;
-    int nstate_eqns;
+    hx_stateeqn *stateeqns;
+    int nstateeqns;
     hx_routine *routines;    /* in the order read */
     int nroutines;
     int nroutines_of[HX_ROUTINE_KINDS];
@@ -264,7 +264,7 @@ int hx_model_variable(const hx_model *m, int id);
 int hx_model_array(const hx_model *m, int id);
 /* Index of the Force_StateEqn written ID or stateeqn:ID; -1 and msg when
  * there is none. */
-int hx_model_find_state_eqn(const hx_model *m, const char *text, int *index, hx_message *msg);
+int hx_model_find_stateeqn(const hx_model *m, const char *text, int *index, hx_message *msg);
 /* Index of the routine of a kind with this id, or -1. */
 int hx_model_routine(const hx_model *m, enum hx_routine_kind kind, int id);
 /* "Post_Request", "Reference_Variable", "Control_Diff", "Motion_Joint". */

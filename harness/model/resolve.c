@@ -360,7 +360,7 @@ int hx_draft_resolve(hx_draft *r)
         if (resolve_marker(r, k) != 0)
             return -1;
     if (build_marker_index(r) != 0 || resolve_bodies(r) != 0 || resolve_joints(r) != 0 ||
-        resolve_couplers(r) != 0 || resolve_forces(r) != 0 || hx_draft_resolve_state_eqns(r) != 0 ||
+        resolve_couplers(r) != 0 || resolve_forces(r) != 0 || hx_draft_resolve_stateeqns(r) != 0 ||
         hx_draft_resolve_routines(r) != 0)
         return -1;
     track_markers(m);

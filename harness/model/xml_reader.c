@@ -300,7 +300,7 @@ static hx_model *read_model(const char *path, const char *text, size_t length, F
     free(r.d.rcouplers);
     free(r.d.rforces);
     free(r.d.rloads);
-    free(r.d.rstate_eqns);
+    free(r.d.rstateeqns);
     free(r.text);
     if (status != 0) {
         hx_model_free(m);

@@ -20,11 +20,11 @@ static const char *const routine_names[] = {"COUSUB", "COUXX", "COUXX2"};
 static int lookup_string(void *ctx, int string_id, char *text, int capacity)
 {
     (void)ctx;
-    return host_read_string(string_id, text, capacity);
+    return usrsub_host_read_string(string_id, text, capacity);
 }
 
-static void *setup_coupler(const element_signature *sig, void *ctx,
-                           element_setup_report *report)
+static void *setup_coupler(const usrsub_element_signature *sig, void *ctx,
+                           usrsub_element_setup_report *report)
 {
     (void)ctx;
     usrsub_coupler *c = malloc(sizeof *c);
@@ -71,13 +71,13 @@ static void report_bad_call(coupler_output what, const int *id, const double *pa
     const int element = id != NULL ? *id : 0;
     if (id == NULL || ndisp == NULL || disp == NULL || npar == NULL || *npar < 0 ||
         (*npar > 0 && par == NULL)) {
-        entry_report_error(routine_names[what], element, NULL, "called with a missing argument (id,"
+        usrsub_entry_report_error(routine_names[what], element, NULL, "called with a missing argument (id,"
                            " par, npar, disp or ndisp) or a negative npar");
         return;
     }
     for (int k = 0; k < n; ++k)
         if (!isfinite(disp[k])) {
-            entry_report_error(routine_names[what], element, "state", "disp[%d] (joint %d of %d) is %g:"
+            usrsub_entry_report_error(routine_names[what], element, "state", "disp[%d] (joint %d of %d) is %g:"
                                " a joint displacement must be finite; the output is zero", k,
                                k + 1, n, disp[k]);
             return;
@@ -95,13 +95,13 @@ static void coupler_entry(coupler_output what, const int *id, const double *par,
         return;
     }
     const int n = *ndisp;
-    element_signature sig = {ELEMENT_COUPLER, *id, n, par, *npar};
-    element_setup_report report;
+    usrsub_element_signature sig = {ELEMENT_COUPLER, *id, n, par, *npar};
+    usrsub_element_setup_report report;
     int set_up_now;
     const usrsub_coupler *c =
-        element_cache_lookup(&sig, setup_coupler, release_coupler, NULL, &set_up_now, &report);
+        usrsub_element_cache_lookup(&sig, setup_coupler, release_coupler, NULL, &set_up_now, &report);
     if (set_up_now)
-        entry_report_setup(routine_names[what], *id, set_up_now, c, &report);
+        usrsub_entry_report_setup(routine_names[what], *id, set_up_now, c, &report);
     if (c == NULL) {
         zero(out, output_count(what, n));
         return;
@@ -127,9 +127,9 @@ static void coupler_entry(coupler_output what, const int *id, const double *par,
      * diagonal (the rest written as exact zeros): its diagonal is what can overflow. */
     const int count = output_count(what, n);
     const int checked = what == COUPLER_PHI ? 1 : n, stride = what == COUPLER_HESSIAN ? n + 1 : 1;
-    if (!all_finite_strided(out, checked, stride)) {
+    if (!usrsub_all_finite_strided(out, checked, stride)) {
         zero(out, count);
-        entry_report_error(routine_names[what], *id, "result", "the output at disp (%g %g %g) is"
+        usrsub_entry_report_error(routine_names[what], *id, "result", "the output at disp (%g %g %g) is"
                            " not finite (a displacement out of any sensible range); the output"
                            " is zero", disp[0], disp[1], n > 2 ? disp[2] : 0.0);
     }

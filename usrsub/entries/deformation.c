@@ -11,7 +11,7 @@
 static int ask(const char *fnc, const int *ipar, int nsize, double *states, int expected,
                char *failed)
 {
-    if (__builtin_expect(host_query_array(fnc, ipar, nsize, states, expected) == 0, 1))
+    if (__builtin_expect(usrsub_host_query_array(fnc, ipar, nsize, states, expected) == 0, 1))
         return 0;
     snprintf(failed, 64, "%s(%d,%d%s)", fnc, ipar[0], ipar[1],
              nsize == 3 ? ",J" : nsize == 4 ? ",J,J" : "");
@@ -26,7 +26,7 @@ static int rotation_of(const int ipar[4], int twist, double euler[3], double R[9
         usrsub_sincos(euler[1], &st, &ct);
         if (fabs(st) < USRSUB_REST_TILT) {
             double az;
-            if (host_query_value("AZ", ipar, 2, &az) != 0) {
+            if (usrsub_host_query_value("AZ", ipar, 2, &az) != 0) {
                 snprintf(failed, 64, "AZ(%d,%d)", ipar[0], ipar[1]);
                 return -1;
             }
@@ -37,7 +37,7 @@ static int rotation_of(const int ipar[4], int twist, double euler[3], double R[9
     return 0;
 }
 
-int measure_deformation(int i_marker, int j_marker, deformation_needs needs, double d[6],
+int usrsub_measure_deformation(int i_marker, int j_marker, usrsub_deformation_needs needs, double d[6],
                         double v[6], double *R, char *failed)
 {
     const int ipar[4] = {i_marker, j_marker, j_marker, j_marker};

@@ -12,16 +12,16 @@
 #ifndef USRSUB_ENTRIES_DEFORMATION_H
 #define USRSUB_ENTRIES_DEFORMATION_H
 
-typedef struct deformation_needs {
+typedef struct usrsub_deformation_needs {
     int translation, rotation, velocity;
     int twist; /* the rotation about z is used: near rest phi is rebuilt from AZ */
-} deformation_needs;
+} usrsub_deformation_needs;
 
 /* Fills d and v (the entries not needed are left as they are) and, when R is
  * not NULL and rotations are needed, the rotation of I relative to J
  * (row-major, columns I's axes in J). Returns 0, or -1 with the query the
  * host refused in failed (at least 64 chars). */
-int measure_deformation(int i_marker, int j_marker, deformation_needs needs, double d[6],
+int usrsub_measure_deformation(int i_marker, int j_marker, usrsub_deformation_needs needs, double d[6],
                         double v[6], double *R, char *failed);
 
 #endif

@@ -7,16 +7,16 @@
 
 #include "mutex.h"
 
-_Atomic(element_record *) element_cache_buckets[ELEMENT_CACHE_BUCKETS];
-static element_record *retired; /* superseded records, freed at unload */
+_Atomic(usrsub_element_record *) usrsub_element_cache_buckets[ELEMENT_CACHE_BUCKETS];
+static usrsub_element_record *retired; /* superseded records, freed at unload */
 static usrsub_mutex setup_lock = USRSUB_MUTEX_INIT;
 
-static int same_element(const element_record *r, const element_signature *sig)
+static int same_element(const usrsub_element_record *r, const usrsub_element_signature *sig)
 {
     return r->id == sig->id && r->interface == sig->interface;
 }
 
-static void free_record(element_record *r)
+static void free_record(usrsub_element_record *r)
 {
     if (r->model != NULL && r->release != NULL)
         r->release(r->model);
@@ -25,10 +25,10 @@ static void free_record(element_record *r)
 
 /* Takes the element's current record out of its chain (under the lock). A
  * reader standing on it still finds its way on through its own next. */
-static void retire_current(unsigned bucket, const element_signature *sig)
+static void retire_current(unsigned bucket, const usrsub_element_signature *sig)
 {
-    _Atomic(element_record *) *link = &element_cache_buckets[bucket];
-    for (element_record *r = atomic_load(link); r != NULL; r = atomic_load(link)) {
+    _Atomic(usrsub_element_record *) *link = &usrsub_element_cache_buckets[bucket];
+    for (usrsub_element_record *r = atomic_load(link); r != NULL; r = atomic_load(link)) {
         if (same_element(r, sig)) {
             atomic_store_explicit(link, atomic_load(&r->next), memory_order_release);
             r->retired_next = retired;
@@ -39,24 +39,24 @@ static void retire_current(unsigned bucket, const element_signature *sig)
     }
 }
 
-void *element_cache_get(const element_signature *sig, element_setup_fn *setup,
-                        element_release_fn *release, void *ctx, int *set_up_now,
-                        element_setup_report *report)
+void *usrsub_element_cache_get(const usrsub_element_signature *sig, usrsub_element_setup_fn *setup,
+                        usrsub_element_release_fn *release, void *ctx, int *set_up_now,
+                        usrsub_element_setup_report *report)
 {
-    const unsigned bucket = element_cache_bucket(sig->interface, sig->id);
+    const unsigned bucket = usrsub_element_cache_bucket(sig->interface, sig->id);
     *set_up_now = 0;
-    element_record *r = element_cache_record(sig->interface, sig->id);
-    if (r != NULL && element_cache_matches(r, sig))
+    usrsub_element_record *r = usrsub_element_cache_record(sig->interface, sig->id);
+    if (r != NULL && usrsub_element_cache_matches(r, sig))
         return r->model;
 
     usrsub_mutex_lock(&setup_lock);
-    r = element_cache_record(sig->interface, sig->id); /* set up meanwhile? */
-    if (r != NULL && element_cache_matches(r, sig)) {
+    r = usrsub_element_cache_record(sig->interface, sig->id); /* set up meanwhile? */
+    if (r != NULL && usrsub_element_cache_matches(r, sig)) {
         usrsub_mutex_unlock(&setup_lock);
         return r->model;
     }
     const int npar = sig->npar > 0 ? sig->npar : 0;
-    element_record *fresh = malloc(sizeof *fresh + sizeof(double) * (size_t)npar);
+    usrsub_element_record *fresh = malloc(sizeof *fresh + sizeof(double) * (size_t)npar);
     if (fresh == NULL) {
         usrsub_mutex_unlock(&setup_lock);
         *set_up_now = 1;
@@ -76,43 +76,43 @@ void *element_cache_get(const element_signature *sig, element_setup_fn *setup,
     fresh->model = setup(sig, ctx, report);
     *set_up_now = 1;
     retire_current(bucket, sig);
-    atomic_store_explicit(&fresh->next, atomic_load(&element_cache_buckets[bucket]), memory_order_relaxed);
-    atomic_store_explicit(&element_cache_buckets[bucket], fresh, memory_order_release);
+    atomic_store_explicit(&fresh->next, atomic_load(&usrsub_element_cache_buckets[bucket]), memory_order_relaxed);
+    atomic_store_explicit(&usrsub_element_cache_buckets[bucket], fresh, memory_order_release);
     usrsub_mutex_unlock(&setup_lock);
     return fresh->model;
 }
 
-int element_cache_size(void)
+int usrsub_element_cache_size(void)
 {
     int count = 0;
     usrsub_mutex_lock(&setup_lock);
     for (unsigned b = 0; b < ELEMENT_CACHE_BUCKETS; ++b)
-        for (element_record *r = atomic_load(&element_cache_buckets[b]); r != NULL; r = atomic_load(&r->next))
+        for (usrsub_element_record *r = atomic_load(&usrsub_element_cache_buckets[b]); r != NULL; r = atomic_load(&r->next))
             ++count;
     usrsub_mutex_unlock(&setup_lock);
     return count;
 }
 
-void element_cache_clear(void)
+void usrsub_element_cache_clear(void)
 {
     usrsub_mutex_lock(&setup_lock);
     for (unsigned b = 0; b < ELEMENT_CACHE_BUCKETS; ++b) {
-        element_record *r = atomic_exchange(&element_cache_buckets[b], NULL);
+        usrsub_element_record *r = atomic_exchange(&usrsub_element_cache_buckets[b], NULL);
         while (r != NULL) {
-            element_record *next = atomic_load(&r->next);
+            usrsub_element_record *next = atomic_load(&r->next);
             free_record(r);
             r = next;
         }
     }
     while (retired != NULL) {
-        element_record *next = retired->retired_next;
+        usrsub_element_record *next = retired->retired_next;
         free_record(retired);
         retired = next;
     }
     usrsub_mutex_unlock(&setup_lock);
 }
 
-__attribute__((destructor)) static void element_cache_unload(void)
+__attribute__((destructor)) static void usrsub_element_cache_unload(void)
 {
-    element_cache_clear();
+    usrsub_element_cache_clear();
 }

@@ -21,32 +21,32 @@ enum element_interface {
     ELEMENT_YFOSUB = 4 /* YFOSUB and its four partials share one set-up */
 };
 
-typedef struct element_signature {
+typedef struct usrsub_element_signature {
     int interface;
     int id;
     int code;          /* ndisp for couplers, the entry code for forces */
     const double *par; /* USER list as the host passed it */
     int npar;
-} element_signature;
+} usrsub_element_signature;
 
 /* What a set-up wants said to the host, after the cache's lock is released
  * (a host may end the run inside c_errmes). */
-typedef struct element_setup_report {
+typedef struct usrsub_element_setup_report {
     usrsub_message error;  /* set when the set-up fails */
     usrsub_read_report notices; /* informational text, when notices.has_notice */
-} element_setup_report;
+} usrsub_element_setup_report;
 
 /* Builds the immutable model of an element, or returns NULL and fills
  * report->error. Runs under the cache's lock. */
-typedef void *element_setup_fn(const element_signature *sig, void *ctx,
-                               element_setup_report *report);
-typedef void element_release_fn(void *model);
+typedef void *usrsub_element_setup_fn(const usrsub_element_signature *sig, void *ctx,
+                               usrsub_element_setup_report *report);
+typedef void usrsub_element_release_fn(void *model);
 
 /* Returns the element's model, or NULL when its set-up failed. *set_up_now is
  * 1 when this call ran the set-up: the caller then passes report on. */
-void *element_cache_get(const element_signature *sig, element_setup_fn *setup,
-                        element_release_fn *release, void *ctx, int *set_up_now,
-                        element_setup_report *report);
+void *usrsub_element_cache_get(const usrsub_element_signature *sig, usrsub_element_setup_fn *setup,
+                        usrsub_element_release_fn *release, void *ctx, int *set_up_now,
+                        usrsub_element_setup_report *report);
 
 /* ---- the look-up every call makes, inline ----------------------------------- */
 
@@ -55,35 +55,35 @@ void *element_cache_get(const element_signature *sig, element_setup_fn *setup,
 
 #define ELEMENT_CACHE_BUCKETS 1024u
 
-typedef struct element_record {
-    _Atomic(struct element_record *) next;
-    struct element_record *retired_next;
+typedef struct usrsub_element_record {
+    _Atomic(struct usrsub_element_record *) next;
+    struct usrsub_element_record *retired_next;
     int interface, id, code, npar;
     void *model; /* NULL: the set-up failed */
-    element_release_fn *release;
+    usrsub_element_release_fn *release;
     double par[];
-} element_record;
+} usrsub_element_record;
 
-extern _Atomic(element_record *) element_cache_buckets[ELEMENT_CACHE_BUCKETS];
+extern _Atomic(usrsub_element_record *) usrsub_element_cache_buckets[ELEMENT_CACHE_BUCKETS];
 
-static inline unsigned element_cache_bucket(int interface, int id)
+static inline unsigned usrsub_element_cache_bucket(int interface, int id)
 {
     return ((unsigned)id * 2654435761u ^ (unsigned)interface * 40503u) &
            (ELEMENT_CACHE_BUCKETS - 1u);
 }
 
 /* The element's current record, or NULL. */
-static inline element_record *element_cache_record(int interface, int id)
+static inline usrsub_element_record *usrsub_element_cache_record(int interface, int id)
 {
-    element_record *r = atomic_load_explicit(
-        &element_cache_buckets[element_cache_bucket(interface, id)], memory_order_acquire);
+    usrsub_element_record *r = atomic_load_explicit(
+        &usrsub_element_cache_buckets[usrsub_element_cache_bucket(interface, id)], memory_order_acquire);
     while (r != NULL && (r->id != id || r->interface != interface))
         r = atomic_load_explicit(&r->next, memory_order_acquire);
     return r;
 }
 
 /* Bitwise comparison, so that a NaN in the list still matches itself. */
-static inline int element_cache_matches(const element_record *r, const element_signature *sig)
+static inline int usrsub_element_cache_matches(const usrsub_element_record *r, const usrsub_element_signature *sig)
 {
     return r->code == sig->code && r->npar == sig->npar &&
            (sig->npar <= 0 ||
@@ -91,23 +91,23 @@ static inline int element_cache_matches(const element_record *r, const element_s
 }
 
 /* The fast path: the set-up model when the element is cached with this very
- * list (*hit = 1), else falls back to element_cache_get. */
-static inline void *element_cache_lookup(const element_signature *sig, element_setup_fn *setup,
-                                         element_release_fn *release, void *ctx,
-                                         int *set_up_now, element_setup_report *report)
+ * list (*hit = 1), else falls back to usrsub_element_cache_get. */
+static inline void *usrsub_element_cache_lookup(const usrsub_element_signature *sig, usrsub_element_setup_fn *setup,
+                                         usrsub_element_release_fn *release, void *ctx,
+                                         int *set_up_now, usrsub_element_setup_report *report)
 {
-    const element_record *r = element_cache_record(sig->interface, sig->id);
-    if (r != NULL && element_cache_matches(r, sig)) {
+    const usrsub_element_record *r = usrsub_element_cache_record(sig->interface, sig->id);
+    if (r != NULL && usrsub_element_cache_matches(r, sig)) {
         *set_up_now = 0;
         return r->model;
     }
-    return element_cache_get(sig, setup, release, ctx, set_up_now, report);
+    return usrsub_element_cache_get(sig, setup, release, ctx, set_up_now, report);
 }
 
 /* Number of live (not superseded) records; for tests. */
-int element_cache_size(void);
+int usrsub_element_cache_size(void);
 
 /* Frees every record; runs when the library is unloaded. */
-void element_cache_clear(void);
+void usrsub_element_cache_clear(void);
 
 #endif

@@ -31,23 +31,23 @@ static int first_report(const char *routine, int id, const char *kind)
     return first;
 }
 
-void entry_report_setup(const char *routine, int id, int set_up_now, const void *model,
-                        const element_setup_report *report)
+void usrsub_entry_report_setup(const char *routine, int id, int set_up_now, const void *model,
+                        const usrsub_element_setup_report *report)
 {
     if (!set_up_now)
         return;
     char text[USRSUB_MESSAGE_MAX + 64];
     if (report->notices.has_notice) {
         snprintf(text, sizeof text, "%s element %d: %s", routine, id, report->notices.notice.text);
-        host_report_notice(id, text);
+        usrsub_host_report_notice(id, text);
     }
     if (model == NULL) {
         snprintf(text, sizeof text, "%s element %d: %s", routine, id, report->error.text);
-        host_report_error(id, text);
+        usrsub_host_report_error(id, text);
     }
 }
 
-void entry_report_error(const char *routine, int id, const char *kind, const char *fmt, ...)
+void usrsub_entry_report_error(const char *routine, int id, const char *kind, const char *fmt, ...)
 {
     if (kind != NULL && !first_report(routine, id, kind))
         return;
@@ -58,14 +58,14 @@ void entry_report_error(const char *routine, int id, const char *kind, const cha
     va_end(ap);
     char text[USRSUB_MESSAGE_MAX + 64];
     snprintf(text, sizeof text, "%s element %d: %s", routine, id, what);
-    host_report_error(id, text);
+    usrsub_host_report_error(id, text);
 }
 
-int entry_arguments_ok(const char *routine, const int *id, const double *par, const int *npar)
+int usrsub_entry_arguments_ok(const char *routine, const int *id, const double *par, const int *npar)
 {
     if (id != NULL && npar != NULL && *npar >= 0 && (*npar == 0 || par != NULL))
         return 1;
-    entry_report_error(routine, id != NULL ? *id : 0, NULL, "called with a missing argument (id,"
+    usrsub_entry_report_error(routine, id != NULL ? *id : 0, NULL, "called with a missing argument (id,"
                        " par or npar) or a negative npar");
     return 0;
 }

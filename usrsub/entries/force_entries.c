@@ -21,31 +21,31 @@ static void gfosub_entry(const char *routine, int code, int *id, double *time, d
     if (result == NULL)
         return;
     memset(result, 0, 6 * sizeof(double));
-    if (!entry_arguments_ok(routine, id, par, npar))
+    if (!usrsub_entry_arguments_ok(routine, id, par, npar))
         return;
-    const force_model *m = force_model_of(routine, ELEMENT_GFOSUB, code, *id, par, *npar);
+    const usrsub_force_model *m = usrsub_force_model_of(routine, ELEMENT_GFOSUB, code, *id, par, *npar);
     if (m == NULL)
         return;
     double d[6] = {0, 0, 0, 0, 0, 0}, v[6] = {0, 0, 0, 0, 0, 0}, R[9];
     char failed[64];
     const int wants_rotation = m->rotation_measure == USRSUB_ROTATION_VECTOR;
-    if (measure_deformation(m->i_marker, m->j_marker, m->needs, d, v, wants_rotation ? R : NULL,
+    if (usrsub_measure_deformation(m->i_marker, m->j_marker, m->needs, d, v, wants_rotation ? R : NULL,
                             failed) != 0) {
-        entry_report_error(routine, *id, "query", "the host could not answer %s (markers %d and %d);"
+        usrsub_entry_report_error(routine, *id, "query", "the host could not answer %s (markers %d and %d);"
                            " the output is zero", failed, m->i_marker, m->j_marker);
         return;
     }
-    if (!all_finite(d, 6) || !all_finite(v, 6)) {
-        entry_report_error(routine, *id, "state", "the host's deformation (%g %g %g %g %g %g) or rate"
+    if (!usrsub_all_finite(d, 6) || !usrsub_all_finite(v, 6)) {
+        usrsub_entry_report_error(routine, *id, "state", "the host's deformation (%g %g %g %g %g %g) or rate"
                            " (%g %g %g %g %g %g) is not finite; the output is zero", d[0], d[1],
                            d[2], d[3], d[4], d[5], v[0], v[1], v[2], v[3], v[4], v[5]);
         return;
     }
-    force_model_evaluate(m, d, v, wants_rotation && m->needs.rotation ? R : NULL, result, NULL,
+    usrsub_force_model_evaluate(m, d, v, wants_rotation && m->needs.rotation ? R : NULL, result, NULL,
                          NULL);
-    if (!all_finite(result, 6)) {
+    if (!usrsub_all_finite(result, 6)) {
         memset(result, 0, 6 * sizeof(double));
-        entry_report_error(routine, *id, "result", "the force at deformation (%g %g %g %g %g %g) is not"
+        usrsub_entry_report_error(routine, *id, "result", "the force at deformation (%g %g %g %g %g %g) is not"
                            " finite (a state out of any sensible range); the output is zero",
                            d[0], d[1], d[2], d[3], d[4], d[5]);
     }
@@ -69,40 +69,40 @@ static void fiesub_entry(const char *routine, int code, int *id, double *time, d
         return;
     const int partials = dfddis != NULL && dfdvel != NULL;
     /* the evaluation writes every output; each way out before it zeros them */
-    if (!entry_arguments_ok(routine, id, par, npar)) {
+    if (!usrsub_entry_arguments_ok(routine, id, par, npar)) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
         return;
     }
     if (disp == NULL || velo == NULL) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
-        entry_report_error(routine, *id, NULL, "called without disp or velo");
+        usrsub_entry_report_error(routine, *id, NULL, "called without disp or velo");
         return;
     }
-    const force_model *m = force_model_of(routine, ELEMENT_FIESUB, code, *id, par, *npar);
+    const usrsub_force_model *m = usrsub_force_model_of(routine, ELEMENT_FIESUB, code, *id, par, *npar);
     if (m == NULL) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
         return;
     }
-    if (!all_finite(disp, 6) || !all_finite(velo, 6)) {
+    if (!usrsub_all_finite(disp, 6) || !usrsub_all_finite(velo, 6)) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
-        entry_report_error(routine, *id, "state", "disp (%g %g %g %g %g %g) or velo (%g %g %g %g %g %g)"
+        usrsub_entry_report_error(routine, *id, "state", "disp (%g %g %g %g %g %g) or velo (%g %g %g %g %g %g)"
                            " is not finite; the output is zero", disp[0], disp[1], disp[2],
                            disp[3], disp[4], disp[5], velo[0], velo[1], velo[2], velo[3],
                            velo[4], velo[5]);
         return;
     }
-    if (force_model_evaluate(m, disp, velo, NULL, field, partials ? dfddis : NULL,
+    if (usrsub_force_model_evaluate(m, disp, velo, NULL, field, partials ? dfddis : NULL,
                              partials ? dfdvel : NULL) != 0) {
-        entry_report_error(routine, *id, "angles", "the projection angles (%g %g %g) belong to no"
+        usrsub_entry_report_error(routine, *id, "angles", "the projection angles (%g %g %g) belong to no"
                            " rotation near them (the rotation-vector measure needs one); the"
                            " output is zero", disp[3], disp[4], disp[5]);
         return;
     }
     /* constant partials were checked finite when the file was read */
-    if (!all_finite(field, 6) || (partials && !m->constant_partials &&
-                                  (!all_finite(dfddis, 36) || !all_finite(dfdvel, 36)))) {
+    if (!usrsub_all_finite(field, 6) || (partials && !m->constant_partials &&
+                                  (!usrsub_all_finite(dfddis, 36) || !usrsub_all_finite(dfdvel, 36)))) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
-        entry_report_error(routine, *id, "result", "the force at disp (%g %g %g %g %g %g) is not finite (a"
+        usrsub_entry_report_error(routine, *id, "result", "the force at disp (%g %g %g %g %g %g) is not finite (a"
                            " state out of any sensible range); the output is zero", disp[0],
                            disp[1], disp[2], disp[3], disp[4], disp[5]);
     }

@@ -63,20 +63,20 @@ static void free_joint(void *property)
 
 /* The property file named by the Reference_String whose id is the next value. */
 static const void *property_named(usrsub_user_list *u, const char *what, const char *kind,
-                                  property_read_fn *read, property_free_fn *release,
-                                  element_setup_report *report)
+                                  usrsub_property_read_fn *read, usrsub_property_free_fn *release,
+                                  usrsub_element_setup_report *report)
 {
     int string_id;
     if (usrsub_user_list_int(u, what, 1, INT_MAX, &string_id, &report->error) != 0)
         return NULL;
     char path[PATH_TEXT_MAX];
-    if (host_read_string(string_id, path, (int)sizeof path) != 0) {
+    if (usrsub_host_read_string(string_id, path, (int)sizeof path) != 0) {
         usrsub_fail(&report->error, "USER parameter %d (par[%d]): there is no Reference_String"
                     " %d (expected %s)", u->next + u->offset, u->next - 1, string_id, what);
         return NULL;
     }
     double scales[USRSUB_UNIT_COUNT];
-    const int has_units = host_model_units(scales);
+    const int has_units = usrsub_host_model_units(scales);
     if (has_units < 0) {
         usrsub_fail(&report->error, "the host's c_gtunts reported unit sizes that are not"
                     " positive and finite (time %g s, length %g m, force %g N, mass %g kg)",
@@ -84,7 +84,7 @@ static const void *property_named(usrsub_user_list *u, const char *what, const c
                     scales[USRSUB_UNIT_FORCE], scales[USRSUB_UNIT_MASS]);
         return NULL;
     }
-    const void *p = property_cache_get(kind, path, has_units ? scales : NULL, read, release,
+    const void *p = usrsub_property_cache_get(kind, path, has_units ? scales : NULL, read, release,
                                        &report->notices, &report->error);
     if (p == NULL)
         usrsub_message_prefix(&report->error, "Reference_String %d", string_id);
@@ -95,7 +95,7 @@ static const char *const code_names = "1 (ABM_BUSHING), 2 (MOUNT_LIMITS) or 3 (F
 
 /* Mount limits named by the next value; a file with no active side is
  * dropped, so that the element runs exactly as without it. */
-static int limits_named(force_model *m, usrsub_user_list *u, element_setup_report *report)
+static int limits_named(usrsub_force_model *m, usrsub_user_list *u, usrsub_element_setup_report *report)
 {
     const usrsub_mount_limits *l = property_named(u, "the Reference_String id of the .gbi"
                                                   " mount-limits file", "gbi", read_limits,
@@ -112,7 +112,7 @@ static int limits_named(force_model *m, usrsub_user_list *u, element_setup_repor
     return 0;
 }
 
-void *force_model_setup(const element_signature *sig, void *ctx, element_setup_report *report)
+void *usrsub_force_model_setup(const usrsub_element_signature *sig, void *ctx, usrsub_element_setup_report *report)
 {
     const int interface = *(const int *)ctx;
     usrsub_user_list u;
@@ -127,7 +127,7 @@ void *force_model_setup(const element_signature *sig, void *ctx, element_setup_r
     } else {
         usrsub_user_list_init(&u, sig->par, sig->npar, 0);
     }
-    force_model *m = calloc(1, sizeof *m);
+    usrsub_force_model *m = calloc(1, sizeof *m);
     if (m == NULL) {
         usrsub_fail(&report->error, "out of memory");
         return NULL;
@@ -213,13 +213,13 @@ void *force_model_setup(const element_signature *sig, void *ctx, element_setup_r
     return m;
 }
 
-void force_model_release(void *model)
+void usrsub_force_model_release(void *model)
 {
     free(model); /* the property data belongs to the property cache */
 }
 
 /* The force law on the generalized deformation (x, rotation measure). */
-static void evaluate_law(const force_model *m, const double d[6], const double v[6], double F[6],
+static void evaluate_law(const usrsub_force_model *m, const double d[6], const double v[6], double F[6],
                          double *dFdd, double *dFdv)
 {
     switch (m->code) {
@@ -241,7 +241,7 @@ static void evaluate_law(const force_model *m, const double d[6], const double v
         usrsub_mount_limits_add(m->limits, d, v, F, dFdd, dFdv);
 }
 
-int force_model_evaluate(const force_model *m, const double d[6], const double v[6],
+int usrsub_force_model_evaluate(const usrsub_force_model *m, const double d[6], const double v[6],
                          const double *R, double F[6], double *dFdd, double *dFdv)
 {
     if (m->rotation_measure != USRSUB_ROTATION_VECTOR || !m->needs.rotation) {
@@ -271,16 +271,16 @@ int force_model_evaluate(const force_model *m, const double d[6], const double v
     return 0;
 }
 
-const force_model *force_model_of(const char *routine, int interface, int code, int id,
+const usrsub_force_model *usrsub_force_model_of(const char *routine, int interface, int code, int id,
                                   const double *par, int npar)
 {
     static int interfaces[5] = {0, ELEMENT_COUPLER, ELEMENT_GFOSUB, ELEMENT_FIESUB, ELEMENT_YFOSUB};
-    element_signature sig = {interface, id, code, par, npar};
-    element_setup_report report;
+    usrsub_element_signature sig = {interface, id, code, par, npar};
+    usrsub_element_setup_report report;
     int set_up_now;
-    const force_model *m = element_cache_lookup(&sig, force_model_setup, force_model_release,
+    const usrsub_force_model *m = usrsub_element_cache_lookup(&sig, usrsub_force_model_setup, usrsub_force_model_release,
                                                 &interfaces[interface], &set_up_now, &report);
     if (set_up_now)
-        entry_report_setup(routine, id, set_up_now, m, &report);
+        usrsub_entry_report_setup(routine, id, set_up_now, m, &report);
     return m;
 }

@@ -16,29 +16,29 @@
 
 enum force_code { FORCE_BUSHING = 1, FORCE_MOUNT_LIMITS = 2, FORCE_FLEX_JOINT = 3 };
 
-typedef struct force_model {
+typedef struct usrsub_force_model {
     int code;                      /* enum force_code */
     int i_marker, j_marker;        /* GFOSUB form */
     const usrsub_bushing *bushing; /* shared; NULL when unused */
     const usrsub_mount_limits *limits; /* shared; NULL when none is active */
     const usrsub_flex_joint *joint;    /* shared; NULL when unused */
-    deformation_needs needs;
+    usrsub_deformation_needs needs;
     int rotation_measure;              /* enum usrsub_rotation_measure */
     usrsub_state_layout states;        /* the YFOSUB form's internal states */
     int constant_partials;             /* -K and -D of a flexible joint on projection angles */
-} force_model;
+} usrsub_force_model;
 
 /* Element cache set-up of a force element; ctx points to the interface
  * (ELEMENT_GFOSUB, ELEMENT_FIESUB or ELEMENT_YFOSUB). sig->code is the named
  * entry's code, or 0 for GFOSUB/FIESUB/YFOSUB, whose par[0] holds it. A
  * bushing with internal states sets up only in the YFOSUB form, which takes
  * only bushings (with or without states) on projection angles. */
-void *force_model_setup(const element_signature *sig, void *ctx, element_setup_report *report);
-void force_model_release(void *model);
+void *usrsub_force_model_setup(const usrsub_element_signature *sig, void *ctx, usrsub_element_setup_report *report);
+void usrsub_force_model_release(void *model);
 
 /* The element's model from the cache, set up on its first call (whose notices
  * and error are reported under routine); NULL when it could not be. */
-const force_model *force_model_of(const char *routine, int interface, int code, int id,
+const usrsub_force_model *usrsub_force_model_of(const char *routine, int interface, int code, int id,
                                   const double *par, int npar);
 
 /* Force and torque on I in J axes at the deformation d (x, y, z, AX, AY, AZ)
@@ -47,7 +47,7 @@ const force_model *force_model_of(const char *routine, int interface, int code, 
  * rebuilt from the projection angles when the rotation vector needs it).
  * Writes every output; returns 0, or -1 when the angles are degenerate for
  * the rotation-vector measure (outputs zero). */
-int force_model_evaluate(const force_model *m, const double d[6], const double v[6],
+int usrsub_force_model_evaluate(const usrsub_force_model *m, const double d[6], const double v[6],
                          const double *R, double F[6], double *dFdd, double *dFdv);
 
 #endif

@@ -6,17 +6,17 @@
 
 #include "usrsub/readers/units.h"
 
-void host_report_error(int id, const char *text)
+void usrsub_host_report_error(int id, const char *text)
 {
     c_errmes(1, text, id, "STOP");
 }
 
-void host_report_notice(int id, const char *text)
+void usrsub_host_report_notice(int id, const char *text)
 {
     c_usrmes(1, text, id, "INFO");
 }
 
-int host_read_string(int string_id, char *text, int capacity)
+int usrsub_host_read_string(int string_id, char *text, int capacity)
 {
     if (capacity < 2)
         return -1;
@@ -35,7 +35,7 @@ int host_read_string(int string_id, char *text, int capacity)
     return len > 0 ? 0 : -1;
 }
 
-int host_model_units(double scales[USRSUB_UNIT_COUNT])
+int usrsub_host_model_units(double scales[USRSUB_UNIT_COUNT])
 {
     /* The Adams-compatible layout: time, length, force, mass (docs/interface.md
      * §1). Room to spare for a host that writes more than it should. */
@@ -58,7 +58,7 @@ int host_model_units(double scales[USRSUB_UNIT_COUNT])
     return 1;
 }
 
-int host_query_array(const char *fnc, const int *ipar, int nsize, double *states,
+int usrsub_host_query_array(const char *fnc, const int *ipar, int nsize, double *states,
                      int expected)
 {
     int nstates = 0, errflg = 0;
@@ -66,7 +66,7 @@ int host_query_array(const char *fnc, const int *ipar, int nsize, double *states
     return (errflg == 0 && nstates == expected) ? 0 : -1;
 }
 
-int host_query_value(const char *fnc, const int *ipar, int nsize, double *value)
+int usrsub_host_query_value(const char *fnc, const int *ipar, int nsize, double *value)
 {
     int errflg = 0;
     c_sysfnc(fnc, ipar, nsize, value, &errflg);

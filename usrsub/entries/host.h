@@ -10,24 +10,24 @@
 #include "usrsub/solver_abi.h"
 
 /* An input error: c_errmes(1, text, id, "STOP"). */
-void host_report_error(int id, const char *text);
+void usrsub_host_report_error(int id, const char *text);
 /* c_usrmes(1, text, id, "INFO"). */
-void host_report_notice(int id, const char *text);
+void usrsub_host_report_notice(int id, const char *text);
 
 /* Text of Reference_String string_id, NUL-terminated and without Fortran
  * padding. Returns 0, or -1 when the host has no such string. */
-int host_read_string(int string_id, char *text, int capacity);
+int usrsub_host_read_string(int string_id, char *text, int capacity);
 
 /* Sizes of the model's units in SI, in enum usrsub_unit_kind order (angles
  * in radians), from c_gtunts. Returns 1 when the model declares its units, 0
  * when it does not, -1 when the host's sizes are not positive and finite. */
-int host_model_units(double scales[USRSUB_UNIT_COUNT]);
+int usrsub_host_model_units(double scales[USRSUB_UNIT_COUNT]);
 
 /* c_sysfnc; returns 0 when the host answered. */
-int host_query_value(const char *fnc, const int *ipar, int nsize, double *value);
+int usrsub_host_query_value(const char *fnc, const int *ipar, int nsize, double *value);
 
 /* c_sysary; returns 0 when the host answered with the expected count. */
-int host_query_array(const char *fnc, const int *ipar, int nsize, double *states,
+int usrsub_host_query_array(const char *fnc, const int *ipar, int nsize, double *states,
                      int expected);
 
 #endif

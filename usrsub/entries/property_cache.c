@@ -20,7 +20,7 @@ typedef struct property_entry {
     int has_units;
     double units[USRSUB_UNIT_COUNT];
     void *property;
-    property_free_fn *release;
+    usrsub_property_free_fn *release;
 } property_entry;
 
 static property_entry *entries;
@@ -49,8 +49,8 @@ static char *real_path(const char *path, char real[PATH_MAX])
 #endif
 }
 
-const void *property_cache_get(const char *kind, const char *path, const double *model_scales,
-                               property_read_fn *read, property_free_fn *release,
+const void *usrsub_property_cache_get(const char *kind, const char *path, const double *model_scales,
+                               usrsub_property_read_fn *read, usrsub_property_free_fn *release,
                                usrsub_read_report *report, usrsub_message *msg)
 {
     char real[PATH_MAX];
@@ -87,7 +87,7 @@ const void *property_cache_get(const char *kind, const char *path, const double 
     return property;
 }
 
-int property_cache_size(void)
+int usrsub_property_cache_size(void)
 {
     int n = 0;
     usrsub_mutex_lock(&lock);
@@ -97,7 +97,7 @@ int property_cache_size(void)
     return n;
 }
 
-void property_cache_clear(void)
+void usrsub_property_cache_clear(void)
 {
     usrsub_mutex_lock(&lock);
     while (entries != NULL) {
@@ -110,7 +110,7 @@ void property_cache_clear(void)
     usrsub_mutex_unlock(&lock);
 }
 
-__attribute__((destructor)) static void property_cache_unload(void)
+__attribute__((destructor)) static void usrsub_property_cache_unload(void)
 {
-    property_cache_clear();
+    usrsub_property_cache_clear();
 }

@@ -10,18 +10,18 @@
 #include "usrsub/core/message.h"
 #include "usrsub/readers/property_file.h"
 
-typedef int property_read_fn(const char *path, const double *model_scales, void **property,
+typedef int usrsub_property_read_fn(const char *path, const double *model_scales, void **property,
                              usrsub_read_report *report, usrsub_message *msg);
-typedef void property_free_fn(void *property);
+typedef void usrsub_property_free_fn(void *property);
 
 /* The parsed property; report receives notices only on the call that parsed it. */
-const void *property_cache_get(const char *kind, const char *path, const double *model_scales,
-                               property_read_fn *read, property_free_fn *release,
+const void *usrsub_property_cache_get(const char *kind, const char *path, const double *model_scales,
+                               usrsub_property_read_fn *read, usrsub_property_free_fn *release,
                                usrsub_read_report *report, usrsub_message *msg);
 
 /* Number of files held; for tests. */
-int property_cache_size(void);
+int usrsub_property_cache_size(void);
 
-void property_cache_clear(void);
+void usrsub_property_cache_clear(void);
 
 #endif

@@ -40,11 +40,11 @@ static void zero(double *v, long n)
 
 /* The element's model when the call is sound (sizes as the model needs them,
  * finite states and inputs); NULL after reporting what is not. */
-static const force_model *checked_model(const state_call *c)
+static const usrsub_force_model *checked_model(const state_call *c)
 {
-    if (!entry_arguments_ok(c->routine, c->id, c->par, c->npar))
+    if (!usrsub_entry_arguments_ok(c->routine, c->id, c->par, c->npar))
         return NULL;
-    const force_model *m = force_model_of(c->routine, ELEMENT_YFOSUB, 0, *c->id, c->par, *c->npar);
+    const usrsub_force_model *m = usrsub_force_model_of(c->routine, ELEMENT_YFOSUB, 0, *c->id, c->par, *c->npar);
     if (m == NULL)
         return NULL;
     const usrsub_state_layout *l = &m->states;
@@ -53,7 +53,7 @@ static const force_model *checked_model(const state_call *c)
     const int noutpt = c->noutpt != NULL ? *c->noutpt : -1;
     if (nstate != l->n || ninput != INPUTS || noutpt != OUTPUTS ||
         (l->n > 0 && c->states == NULL) || c->input == NULL) {
-        entry_report_error(c->routine, *c->id, "sizes", "the bushing has %d states (friction %d,"
+        usrsub_entry_report_error(c->routine, *c->id, "sizes", "the bushing has %d states (friction %d,"
                            " balanced mounts %d, inertial mounts 2 x %d, rubber filters %d), 12"
                            " inputs (DX DY DZ AX AY AZ"
                            " of I relative to J, then VX VY VZ WX WY WZ) and 6 outputs; the host"
@@ -64,8 +64,8 @@ static const force_model *checked_model(const state_call *c)
                                ? " and no states or inputs" : "");
         return NULL;
     }
-    if (!all_finite(c->input, INPUTS) || (l->n > 0 && !all_finite(c->states, l->n))) {
-        entry_report_error(c->routine, *c->id, "state", "the inputs (%g %g %g %g %g %g | %g %g %g"
+    if (!usrsub_all_finite(c->input, INPUTS) || (l->n > 0 && !usrsub_all_finite(c->states, l->n))) {
+        usrsub_entry_report_error(c->routine, *c->id, "state", "the inputs (%g %g %g %g %g %g | %g %g %g"
                            " %g %g %g) or the states are not finite; the outputs are zero",
                            c->input[0], c->input[1], c->input[2], c->input[3], c->input[4],
                            c->input[5], c->input[6], c->input[7], c->input[8], c->input[9],
@@ -76,21 +76,21 @@ static const force_model *checked_model(const state_call *c)
 }
 
 /* Evaluates at the call's point; 0, or -1 after reporting. */
-static int evaluate(const state_call *c, const force_model *m, double *stated, double *output,
+static int evaluate(const state_call *c, const usrsub_force_model *m, double *stated, double *output,
                     usrsub_state_partials *p)
 {
     usrsub_message msg;
     double xdot[USRSUB_MAX_STATES], y[OUTPUTS];
     if (usrsub_bushing_states_eval(m->bushing, m->limits, &m->states, c->input, c->states, xdot,
                                    y, p, &msg) != 0) {
-        entry_report_error(c->routine, *c->id, "balance", "%s; the outputs are zero", msg.text);
+        usrsub_entry_report_error(c->routine, *c->id, "balance", "%s; the outputs are zero", msg.text);
         return -1;
     }
     const int n = m->states.n;
-    if (!all_finite(xdot, n) || !all_finite(y, OUTPUTS) ||
-        (p != NULL && (!all_finite(p->dxdot_dx, n * n) || !all_finite(p->dxdot_du, n * INPUTS) ||
-                       !all_finite(p->dy_dx, OUTPUTS * n) || !all_finite(p->dy_du, OUTPUTS * INPUTS)))) {
-        entry_report_error(c->routine, *c->id, "result", "the outputs at inputs (%g %g %g %g %g %g)"
+    if (!usrsub_all_finite(xdot, n) || !usrsub_all_finite(y, OUTPUTS) ||
+        (p != NULL && (!usrsub_all_finite(p->dxdot_dx, n * n) || !usrsub_all_finite(p->dxdot_du, n * INPUTS) ||
+                       !usrsub_all_finite(p->dy_dx, OUTPUTS * n) || !usrsub_all_finite(p->dy_du, OUTPUTS * INPUTS)))) {
+        usrsub_entry_report_error(c->routine, *c->id, "result", "the outputs at inputs (%g %g %g %g %g %g)"
                            " are not finite (a state out of any sensible range); they are zero",
                            c->input[0], c->input[1], c->input[2], c->input[3], c->input[4],
                            c->input[5]);
@@ -111,7 +111,7 @@ void STDCALL YFOSUB(int *id, double *time, double *par, int *npar, int *dflag, i
     const state_call c = {"YFOSUB", id, par, npar, nstate, states, ninput, input, noutpt};
     zero(stated, nstate != NULL ? *nstate : 0);
     zero(output, noutpt != NULL ? *noutpt : 0);
-    const force_model *m = checked_model(&c);
+    const usrsub_force_model *m = checked_model(&c);
     if (m != NULL && evaluate(&c, m, stated, output, NULL) != 0) {
         zero(stated, *nstate);
         zero(output, *noutpt);
@@ -130,7 +130,7 @@ static void partial_entry(const char *routine, enum partial_block block, int *id
                                                              : (ninput != NULL ? *ninput : 0);
     zero(matrix, rows > 0 && cols > 0 ? rows * cols : 0);
     const state_call c = {routine, id, par, npar, nstate, states, ninput, input, noutpt};
-    const force_model *m = checked_model(&c);
+    const usrsub_force_model *m = checked_model(&c);
     usrsub_state_partials p;
     if (m == NULL || matrix == NULL || evaluate(&c, m, NULL, NULL, &p) != 0)
         return;

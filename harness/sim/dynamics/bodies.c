@@ -5,7 +5,7 @@
 #include "base/linalg.h"
 #include "base/vecmath.h"
 #include "sim/dynamics/bodies.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 
 int hx_bodies_init(hx_dynamics *d, hx_message *msg)
 {
@@ -39,7 +39,7 @@ int hx_bodies_init(hx_dynamics *d, hx_message *msg)
         const hx_marker *mj = &m->markers[j->j_marker];
         v3_set(dof->axis, mj->R0[2], mj->R0[5], mj->R0[8]);
         v3_copy(dof->origin, mj->pos0);
-        dof->coord0 = hx_joint_coordinate(&d->s->state, b->joint);
+        dof->coord0 = hx_joint_coordinate(&d->s->frames, b->joint);
         if (j->type == HX_JOINT_REVOLUTE) {
             dof->kind = HX_DOF_REVOLUTE;
             double Iw[9], tmp[9], Ia[3], r[3], axr[3];
@@ -103,7 +103,7 @@ void hx_bodies_frame(const hx_dynamics *d, int k, const double *y, hx_frame *f)
 void hx_bodies_set_frames(hx_dynamics *d, const double *y)
 {
     for (int k = 0; k < d->m->nbodies; ++k)
-        hx_bodies_frame(d, k, y, &d->state.bodies[k]);
+        hx_bodies_frame(d, k, y, &d->frames.bodies[k]);
 }
 
 void hx_bodies_initial_state(const hx_dynamics *d, double *y)
@@ -139,7 +139,7 @@ double hx_bodies_apply_load(hx_dynamics *d, int body, const double point[3], con
 {
     if (d->dof[body].kind == HX_DOF_GROUND)
         return 0.0;
-    const hx_frame *f = &d->state.bodies[body];
+    const hx_frame *f = &d->frames.bodies[body];
     double r[3], moment[3], vp[3];
     v3_sub(r, point, f->p);
     v3_cross(moment, r, F);
@@ -161,7 +161,7 @@ void hx_bodies_accelerations(hx_dynamics *d, const double *y, double *ydot)
     double *qdot = ydot, *udot = ydot + d->nq;
     for (int k = 0; k < d->m->nbodies; ++k) {
         const hx_body_dof *dof = &d->dof[k];
-        const hx_frame *f = &d->state.bodies[k];
+        const hx_frame *f = &d->frames.bodies[k];
         const double *F = d->force + 3 * k, *T = d->torque + 3 * k;
         switch (dof->kind) {
         case HX_DOF_GROUND:

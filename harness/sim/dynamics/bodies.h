@@ -8,7 +8,7 @@
 #include "sim/dynamics/dynamics.h"
 
 int hx_bodies_init(hx_dynamics *d, hx_message *msg);
-/* Every body's frame from y into d->state. */
+/* Every body's frame from y into d->frames. */
 void hx_bodies_set_frames(hx_dynamics *d, const double *y);
 /* Body k's frame from y into f (only k moves: the Newton matrix's columns). */
 void hx_bodies_frame(const hx_dynamics *d, int k, const double *y, hx_frame *f);

@@ -52,14 +52,14 @@ static int coupler_terms(hx_dynamics *d, int k, double t, const double *y, doubl
         return n;
     }
     double hess[9] = {0};
-    if (d->state.time != t) { /* couplers get their state in disp: only the time is bound */
-        d->state.time = t;
+    if (d->frames.time != t) { /* couplers get their state in disp: only the time is bound */
+        d->frames.time = t;
         d->evaluated = 0;
     }
-    hx_call_coupler(b, 0, &d->state, disp, n, 0, phi, NULL);
-    hx_call_coupler(b, 1, &d->state, disp, n, 0, grad, NULL);
+    hx_invoke_coupler(b, 0, &d->frames, disp, n, 0, phi, NULL);
+    hx_invoke_coupler(b, 1, &d->frames, disp, n, 0, grad, NULL);
     if (gamma != NULL)
-        hx_call_coupler(b, 2, &d->state, disp, n, 0, hess, NULL);
+        hx_invoke_coupler(b, 2, &d->frames, disp, n, 0, hess, NULL);
     if (hx_dynamics_check_stop(d, b) != 0)
         return -1;
     if (!isfinite(*phi) || !hx_all_finite(grad, n) || !hx_all_finite(hess, n * n))

@@ -5,7 +5,7 @@
 #include "sim/dynamics/element_forces.h"
 #include "sim/dynamics/loads.h"
 #include "sim/dynamics/routines.h"
-#include "sim/dynamics/state_elements.h"
+#include "sim/dynamics/stateeqns.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -53,10 +53,10 @@ static int init_parts(hx_dynamics *d, hx_session *s, hx_message *msg)
     d->element_partials = calloc(72 * (size_t)nf + 1, sizeof(double));
     if (!d->dof || !d->coupler_binding || !d->force_binding || !d->lambda || !d->element_load ||
         !d->world_aligned || !d->force || !d->torque || !d->element_outputs ||
-        !d->element_partials || hx_state_clone(&d->state, &s->state) != 0 ||
-        hx_state_clone(&d->probe, &s->state) != 0)
+        !d->element_partials || hx_frames_clone(&d->frames, &s->frames) != 0 ||
+        hx_frames_clone(&d->probe, &s->frames) != 0)
         return hx_fail(msg, "out of memory");
-    if (hx_bodies_init(d, msg) != 0 || hx_state_elements_init(d, msg) != 0 ||
+    if (hx_bodies_init(d, msg) != 0 || hx_stateeqns_init(d, msg) != 0 ||
         hx_routines_init(d, msg) != 0)
         return -1;
     d->load_work = d->diffs + d->ndiffs;
@@ -103,20 +103,20 @@ void hx_dynamics_free(hx_dynamics *d)
     free(d->element_partials);
     free(d->free_accelerations);
     free(d->evaluated_y);
-    hx_state_elements_free(d);
+    hx_stateeqns_free(d);
     hx_routines_free(d);
-    hx_state_free(&d->state);
-    hx_state_free(&d->probe);
+    hx_frames_free(&d->frames);
+    hx_frames_free(&d->probe);
     memset(d, 0, sizeof *d);
 }
 
 void hx_dynamics_set_state(hx_dynamics *d, double t, const double *y)
 {
     d->evaluated = 0;
-    d->state.time = t;
+    d->frames.time = t;
     hx_bodies_set_frames(d, y);
     hx_routines_set_state(d, y);
-    hx_state_update(&d->state);
+    hx_frames_update(&d->frames);
 }
 
 int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot)
@@ -127,7 +127,7 @@ int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot)
     memset(d->torque, 0, sizeof(double) * 3 * (size_t)nb);
     ydot[d->load_work] = hx_loads_apply(d, t);
     if (hx_element_forces_apply(d, &ydot[d->element_work]) != 0 ||
-        hx_state_elements_apply(d, y, ydot) != 0)
+        hx_stateeqns_apply(d, y, ydot) != 0)
         return -1;
     hx_bodies_accelerations(d, y, ydot);
     if (d->m->ncouplers > 0) {
@@ -147,7 +147,7 @@ int hx_dynamics_initial_state(hx_dynamics *d, double *y)
 {
     memset(y, 0, sizeof(double) * (size_t)d->n);
     hx_bodies_initial_state(d, y);
-    hx_state_elements_initial(d, y);
+    hx_stateeqns_initial(d, y);
     if (hx_routines_initial(d, y) != 0)
         return -1;
     d->max_phi = d->max_phidot = 0.0;

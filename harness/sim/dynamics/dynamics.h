@@ -1,6 +1,6 @@
 /*
  * The harness's equations of motion, as one right-hand side for the
- * integrators. The dynamics owns its state (state/state.h): each evaluation
+ * integrators. The dynamics owns its state (frames/frames.h): each evaluation
  * fills the bodies' frames from y, runs the kinematics stage, and calls the
  * elements with that state bound.
  *
@@ -9,7 +9,7 @@
  * AZ(I,J) or DZ(I,J,J), unwrapped, and its rate) (bodies.c). Forces: gravity
  * and loads (loads.c), the user force elements (element_forces.c) and the
  * Force_StateEqn elements, whose internal states are integrated with the
- * bodies' (state_elements.c). Couplers relate joint coordinates through one
+ * bodies' (stateeqns.c). Couplers relate joint coordinates through one
  * Lagrange multiplier each, with projection onto the constraints after a
  * step (constraints.c).
  *
@@ -25,7 +25,7 @@
 #define HX_SIM_DYNAMICS_H
 
 #include "host/session.h"
-#include "state/state.h"
+#include "frames/frames.h"
 
 typedef enum hx_dof_kind { HX_DOF_GROUND, HX_DOF_FREE, HX_DOF_REVOLUTE, HX_DOF_SLIDER } hx_dof_kind;
 
@@ -41,8 +41,8 @@ typedef struct hx_body_dof {
 typedef struct hx_dynamics {
     hx_session *s;
     const hx_model *m;
-    hx_state state;             /* the state of the last evaluation */
-    hx_state probe;             /* scratch state for elements at prescribed deformations */
+    hx_frames frames;           /* the frames of the last evaluation */
+    hx_frames probe;             /* scratch state for elements at prescribed deformations */
     double ucf;                 /* acceleration = ucf * force / mass */
     hx_body_dof *dof;
     int nq, nu, n;
@@ -51,7 +51,7 @@ typedef struct hx_dynamics {
     hx_binding **routine_binding; /* per routine of the model (model.h) */
     int *driver;                /* per body: the Motion_Joint routine driving it, or -1 */
     int load_work, element_work; /* y indices of the work done by loads and by force elements */
-    struct hx_state_elements *stateful; /* the Force_StateEqn elements (state_elements.h) */
+    struct hx_stateeqns *stateeqns; /* the Force_StateEqn elements (stateeqns.h) */
     hx_binding **coupler_binding; /* per coupler; NULL for the built-in form */
     hx_binding **force_binding;   /* per force element */
     double *lambda;             /* multipliers of the last evaluation */
@@ -69,8 +69,8 @@ typedef struct hx_dynamics {
     double *free_accelerations; /* nu: the bodies' udot before the couplers act */
     double *evaluated_y;        /* the y of that evaluation */
     double evaluated_t;
-    int evaluated;              /* 1: d->state and the above belong to (evaluated_t,
-                                 * evaluated_y); any other setting of d->state clears it */
+    int evaluated;              /* 1: d->frames and the above belong to (evaluated_t,
+                                 * evaluated_y); any other setting of d->frames clears it */
     int failed;
     char message[1024];
     double max_phi, max_phidot; /* largest constraint residuals after projections */
@@ -89,7 +89,7 @@ int hx_dynamics_initial_state(hx_dynamics *d, double *y);
  * run or returned a non-finite value, or the constraints are singular. */
 int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot);
 
-/* The kinematics of y into d->state: bodies' frames, then markers. */
+/* The kinematics of y into d->frames: bodies' frames, then markers. */
 void hx_dynamics_set_state(hx_dynamics *d, double t, const double *y);
 
 /* How the stages of an evaluation fail: sim/dynamics/stage_failure.h. */

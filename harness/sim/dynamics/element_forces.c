@@ -7,12 +7,12 @@
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/element_forces.h"
 #include "sim/dynamics/stage_failure.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 
 int hx_element_forces_apply(hx_dynamics *d, double *power)
 {
     const hx_model *m = d->m;
-    const hx_state *s = &d->state;
+    const hx_frames *s = &d->frames;
     *power = 0.0;
     for (int k = 0; k < m->nforces; ++k) {
         const hx_force *f = &m->forces[k];
@@ -25,13 +25,13 @@ int hx_element_forces_apply(hx_dynamics *d, double *power)
                                                        : hx_world_frame.R)
                                  : J->R;
         if (f->interface == HX_FORCE_GFOSUB) {
-            hx_call_gfosub(b, s, 0, 0, out, NULL);
+            hx_invoke_gfosub(b, s, 0, 0, out, NULL);
         } else {
             /* the partials come with the force, when asked for (dflag): kept
              * for the Newton matrix */
             double disp[6], velo[6], *dfd = d->element_partials + 72 * k;
             hx_field_state(I, J, disp, velo);
-            hx_call_fiesub(b, s, disp, velo, d->field_partials, 0, out, dfd, dfd + 36, NULL);
+            hx_invoke_fiesub(b, s, disp, velo, d->field_partials, 0, out, dfd, dfd + 36, NULL);
         }
         if (hx_dynamics_check_stop(d, b) != 0)
             return -1;

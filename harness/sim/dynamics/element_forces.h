@@ -8,7 +8,7 @@
 
 #include "sim/dynamics/dynamics.h"
 
-/* The force elements at d->state; *power receives the power of their forces. */
+/* The force elements at d->frames; *power receives the power of their forces. */
 int hx_element_forces_apply(hx_dynamics *d, double *power);
 
 #endif

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "state/measures.h"
+#include "frames/measures.h"
 #include "base/linalg.h"
 #include "base/vecmath.h"
 
@@ -50,14 +50,14 @@ int hx_rotation_from_angles(const double a[3], double R[9])
     return hx_max_abs(f, 3) < 1e-12 ? 0 : -1;
 }
 
-void hx_place_pose(const hx_state *base, hx_state *out, int i_marker, int j_marker,
+void hx_place_pose(const hx_frames *base, hx_frames *out, int i_marker, int j_marker,
                    const double p[3], const double Rrel[9], const double v[3],
                    const double w[3])
 {
     const hx_model *m = base->model;
-    hx_state_copy(out, base);
+    hx_frames_copy(out, base);
     hx_frame scratch;
-    const hx_frame *J = hx_state_marker(base, j_marker, &scratch);
+    const hx_frame *J = hx_frames_marker(base, j_marker, &scratch);
     hx_frame I;
     m3_mul(I.R, J->R, Rrel);
     m3_apply(I.p, J->R, p);
@@ -81,10 +81,10 @@ void hx_place_pose(const hx_state *base, hx_state *out, int i_marker, int j_mark
     double wrb[3];
     v3_cross(wrb, b->w, rb);
     v3_sub(b->v, I.v, wrb);
-    hx_state_update(out);
+    hx_frames_update(out);
 }
 
-void hx_place_relative(const hx_state *base, hx_state *out, int i_marker, int j_marker,
+void hx_place_relative(const hx_frames *base, hx_frames *out, int i_marker, int j_marker,
                        const double disp[6], const double velo[6])
 {
     double Rrel[9];
@@ -94,15 +94,15 @@ void hx_place_relative(const hx_state *base, hx_state *out, int i_marker, int j_
 }
 
 /* GFOSUB at the state placed in scratch; result turned into J axes. */
-static int gfosub_placed(hx_session *s, hx_binding *b, hx_state *scratch, double t, double F[6])
+static int gfosub_placed(hx_session *s, hx_binding *b, hx_frames *scratch, double t, double F[6])
 {
     const hx_force *f = &s->model->forces[b->index];
     scratch->time = t;
     double out[6];
-    hx_call_gfosub(b, scratch, 1, 0, out, NULL);
+    hx_invoke_gfosub(b, scratch, 1, 0, out, NULL);
     hx_frame frames[2];
-    const hx_frame *J = hx_state_marker(scratch, f->j_marker, &frames[0]);
-    const hx_frame *ref = hx_state_marker(scratch, f->ref_marker, &frames[1]);
+    const hx_frame *J = hx_frames_marker(scratch, f->j_marker, &frames[0]);
+    const hx_frame *ref = hx_frames_marker(scratch, f->ref_marker, &frames[1]);
     double Rjr[9];
     m3_tmul(Rjr, J->R, ref->R);
     m3_apply(F, Rjr, out);
@@ -110,7 +110,7 @@ static int gfosub_placed(hx_session *s, hx_binding *b, hx_state *scratch, double
     return hx_messages_stopped(&s->messages) ? -1 : 0;
 }
 
-static int gfosub_at(hx_session *s, hx_binding *b, hx_state *scratch, const hx_state *base,
+static int gfosub_at(hx_session *s, hx_binding *b, hx_frames *scratch, const hx_frames *base,
                      double t, const double disp[6], const double velo[6], double F[6])
 {
     const hx_force *f = &s->model->forces[b->index];
@@ -118,16 +118,16 @@ static int gfosub_at(hx_session *s, hx_binding *b, hx_state *scratch, const hx_s
     return gfosub_placed(s, b, scratch, t, F);
 }
 
-int hx_element_at(hx_session *s, hx_state *scratch, const hx_state *base, int force, double t,
+int hx_element_at(hx_session *s, hx_frames *scratch, const hx_frames *base, int force, double t,
                   const double disp[6], const double velo[6], double F[6], double *dFdd,
                   double *dFdv)
 {
     hx_binding *b = hx_binding_of_force(&s->bindings, force);
     if (b->kind == HX_BIND_FIESUB) {
         double dfd[36], dfv[36];
-        hx_state_copy(scratch, base);
+        hx_frames_copy(scratch, base);
         scratch->time = t;
-        hx_call_fiesub(b, scratch, disp, velo, dFdd != NULL, 0, F, dfd, dfv, NULL);
+        hx_invoke_fiesub(b, scratch, disp, velo, dFdd != NULL, 0, F, dfd, dfv, NULL);
         if (dFdd != NULL) {
             memcpy(dFdd, dfd, sizeof dfd);
             memcpy(dFdv, dfv, sizeof dfv);
@@ -153,7 +153,7 @@ int hx_element_at(hx_session *s, hx_state *scratch, const hx_state *base, int fo
 }
 
 /* Force and torque on I in J axes with I at rest at pose (p, R) relative to J. */
-static int element_at_pose(hx_session *s, hx_state *scratch, const hx_state *base, int force,
+static int element_at_pose(hx_session *s, hx_frames *scratch, const hx_frames *base, int force,
                            double t, const double p[3], const double R[9], double F[6])
 {
     const double zero[6] = {0, 0, 0, 0, 0, 0};
@@ -169,7 +169,7 @@ static int element_at_pose(hx_session *s, hx_state *scratch, const hx_state *bas
     return gfosub_placed(s, b, scratch, t, F);
 }
 
-double hx_element_potential(hx_session *s, hx_state *scratch, const hx_state *base, int force,
+double hx_element_potential(hx_session *s, hx_frames *scratch, const hx_frames *base, int force,
                             double t)
 {
     static const double node[8] = {0.0198550717512319, 0.1016667612931866, 0.2372337950418355,
@@ -181,8 +181,8 @@ double hx_element_potential(hx_session *s, hx_state *scratch, const hx_state *ba
     /* the pose of I in J: position x, rotation vector r */
     const hx_force *f = &s->model->forces[force];
     hx_frame frames[2];
-    const hx_frame *I = hx_state_marker(base, f->i_marker, &frames[0]);
-    const hx_frame *J = hx_state_marker(base, f->j_marker, &frames[1]);
+    const hx_frame *I = hx_frames_marker(base, f->i_marker, &frames[0]);
+    const hx_frame *J = hx_frames_marker(base, f->j_marker, &frames[1]);
     double x[3], R[9], r[3];
     hx_displacement(I, J, J, x);
     hx_relative_rotation(I, J, R);

@@ -2,7 +2,7 @@
 #include "base/vecmath.h"
 #include "sim/dynamics/energy.h"
 #include "sim/dynamics/element_probe.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 
 hx_energy hx_energy_of(hx_dynamics *d, double t, const double *y)
 {
@@ -11,7 +11,7 @@ hx_energy hx_energy_of(hx_dynamics *d, double t, const double *y)
     double kinetic = 0.0, potential = 0.0;
     for (int k = 0; k < m->nbodies; ++k) {
         const hx_body_dof *dof = &d->dof[k];
-        const hx_frame *f = &d->state.bodies[k];
+        const hx_frame *f = &d->frames.bodies[k];
         const double *u = y + d->nq + dof->u;
         if (dof->kind == HX_DOF_GROUND)
             continue;
@@ -26,7 +26,7 @@ hx_energy hx_energy_of(hx_dynamics *d, double t, const double *y)
     }
     double elastic = 0.0;
     for (int k = 0; k < m->nforces; ++k)
-        elastic += hx_element_potential(d->s, &d->probe, &d->state, k, t);
+        elastic += hx_element_potential(d->s, &d->probe, &d->frames, k, t);
     hx_energy e;
     e.kinetic = kinetic / d->ucf;
     e.elastic = elastic;

@@ -14,10 +14,10 @@ typedef struct hx_load_share {
 } hx_load_share;
 
 /* Load k at state s and time t. */
-void hx_load_share_at(const hx_dynamics *d, const hx_state *s, double t, int k,
+void hx_load_share_at(const hx_dynamics *d, const hx_frames *s, double t, int k,
                       hx_load_share *share);
 
-/* Gravity and the model's loads at time t at d->state; returns their power. */
+/* Gravity and the model's loads at time t at d->frames; returns their power. */
 double hx_loads_apply(hx_dynamics *d, double t);
 
 #endif

@@ -49,20 +49,20 @@ void hx_routines_free(hx_dynamics *d)
 void hx_routines_set_state(hx_dynamics *d, const double *y)
 {
     for (int k = 0; k < d->ndiffs; ++k)
-        d->state.diffs[2 * k] = y[d->diffs + k];
+        d->frames.diffs[2 * k] = y[d->diffs + k];
 }
 
-/* MOTSUB of routine k at iord, at d->state's time; 0 or -1 (d->message). */
+/* MOTSUB of routine k at iord, at d->frames's time; 0 or -1 (d->message). */
 static int motion(hx_dynamics *d, int k, int iord, double *value)
 {
     hx_binding *b = d->routine_binding[k];
-    hx_call_routine(b, &d->state, iord, 0, value, NULL);
+    hx_invoke_routine(b, &d->frames, iord, 0, value, NULL);
     if (hx_dynamics_check_stop(d, b) != 0)
         return -1;
     if (!isfinite(*value))
         return hx_dynamics_fail(d, "%s %d (%s) returned a non-finite value at iord %d, t = %g",
                                 b->element, b->id, hx_binding_routine(b, 0), iord,
-                                d->state.time);
+                                d->frames.time);
     return 0;
 }
 
@@ -76,10 +76,10 @@ int hx_routines_initial(hx_dynamics *d, double *y)
         y[d->diffs + r->slot] = r->ic[0];
         /* what DIF and DIF1 answer a MOTSUB called below, and any call before
          * the first right-hand side */
-        d->state.diffs[2 * r->slot] = r->ic[0];
-        d->state.diffs[2 * r->slot + 1] = r->ic[1];
+        d->frames.diffs[2 * r->slot] = r->ic[0];
+        d->frames.diffs[2 * r->slot + 1] = r->ic[1];
     }
-    d->state.time = 0.0;
+    d->frames.time = 0.0;
     for (int body = 0; body < m->nbodies; ++body) {
         const int k = d->driver[body];
         if (k < 0)
@@ -107,14 +107,14 @@ int hx_routines_apply(hx_dynamics *d, const double *y, double *ydot)
             continue;
         hx_binding *b = d->routine_binding[k];
         double rate;
-        hx_call_routine(b, &d->state, 0, 0, &rate, NULL);
+        hx_invoke_routine(b, &d->frames, 0, 0, &rate, NULL);
         if (hx_dynamics_check_stop(d, b) != 0)
             return -1;
         if (!isfinite(rate))
             return hx_dynamics_fail(d, "%s %d (%s) returned a non-finite value at t = %g",
-                                    b->element, b->id, hx_binding_routine(b, 0), d->state.time);
+                                    b->element, b->id, hx_binding_routine(b, 0), d->frames.time);
         ydot[d->diffs + r->slot] = rate;
-        d->state.diffs[2 * r->slot + 1] = rate;
+        d->frames.diffs[2 * r->slot + 1] = rate;
     }
     for (int body = 0; body < m->nbodies; ++body) {
         const int k = d->driver[body];
@@ -183,7 +183,7 @@ int hx_routines_csv_row(FILE *f, hx_dynamics *d, const double *y)
                 return -1;
             fprintf(f, ",%.6g", y[driven] - values[0]);
         } else {
-            hx_call_routine(b, &d->state, 0, 0, values, NULL);
+            hx_invoke_routine(b, &d->frames, 0, 0, values, NULL);
             if (hx_dynamics_check_stop(d, b) != 0)
                 return -1;
             const int n = r->kind == HX_ROUTINE_REQUEST ? 8 : 1;

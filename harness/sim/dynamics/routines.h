@@ -26,14 +26,14 @@
 int hx_routines_init(hx_dynamics *d, hx_message *msg);
 void hx_routines_free(hx_dynamics *d);
 
-/* The Control_Diff states of y into d->state (DIF answers them). */
+/* The Control_Diff states of y into d->frames (DIF answers them). */
 void hx_routines_set_state(hx_dynamics *d, const double *y);
 
 /* Initial values: ic of each Control_Diff, the driven joints' coordinates
  * and rates; 0 or -1 (d->message). */
 int hx_routines_initial(hx_dynamics *d, double *y);
 
-/* At d->state: the Control_Diff rates into ydot (and d->state's DIF1), the
+/* At d->frames: the Control_Diff rates into ydot (and d->frames's DIF1), the
  * driven joints' rates and accelerations over the bodies'. 0 or -1. */
 int hx_routines_apply(hx_dynamics *d, const double *y, double *ydot);
 

@@ -20,6 +20,6 @@ int hx_dynamics_check_stop(hx_dynamics *d, const hx_binding *b)
 {
     if (hx_messages_stopped(&d->s->messages))
         return hx_dynamics_fail(d, "%s %d stopped the run (c_errmes STOP) at t = %g: %s",
-                                b->element, b->id, d->state.time, d->s->messages.stop_message);
+                                b->element, b->id, d->frames.time, d->s->messages.stop_message);
     return 0;
 }

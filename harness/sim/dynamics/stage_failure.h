@@ -1,6 +1,6 @@
 /*
  * How a stage of an evaluation (bodies.h, loads.h, element_forces.h,
- * state_elements.h, routines.h, constraints.h) and the Newton matrix's
+ * stateeqns.h, routines.h, constraints.h) and the Newton matrix's
  * blocks fail: the first failure's text in d->message, and -1 up the calls.
  */
 #ifndef HX_SIM_DYNAMICS_STAGE_FAILURE_H

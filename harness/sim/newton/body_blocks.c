@@ -16,7 +16,7 @@ void hx_newton_body_load(hx_newton_matrix *nm, int b, int col, const double dF[3
 {
     const hx_dynamics *d = nm->d;
     const hx_body_dof *dof = &d->dof[b];
-    const hx_frame *f = &d->state.bodies[b];
+    const hx_frame *f = &d->frames.bodies[b];
     const int row = d->nq + dof->u;
     double v[6];
     switch (dof->kind) {
@@ -50,7 +50,7 @@ static void free_body(hx_newton_matrix *nm, int b, const double *y)
 {
     const hx_dynamics *d = nm->d;
     const hx_body_dof *dof = &d->dof[b];
-    const hx_frame *f = &d->state.bodies[b];
+    const hx_frame *f = &d->frames.bodies[b];
     const int q = dof->q, u = d->nq + dof->u;
     const double *quat = y + q + 3, *omega = y + u + 3, *T = d->torque + 3 * b;
     const double one = 1.0;
@@ -117,7 +117,7 @@ void hx_body_blocks(hx_newton_matrix *nm, const double *y)
         hx_newton_add(nm, q, 1, u, &one); /* s' = u */
         if (dof->kind == HX_DOF_REVOLUTE) {
             /* the centre turns about the axis: r changes by a x r */
-            const hx_frame *f = &d->state.bodies[b];
+            const hx_frame *f = &d->frames.bodies[b];
             const double *F = d->force + 3 * b;
             double r[3], ar[3], aar[3];
             v3_sub(r, f->p, dof->origin);

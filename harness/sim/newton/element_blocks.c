@@ -19,7 +19,7 @@
 #include "base/vecmath.h"
 #include "sim/dynamics/stage_failure.h"
 #include "sim/newton/newton_parts.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 
 #define TWIN_TOLERANCE 1e-9
 
@@ -91,12 +91,12 @@ static int twin_agrees(const double gfo[6], const double twin[6], double *worst)
 static int twin_partials(hx_newton_matrix *nm, int k)
 {
     hx_dynamics *d = nm->d;
-    const hx_state *s = &d->state;
+    const hx_frames *s = &d->frames;
     hx_binding *b = d->force_binding[k];
     double disp[6], velo[6], field[6], worst = 0.0;
     double *dfd = nm->twin_partials + 72 * k;
     hx_force_deformation(s, k, disp, velo);
-    hx_call_twin(b, s, disp, velo, field, dfd, dfd + 36, &nm->twin_messages);
+    hx_invoke_twin(b, s, disp, velo, field, dfd, dfd + 36, &nm->twin_messages);
     nm->partial_calls++;
     const int refused = hx_messages_stopped(&nm->twin_messages);
     const int finite = hx_all_finite(dfd, 72);
@@ -188,13 +188,13 @@ static int differenced_outputs(hx_newton_matrix *nm, int k, int b, int c, double
     for (int side = 0; side < 2; ++side) {
         nm->y[c] = keep + (side == 0 ? h : -h);
         hx_newton_probe_move(nm, b, nm->y);
-        hx_call_gfosub(bind, &nm->probe, 1, 0, out[side], NULL);
+        hx_invoke_gfosub(bind, &nm->probe, 1, 0, out[side], NULL);
         nm->partial_calls++;
         if (hx_dynamics_check_stop(d, bind) != 0 || !hx_all_finite(out[side], 6)) {
             nm->y[c] = keep;
             hx_newton_probe_restore(nm, b);
             return hx_dynamics_fail(d, "%s %d returned a non-finite force at t = %g",
-                                    bind->element, bind->id, d->state.time);
+                                    bind->element, bind->id, d->frames.time);
         }
     }
     nm->y[c] = keep;
@@ -209,7 +209,7 @@ static int element_block(hx_newton_matrix *nm, int k, const double *y)
     hx_dynamics *d = nm->d;
     const hx_model *m = d->m;
     const hx_force *f = &m->forces[k];
-    const hx_state *s = &d->state;
+    const hx_frames *s = &d->frames;
     if (nm->source[k] == HX_PARTIALS_TWIN && twin_partials(nm, k) != 0)
         return 0; /* set aside: the caller runs this element again by differences */
     const hx_frame *I = &s->markers[f->i_marker], *J = &s->markers[f->j_marker];

@@ -8,7 +8,7 @@
 #include "sim/newton/newton_parts.h"
 
 /* What share puts on its i-th body: F and the torque about its centre. */
-static void wrench(const hx_load_share *share, int i, const hx_state *s, double F[3], double T[3])
+static void wrench(const hx_load_share *share, int i, const hx_frames *s, double F[3], double T[3])
 {
     double arm[3];
     v3_copy(F, share->F[i]);

@@ -57,7 +57,7 @@ void hx_newton_probe_move(hx_newton_matrix *nm, int b, const double *y)
 
 void hx_newton_probe_restore(hx_newton_matrix *nm, int b)
 {
-    const hx_state *s = &nm->d->state;
+    const hx_frames *s = &nm->d->frames;
     nm->probe.bodies[b] = s->bodies[b];
     for (int k = nm->body_marker_start[b]; k < nm->body_marker_start[b + 1]; ++k)
         nm->probe.markers[nm->body_markers[k]] = s->markers[nm->body_markers[k]];
@@ -73,7 +73,7 @@ void hx_newton_applied_force(hx_newton_matrix *nm, const hx_applied_force *a, in
     const double *dth_A = b >= 0 && b == a->ba ? mo->dth : none->dth;
     hx_motion point = still;
     if (b >= 0 && b == a->bi)
-        hx_point_motion(&d->state.bodies[b], mo, a->I, &point);
+        hx_point_motion(&d->frames.bodies[b], mo, a->I, &point);
     double dF[3], dT[3], tmp[3];
     m3_apply(dF, a->R_A, dout);
     m3_apply(dT, a->R_A, dout + 3);
@@ -88,7 +88,7 @@ void hx_newton_applied_force(hx_newton_matrix *nm, const hx_applied_force *a, in
         const double sign = side == 0 ? 1.0 : -1.0;
         /* torque about the body's centre: (p_I - p_body) x F + T */
         double arm[3], darm[3], torque[3], force[3];
-        v3_sub(arm, a->I->p, d->state.bodies[body].p);
+        v3_sub(arm, a->I->p, d->frames.bodies[body].p);
         v3_copy(darm, point.dp);
         if (b == body)
             v3_sub(darm, darm, mo->dp);
@@ -138,7 +138,7 @@ int hx_newton_matrix_init(hx_newton_matrix *nm, hx_dynamics *d, hx_message *msg)
     nm->y = calloc(3 * (size_t)nm->n + 1, sizeof(double));
     nm->coupled = calloc((size_t)d->nu + 1, sizeof(int));
     int ok = nm->y != NULL && nm->coupled != NULL && body_marker_lists(nm) == 0 &&
-             hx_state_clone(&nm->probe, &d->state) == 0;
+             hx_frames_clone(&nm->probe, &d->frames) == 0;
     if (ok) {
         nm->f_plus = nm->y + nm->n;
         nm->f_minus = nm->f_plus + nm->n;
@@ -149,7 +149,7 @@ int hx_newton_matrix_init(hx_newton_matrix *nm, hx_dynamics *d, hx_message *msg)
         nm->coupled_at = calloc(k + 1, sizeof(int));
         ok = nm->projector != NULL && nm->coupled_at != NULL;
     }
-    if (!ok || hx_element_blocks_init(nm, msg) != 0 || hx_state_blocks_init(nm, msg) != 0 ||
+    if (!ok || hx_element_blocks_init(nm, msg) != 0 || hx_stateeqn_blocks_init(nm, msg) != 0 ||
         hx_newton_pattern(nm) != 0) {
         hx_newton_matrix_free(nm);
         return hx_fail(msg, "out of memory");
@@ -163,10 +163,10 @@ void hx_newton_matrix_free(hx_newton_matrix *nm)
     free(nm->source);
     free(nm->why);
     free(nm->twin_partials);
-    hx_state_free(&nm->probe);
+    hx_frames_free(&nm->probe);
     free(nm->body_markers);
     free(nm->body_marker_start);
-    hx_state_blocks_free(nm);
+    hx_stateeqn_blocks_free(nm);
     free(nm->coupled);
     free(nm->coupled_at);
     free(nm->projector);
@@ -196,12 +196,12 @@ int hx_newton_matrix_build(hx_newton_matrix *nm, double t, const double *y, doub
     nm->values = values;
     memset(values, 0, sizeof(double) * (size_t)nm->pattern.nnz);
     memcpy(nm->y, y, sizeof(double) * (size_t)nm->n);
-    hx_state_copy(&nm->probe, &d->state);
+    hx_frames_copy(&nm->probe, &d->frames);
     hx_body_blocks(nm, y);
     /* the element calls below may set the dynamics' state: the element
      * blocks, which read it, come first */
     if (hx_element_blocks(nm, t, y) != 0 || hx_load_blocks(nm, t, y) != 0 ||
-        hx_state_blocks(nm, t, y) != 0 || hx_coupler_blocks(nm, t, y) != 0 ||
+        hx_stateeqn_blocks(nm, t, y) != 0 || hx_coupler_blocks(nm, t, y) != 0 ||
         hx_routine_blocks(nm, t, y) != 0)
         return -1;
     return 0;
@@ -220,5 +220,5 @@ void hx_newton_matrix_describe(const hx_newton_matrix *nm, char *text, size_t si
             len += snprintf(text + len, size - (size_t)len, "\n    %s %d by differences: %s",
                             nm->d->force_binding[k]->element, nm->d->force_binding[k]->id,
                             nm->why + k * HX_NEWTON_WHY);
-    hx_state_blocks_describe(nm, text, size);
+    hx_stateeqn_blocks_describe(nm, text, size);
 }

@@ -14,7 +14,7 @@
  *     both analytic in the motions of its bodies (body_motion.h), into the
  *     blocks of the bodies it joins;
  *   - each load (load_blocks.c) by differences of that load alone;
- *   - each Force_StateEqn (state_blocks.c): its partials (YFOXX..YFOYU, or
+ *   - each Force_StateEqn (stateeqn_blocks.c): its partials (YFOXX..YFOYU, or
  *     differences of YFOSUB) with its inputs' slopes, by differences of the
  *     harness's measures on the bodies they measure;
  *   - the couplers (coupler_blocks.c): the accelerations they project, P
@@ -53,10 +53,10 @@ typedef struct hx_newton_matrix {
     hx_partials_source *source; /* per force element */
     char *why;                  /* per element, HX_NEWTON_WHY: why differences */
     double *twin_partials;      /* 72 per force element: the twins' dfddis, dfdvel */
-    hx_state probe;             /* the state at y with one body moved (differences) */
+    hx_frames probe;             /* the state at y with one body moved (differences) */
     int *body_markers, *body_marker_start; /* each body's tracked markers */
-    /* Force_StateEqn elements (state_blocks.c) */
-    struct hx_state_blocks *states;
+    /* Force_StateEqn elements (stateeqn_blocks.c) */
+    struct hx_stateeqn_blocks *states;
     /* couplers (coupler_blocks.c) */
     int ncoupled;               /* coupled velocities */
     int *coupled;               /* their indices into u */

@@ -46,10 +46,10 @@ void hx_body_blocks(hx_newton_matrix *nm, const double *y);
 int hx_element_blocks_init(hx_newton_matrix *nm, hx_message *msg);
 int hx_element_blocks(hx_newton_matrix *nm, double t, const double *y);
 int hx_load_blocks(hx_newton_matrix *nm, double t, const double *y);
-int hx_state_blocks_init(hx_newton_matrix *nm, hx_message *msg);
-void hx_state_blocks_free(hx_newton_matrix *nm);
-int hx_state_blocks(hx_newton_matrix *nm, double t, const double *y);
-void hx_state_blocks_describe(const hx_newton_matrix *nm, char *text, size_t size);
+int hx_stateeqn_blocks_init(hx_newton_matrix *nm, hx_message *msg);
+void hx_stateeqn_blocks_free(hx_newton_matrix *nm);
+int hx_stateeqn_blocks(hx_newton_matrix *nm, double t, const double *y);
+void hx_stateeqn_blocks_describe(const hx_newton_matrix *nm, char *text, size_t size);
 int hx_coupler_blocks(hx_newton_matrix *nm, double t, const double *y);
 /* Control_Diff rows and driven joints' rows (routine_blocks.c): last, as it
  * moves the dynamics' state and puts it back. */
@@ -67,6 +67,6 @@ int hx_newton_pattern(hx_newton_matrix *nm);
 
 /* The bodies (non-ground, distinct) Force_StateEqn k measures its inputs on;
  * returns their count, at most max. */
-int hx_state_input_bodies(const hx_dynamics *d, int k, int *bodies, int max);
+int hx_stateeqn_input_bodies(const hx_dynamics *d, int k, int *bodies, int max);
 
 #endif

@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sim/dynamics/state_elements.h"
+#include "sim/dynamics/stateeqns.h"
 #include "sim/newton/newton_parts.h"
 
 typedef struct pairs {
@@ -70,10 +70,10 @@ static int body_of(const hx_model *m, int marker)
 static void state_element(pairs *p, const hx_dynamics *d, int k)
 {
     const hx_model *m = d->m;
-    const hx_state_eqn *f = &m->state_eqns[k];
-    const int x0 = d->stateful->offset[k], ns = f->nstate;
+    const hx_stateeqn *f = &m->stateeqns[k];
+    const int x0 = d->stateeqns->offset[k], ns = f->nstate;
     int measured[32];
-    const int nmeasured = hx_state_input_bodies(d, k, measured, 32);
+    const int nmeasured = hx_stateeqn_input_bodies(d, k, measured, 32);
     const int out[2] = {body_of(m, f->i_marker), body_of(m, f->j_marker)};
     int geometry[35];
     memcpy(geometry, measured, sizeof(int) * (size_t)nmeasured);
@@ -156,7 +156,7 @@ int hx_newton_pattern(hx_newton_matrix *nm)
         const int reacted = l->kind != HX_LOAD_VECTOR && !l->action_only;
         bodies_by_bodies(&p, d, bodies, reacted ? 2 : 1, bodies, 2);
     }
-    for (int k = 0; k < m->nstate_eqns; ++k)
+    for (int k = 0; k < m->nstateeqns; ++k)
         state_element(&p, d, k);
     for (int k = 0; k < m->nroutines; ++k)
         if (m->routines[k].kind == HX_ROUTINE_DIFF) {

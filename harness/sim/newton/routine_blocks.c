@@ -56,7 +56,7 @@ static int diff_rate(hx_newton_matrix *nm, int k, double t, const double *y, dou
     hx_dynamics *d = nm->d;
     hx_dynamics_set_state(d, t, y);
     hx_binding *b = d->routine_binding[k];
-    hx_call_routine(b, &d->state, 1, 0, rate, NULL); /* dflag: a difference */
+    hx_invoke_routine(b, &d->frames, 1, 0, rate, NULL); /* dflag: a difference */
     nm->partial_calls++;
     return hx_dynamics_check_stop(d, b);
 }

@@ -4,8 +4,8 @@
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/routines.h"
 #include "sim/simulation/simulation.h"
-#include "sim/dynamics/state_elements.h"
-#include "state/measures.h"
+#include "sim/dynamics/stateeqns.h"
+#include "frames/measures.h"
 
 void hx_csv_header(FILE *f, const hx_dynamics *d)
 {
@@ -38,7 +38,7 @@ void hx_csv_header(FILE *f, const hx_dynamics *d)
         for (int j = 0; j < 6; ++j)
             fprintf(f, ",force%d.%s", id, loads[j]);
     }
-    hx_state_elements_csv_header(f, d);
+    hx_stateeqns_csv_header(f, d);
     hx_routines_csv_header(f, d);
     fprintf(f, ",energy,dissipated,phi,phidot\n");
 }
@@ -61,7 +61,7 @@ int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, const hx_ener
         const hx_body_dof *dof = &d->dof[k];
         const double *u = y + d->nq + dof->u;
         if (dof->kind == HX_DOF_FREE) {
-            const hx_frame *fr = &d->state.bodies[k];
+            const hx_frame *fr = &d->frames.bodies[k];
             for (int j = 0; j < 7; ++j)
                 fprintf(f, ",%.12g", y[dof->q + j]);
             fprintf(f, ",%.12g,%.12g,%.12g,%.12g,%.12g,%.12g", u[0], u[1], u[2], fr->w[0],
@@ -79,13 +79,13 @@ int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, const hx_ener
     }
     for (int k = 0; k < m->nforces; ++k) {
         double disp[6], velo[6];
-        hx_force_deformation(&d->state, k, disp, velo);
+        hx_force_deformation(&d->frames, k, disp, velo);
         for (int j = 0; j < 6; ++j)
             fprintf(f, ",%.12g", disp[j]);
         for (int j = 0; j < 6; ++j)
             fprintf(f, ",%.12g", d->element_load[6 * k + j]);
     }
-    hx_state_elements_csv_row(f, d, y);
+    hx_stateeqns_csv_row(f, d, y);
     if (hx_routines_csv_row(f, d, y) != 0)
         return -1;
     fprintf(f, ",%.15g,%.15g,%.3g,%.3g\n", energy->total, hx_dissipated(energy, energy0), phi,

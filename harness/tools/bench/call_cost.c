@@ -9,7 +9,7 @@
 #include "base/clock.h"
 
 #include "host/state_inputs.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 #include "tools/bench/call_floor.h"
 #include "tools/check/coupler_ranges.h"
 
@@ -134,7 +134,7 @@ static void run_state(void *ctx, long calls)
  * initial states and its inputs at the model's state, each wobbled a little. */
 static state_bench *state_points(hx_session *s, hx_binding *b, int which)
 {
-    const hx_state_eqn *f = &s->model->state_eqns[b->index];
+    const hx_stateeqn *f = &s->model->stateeqns[b->index];
     const int ns = f->nstate, ni = f->ninput;
     const size_t columns = (size_t)(ns + ni);
     const size_t size = (size_t)SAMPLE_POINTS * columns + (size_t)(ns + 6) * columns + 7;
@@ -145,7 +145,7 @@ static state_bench *state_points(hx_session *s, hx_binding *b, int which)
                         which > 0 ? b->state_partial[which - 1] : NULL, b->id, b->npar, ns, ni,
                         b->par, 0.0};
     double *input = sb->data + SAMPLE_POINTS * ns;
-    hx_state_eqn_inputs(&s->state, b->index, input);
+    hx_stateeqn_inputs(&s->frames, b->index, input);
     for (int k = 0; k < SAMPLE_POINTS; ++k) {
         for (int i = 0; i < ns; ++i)
             sb->data[k * ns + i] = f->initial[i] * (1.0 + 1e-3 * ((k * 5 + i) % 11));
@@ -175,7 +175,7 @@ static void coupler_points(hx_session *s, hx_binding *b, int n, coupler_bench *c
     const hx_coupler *c = &s->model->couplers[b->index];
     double q0[3] = {0}, lo[3] = {0}, hi[3] = {0};
     for (int i = 0; i < n; ++i)
-        q0[i] = hx_joint_coordinate(&s->state, c->joint[i]);
+        q0[i] = hx_joint_coordinate(&s->frames, c->joint[i]);
     hx_coupler_ranges(s->model, b->par, b->npar, n, q0, lo, hi);
     for (int i = 0; i < n; ++i)
         for (int k = 0; k < SAMPLE_POINTS; ++k)
@@ -185,7 +185,7 @@ static void coupler_points(hx_session *s, hx_binding *b, int n, coupler_bench *c
 static void field_points(hx_session *s, hx_binding *b, fiesub_bench *fb)
 {
     double disp[6], velo[6];
-    hx_force_deformation(&s->state, b->index, disp, velo);
+    hx_force_deformation(&s->frames, b->index, disp, velo);
     for (int k = 0; k < SAMPLE_POINTS; ++k)
         for (int i = 0; i < 6; ++i) {
             const double wobble = 1.0 + 1e-3 * ((k * 7 + i) % 13);
@@ -298,10 +298,10 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
                 goto out_of_memory;
             contexts[ncontexts++] = eval;
             double out[6];
-            hx_binding_call_init(b, &dep, 0, &s->state, 1);
-            hx_call_gfosub(b, &s->state, 0, 1, out, &dep);
-            hx_binding_call_init(b, eval, 0, &s->state, 0);
-            hx_call_gfosub(b, &s->state, 0, 0, out, eval);
+            hx_binding_call_init(b, &dep, 0, &s->frames, 1);
+            hx_invoke_gfosub(b, &s->frames, 0, 1, out, &dep);
+            hx_binding_call_init(b, eval, 0, &s->frames, 0);
+            hx_invoke_gfosub(b, &s->frames, 0, 0, out, eval);
             gfosub_bench *gb = calloc(1, sizeof *gb);
             if (gb == NULL)
                 goto out_of_memory;

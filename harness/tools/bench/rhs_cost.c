@@ -6,8 +6,8 @@
 #include <string.h>
 
 #include "host/state_inputs.h"
-#include "sim/dynamics/state_elements.h"
-#include "state/measures.h"
+#include "sim/dynamics/stateeqns.h"
+#include "frames/measures.h"
 
 /* ---- stand-in entries: replay what the real entry returned -------------------- */
 
@@ -77,17 +77,17 @@ typedef struct saved_entries {
 } saved_entries;
 
 /* A Force_StateEqn's rates and outputs at d's state, states from y, into out. */
-static int record_state_eqn(hx_dynamics *d, hx_binding *b, const double *y, double *out)
+static int record_stateeqn(hx_dynamics *d, hx_binding *b, const double *y, double *out)
 {
-    const hx_state_eqn *f = &d->m->state_eqns[b->index];
+    const hx_stateeqn *f = &d->m->stateeqns[b->index];
     if (f->nstate + 6 > 81)
         return -1; /* more states than a stand-in replays */
     double *work = malloc(sizeof(double) * (size_t)(f->nstate + f->ninput + 1));
     if (work == NULL)
         return -1;
-    memcpy(work, y + d->stateful->offset[b->index], sizeof(double) * (size_t)f->nstate);
-    hx_state_eqn_inputs(&d->state, b->index, work + f->nstate);
-    hx_call_yfosub(b, &d->state, work, work + f->nstate, 0, 0, out, out + f->nstate, NULL);
+    memcpy(work, y + d->stateeqns->offset[b->index], sizeof(double) * (size_t)f->nstate);
+    hx_stateeqn_inputs(&d->frames, b->index, work + f->nstate);
+    hx_invoke_yfosub(b, &d->frames, work, work + f->nstate, 0, 0, out, out + f->nstate, NULL);
     free(work);
     return 0;
 }
@@ -96,7 +96,7 @@ static int record_state_eqn(hx_dynamics *d, hx_binding *b, const double *y, doub
 static int record_standins(hx_session *s, hx_dynamics *d, const double *y, standin **records)
 {
     double *ydot = calloc((size_t)d->n, sizeof(double));
-    if (ydot == NULL || hx_dynamics_rhs(d, 0.0, y, ydot) != 0) { /* d->state is y's */
+    if (ydot == NULL || hx_dynamics_rhs(d, 0.0, y, ydot) != 0) { /* d->frames is y's */
         free(ydot);
         return -1;
     }
@@ -112,18 +112,18 @@ static int record_standins(hx_session *s, hx_dynamics *d, const double *y, stand
             const hx_coupler *c = &s->model->couplers[b->index];
             double disp[3];
             for (int i = 0; i < c->njoints; ++i)
-                disp[i] = hx_joint_coordinate(&d->state, c->joint[i]);
+                disp[i] = hx_joint_coordinate(&d->frames, c->joint[i]);
             for (int which = 0; which < 3; ++which)
-                hx_call_coupler(b, which, &d->state, disp, c->njoints, 0, st->out[which], NULL);
+                hx_invoke_coupler(b, which, &d->frames, disp, c->njoints, 0, st->out[which], NULL);
         } else if (b->kind == HX_BIND_GFOSUB) {
-            hx_call_gfosub(b, &d->state, 0, 0, st->out[0], NULL);
+            hx_invoke_gfosub(b, &d->frames, 0, 0, st->out[0], NULL);
         } else if (b->kind == HX_BIND_YFOSUB) {
-            if (record_state_eqn(d, b, y, st->out[0]) != 0)
+            if (record_stateeqn(d, b, y, st->out[0]) != 0)
                 return -1;
         } else {
             double disp[6], velo[6];
-            hx_force_deformation(&d->state, b->index, disp, velo);
-            hx_call_fiesub(b, &d->state, disp, velo, 0, 0, st->out[0], st->out[0] + 6,
+            hx_force_deformation(&d->frames, b->index, disp, velo);
+            hx_invoke_fiesub(b, &d->frames, disp, velo, 0, 0, st->out[0], st->out[0] + 6,
                            st->out[0] + 42, NULL);
         }
     }
@@ -209,7 +209,7 @@ static void run_standins(void *ctx, long calls)
             else if (bd->kind == HX_BIND_GFOSUB)
                 standin_gfosub(&id, &t, par, &npar, &flag, &flag, out);
             else if (bd->kind == HX_BIND_YFOSUB) {
-                const hx_state_eqn *f = &b->s->model->state_eqns[bd->index];
+                const hx_stateeqn *f = &b->s->model->stateeqns[bd->index];
                 int ns = f->nstate, ni = 0, no = 6;
                 standin_yfosub(&id, &t, par, &npar, &flag, &flag, &ns, states, &ni, disp, &no,
                                out, out + ns);

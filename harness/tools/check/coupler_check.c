@@ -12,7 +12,7 @@
 
 #include "base/finite.h"
 #include "base/linalg.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 #include "tools/check/checks.h"
 #include "tools/check/coupler_ranges.h"
 #include "tools/check/derivative_check.h"
@@ -22,14 +22,14 @@
 
 typedef struct coupler_sampler {
     hx_binding *b;
-    const hx_state *s;
+    const hx_frames *s;
     int n, which;
 } coupler_sampler;
 
 static int sample(void *ctx, const double *x, double *out)
 {
     const coupler_sampler *cs = ctx;
-    hx_call_coupler(cs->b, cs->which, cs->s, x, cs->n, 0, out, NULL);
+    hx_invoke_coupler(cs->b, cs->which, cs->s, x, cs->n, 0, out, NULL);
     if (cs->b->messages != NULL && hx_messages_stopped(cs->b->messages))
         return -1;
     return hx_all_finite(out, cs->which == 0 ? 1 : cs->which == 1 ? cs->n : cs->n * cs->n) ? 0 : -1;
@@ -71,10 +71,10 @@ int hx_check_coupler(hx_session *s, hx_binding *b, FILE *out)
     const int n = c->njoints;
     double q0[3] = {0}, lo[3] = {0}, hi[3] = {0}, points[COUPLER_POINTS][3];
     for (int i = 0; i < n; ++i)
-        q0[i] = hx_joint_coordinate(&s->state, c->joint[i]);
+        q0[i] = hx_joint_coordinate(&s->frames, c->joint[i]);
     const int layout = hx_coupler_ranges(s->model, b->par, b->npar, n, q0, lo, hi);
     make_points(n, lo, hi, points);
-    coupler_sampler value = {b, &s->state, n, 0}, slope = {b, &s->state, n, 1};
+    coupler_sampler value = {b, &s->frames, n, 0}, slope = {b, &s->frames, n, 1};
     hx_worst first = {0}, second = {0};
     char worst_first_at[128] = "", worst_second_at[128] = "";
     for (int k = 0; k < COUPLER_POINTS; ++k) {
@@ -106,7 +106,7 @@ int hx_check_coupler(hx_session *s, hx_binding *b, FILE *out)
     }
     for (int k = 0; k < COUPLER_POINTS; ++k) {
         double *x = points[k], hess[9], grad[3];
-        coupler_sampler curvature = {b, &s->state, n, 2};
+        coupler_sampler curvature = {b, &s->frames, n, 2};
         if (sample(&curvature, x, hess) != 0 || sample(&slope, x, grad) != 0) {
             fprintf(out, "  %s %d: %s did not return finite values\n", b->element, b->id,
                     b->names[2]);

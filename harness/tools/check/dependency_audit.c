@@ -19,7 +19,7 @@
 #include "base/vecmath.h"
 #include "host/evaluate.h"
 #include "sim/dynamics/element_probe.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 #include "tools/check/checks.h"
 #include "tools/check/element_samples.h"
 
@@ -27,7 +27,7 @@
 /* Components of one query whose use is recorded: an ARRAY may be longer. */
 #define USED_BITS 32
 
-static int outputs_at(hx_binding *b, const hx_state *s, hx_call *call, double out[MAX_OUT])
+static int outputs_at(hx_binding *b, const hx_frames *s, hx_call *call, double out[MAX_OUT])
 {
     hx_call local;
     if (call == NULL) {
@@ -35,9 +35,9 @@ static int outputs_at(hx_binding *b, const hx_state *s, hx_call *call, double ou
         call = &local;
     }
     if (b->kind == HX_BIND_GFOSUB)
-        hx_call_gfosub(b, s, 0, 0, out, call);
+        hx_invoke_gfosub(b, s, 0, 0, out, call);
     else
-        hx_call_routine(b, s, 0, 0, out, call);
+        hx_invoke_routine(b, s, 0, 0, out, call);
     return hx_messages_stopped(b->messages) ? -1 : 0;
 }
 
@@ -70,7 +70,7 @@ static void perturb_body(hx_frame *f, int c, double delta)
 typedef struct audit {
     hx_session *s;
     hx_binding *b;
-    hx_state base, moved;
+    hx_frames base, moved;
     int nout;           /* outputs compared */
     const char *what;   /* "force", or "output" for the routines that are not forces */
     int failures, states, checked, influencing, unreached;
@@ -167,9 +167,9 @@ static int audit_states(audit *a, const double scale[12], const double *out0)
         if (m->bodies[k].is_ground)
             continue;
         for (int c = 0; c < 12; ++c) {
-            hx_state_copy(&a->moved, &a->base);
+            hx_frames_copy(&a->moved, &a->base);
             perturb_body(&a->moved.bodies[k], c, 1e-5 * scale[c < 3 ? 0 : c < 6 ? 3 : c < 9 ? 6 : 9]);
-            hx_state_update(&a->moved);
+            hx_frames_update(&a->moved);
             snprintf(what, sizeof what, "body %d's %s", m->bodies[k].id, states[c]);
             if (judge_change(a, out0, what) != 0)
                 return -1;
@@ -179,7 +179,7 @@ static int audit_states(audit *a, const double scale[12], const double *out0)
         const hx_routine *r = &m->routines[k];
         if (r->kind != HX_ROUTINE_DIFF)
             continue;
-        hx_state_copy(&a->moved, &a->base);
+        hx_frames_copy(&a->moved, &a->base);
         double *value = &a->moved.diffs[2 * r->slot];
         *value += 1e-5 * (1.0 + fabs(*value));
         snprintf(what, sizeof what, "Control_Diff %d's state", r->id);
@@ -220,18 +220,18 @@ static void place_sample(audit *a, int sample, double scale[12])
     hx_session *s = a->s;
     const hx_model *m = s->model;
     if (a->b->kind != HX_BIND_GFOSUB) {
-        hx_sample_model_state(s, sample, &a->base, scale);
+        hx_sample_model_frames(s, sample, &a->base, scale);
         return;
     }
     const hx_force *f = &m->forces[a->b->index];
     double disp[6], velo[6];
-    hx_sample_element_state(s, a->b->index, sample, disp, velo, scale);
-    hx_place_relative(&s->state, &a->base, f->i_marker, f->j_marker, disp, velo);
+    hx_sample_force_deformation(s, a->b->index, sample, disp, velo, scale);
+    hx_place_relative(&s->frames, &a->base, f->i_marker, f->j_marker, disp, velo);
     for (int k = 0; k < m->nbodies; ++k)
         if (!m->bodies[k].is_ground && k != m->markers[f->i_marker].body)
             for (int c = 6; c < 12; ++c)
                 perturb_body(&a->base.bodies[k], c, 0.3 * scale[c < 9 ? 6 : 9]);
-    hx_state_update(&a->base);
+    hx_frames_update(&a->base);
 }
 
 /* The closing line: what was declared, what moved the outputs, what was used. */
@@ -269,8 +269,8 @@ static void summarize(audit *a, double t_last)
 
 static void audit_free(audit *a)
 {
-    hx_state_free(&a->base);
-    hx_state_free(&a->moved);
+    hx_frames_free(&a->base);
+    hx_frames_free(&a->moved);
     free(a->answer0);
     free(a->answer1);
 }
@@ -286,8 +286,8 @@ int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
     const size_t capacity = (size_t)hx_query_capacity(m);
     a.answer0 = malloc(sizeof(double) * capacity);
     a.answer1 = malloc(sizeof(double) * capacity);
-    if (a.answer0 == NULL || a.answer1 == NULL || hx_state_clone(&a.base, &s->state) != 0 ||
-        hx_state_clone(&a.moved, &s->state) != 0) {
+    if (a.answer0 == NULL || a.answer1 == NULL || hx_frames_clone(&a.base, &s->frames) != 0 ||
+        hx_frames_clone(&a.moved, &s->frames) != 0) {
         fprintf(out, "  %s %d: FAIL: out of memory for the dependency audit\n", b->element, b->id);
         audit_free(&a);
         return 1;

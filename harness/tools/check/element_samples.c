@@ -5,7 +5,7 @@
 
 #include "base/vecmath.h"
 #include "host/state_inputs.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 
 double hx_jitter(unsigned *seed)
 {
@@ -40,7 +40,7 @@ static double amplitude_of(int k)
     return 0.5 + 9.5 * (k - 1) / (HX_FORCE_SAMPLES - 2.0);
 }
 
-void hx_sample_element_state(const hx_session *s, int force, int k, double disp[6],
+void hx_sample_force_deformation(const hx_session *s, int force, int k, double disp[6],
                              double velo[6], double scale[12])
 {
     double length, angle, rate;
@@ -49,7 +49,7 @@ void hx_sample_element_state(const hx_session *s, int force, int k, double disp[
         scale[i] = i < 3 ? length : angle;
         scale[6 + i] = scale[i] * rate;
     }
-    hx_force_deformation(&s->state, force, disp, velo);
+    hx_force_deformation(&s->frames, force, disp, velo);
     if (k == 0)
         return;
     const double base_twist = disp[5];
@@ -67,7 +67,7 @@ void hx_sample_element_state(const hx_session *s, int force, int k, double disp[
     }
 }
 
-void hx_sample_model_state(const hx_session *s, int k, hx_state *out, double scale[12])
+void hx_sample_model_frames(const hx_session *s, int k, hx_frames *out, double scale[12])
 {
     const hx_model *m = s->model;
     double length, angle, rate;
@@ -77,7 +77,7 @@ void hx_sample_model_state(const hx_session *s, int k, hx_state *out, double sca
         scale[6 + i] = scale[i] * rate;
     }
     const double time = out->time;
-    hx_state_copy(out, &s->state);
+    hx_frames_copy(out, &s->frames);
     out->time = time;
     if (k == 0)
         return;
@@ -103,7 +103,7 @@ void hx_sample_model_state(const hx_session *s, int k, hx_state *out, double sca
     }
     for (int d = 0; d < 2 * m->nroutines_of[HX_ROUTINE_DIFF]; ++d)
         out->diffs[d] += 0.01 * amplitude * (1.0 + fabs(out->diffs[d])) * hx_jitter(&seed);
-    hx_state_update(out);
+    hx_frames_update(out);
 }
 
 /* A measure's typical step: lengths, angles and their rates; 1 for a number. */
@@ -118,18 +118,18 @@ static double input_scale(const hx_variable *v, double length, double angle, dou
     }
 }
 
-void hx_sample_state_element(const hx_session *s, int element, int k, double *states,
+void hx_sample_stateeqn_states(const hx_session *s, int element, int k, double *states,
                              double *inputs, double *scale)
 {
     const hx_model *m = s->model;
-    const hx_state_eqn *f = &m->state_eqns[element];
+    const hx_stateeqn *f = &m->stateeqns[element];
     double length, angle, rate;
     typical_steps(m, &length, &angle, &rate);
     for (int i = 0; i < f->nstate; ++i) {
         states[i] = f->initial[i];
         scale[i] = 1e-3 * length;
     }
-    hx_state_eqn_inputs(&s->state, element, inputs);
+    hx_stateeqn_inputs(&s->frames, element, inputs);
     for (int i = 0; i < f->ninput; ++i)
         scale[f->nstate + i] = input_scale(&m->variables[f->inputs[i]], length, angle, rate);
     if (k == 0)

@@ -18,7 +18,7 @@
 
 /* Deformation and rate of sample k of force element `force`; scale receives
  * the typical step of each of the twelve. */
-void hx_sample_element_state(const hx_session *s, int force, int k, double disp[6],
+void hx_sample_force_deformation(const hx_session *s, int force, int k, double disp[6],
                              double velo[6], double scale[12]);
 
 /* Sample k of Force_StateEqn `element`: its states (IC at sample 0) and its
@@ -28,7 +28,7 @@ void hx_sample_element_state(const hx_session *s, int force, int k, double disp[
  * an angle, their rates over 10 ms, 1 for a number), the states' 0.01 mm
  * (or 1e-5 of the model's length unit without units), as the harness does
  * not know what a state is. */
-void hx_sample_state_element(const hx_session *s, int element, int k, double *states,
+void hx_sample_stateeqn_states(const hx_session *s, int element, int k, double *states,
                              double *inputs, double *scale);
 
 /* Sample k of the whole model, for the routines that ask the host for any
@@ -36,8 +36,8 @@ void hx_sample_state_element(const hx_session *s, int element, int k, double *st
  * moving body's position, orientation, velocity and angular velocity moved
  * by 0.5 to 10 typical steps, and every Control_Diff state by as many
  * hundredths of 1 + |ic|; scale receives the typical steps of a body's twelve
- * states (as hx_sample_element_state's). The state's time is left as it is. */
-void hx_sample_model_state(const hx_session *s, int k, hx_state *out, double scale[12]);
+ * states (as hx_sample_force_deformation's). The state's time is left as it is. */
+void hx_sample_model_frames(const hx_session *s, int k, hx_frames *out, double scale[12]);
 
 /* One second in the model's time unit. */
 double hx_model_second(const hx_model *m);

@@ -25,7 +25,7 @@
 #include <unistd.h>
 
 #include "sim/dynamics/element_probe.h"
-#include "state/measures.h"
+#include "frames/measures.h"
 #include "host/evaluate.h"
 #include "tools/check/checks.h"
 #include "tools/check/coupler_ranges.h"
@@ -40,7 +40,7 @@ enum { EARLIER, AUDITED, LATER, TIMES };
 typedef struct probe {
     hx_session *s;
     hx_binding *b;
-    hx_state state;
+    hx_frames frames;
     /* A and B: joint displacements, deformation and rate, or a state
      * equation's states and inputs */
     double input[2][MAX_IN];
@@ -83,16 +83,16 @@ static int evaluate(probe *p, int which, double t, int dflag, double *out)
     memset(out, 0, sizeof(double) * MAX_OUT);
     if (b->kind == HX_BIND_GFOSUB) {
         const hx_force *f = &p->s->model->forces[b->index];
-        hx_place_relative(&p->s->state, &p->state, f->i_marker, f->j_marker, p->input[which],
+        hx_place_relative(&p->s->frames, &p->frames, f->i_marker, f->j_marker, p->input[which],
                           p->input[which] + 6);
     } else if (b->kind >= HX_BIND_REQSUB) { /* the whole model's state is its input */
         double scale[12];
-        hx_sample_model_state(p->s, which == INPUT_A ? 3 : 8, &p->state, scale);
+        hx_sample_model_frames(p->s, which == INPUT_A ? 3 : 8, &p->frames, scale);
     }
     double copy[MAX_IN]; /* a state equation may write into its arguments */
     memcpy(copy, p->input[which], sizeof copy);
-    p->state.time = t;
-    hx_binding_evaluate(b, &p->state, copy, 0, dflag, out);
+    p->frames.time = t;
+    hx_binding_evaluate(b, &p->frames, copy, 0, dflag, out);
     return hx_messages_stopped(b->messages) ? -1 : 0;
 }
 
@@ -113,7 +113,7 @@ static void choose_inputs(probe *p)
         const hx_coupler *c = &m->couplers[b->index];
         double q0[3] = {0}, lo[3] = {0}, hi[3] = {0};
         for (int i = 0; i < c->njoints; ++i)
-            q0[i] = hx_joint_coordinate(&p->s->state, c->joint[i]);
+            q0[i] = hx_joint_coordinate(&p->s->frames, c->joint[i]);
         hx_coupler_ranges(m, b->par, b->npar, c->njoints, q0, lo, hi);
         for (int i = 0; i < c->njoints; ++i) {
             p->input[INPUT_A][i] = lo[i] + 0.31 * (hi[i] - lo[i]);
@@ -128,16 +128,16 @@ static void choose_inputs(probe *p)
         return;
     }
     if (b->kind == HX_BIND_YFOSUB) {
-        const hx_state_eqn *f = &m->state_eqns[b->index];
-        hx_sample_state_element(p->s, b->index, 3, p->input[INPUT_A], p->input[INPUT_A] + f->nstate,
+        const hx_stateeqn *f = &m->stateeqns[b->index];
+        hx_sample_stateeqn_states(p->s, b->index, 3, p->input[INPUT_A], p->input[INPUT_A] + f->nstate,
                                 scale);
-        hx_sample_state_element(p->s, b->index, 8, p->input[INPUT_B], p->input[INPUT_B] + f->nstate,
+        hx_sample_stateeqn_states(p->s, b->index, 8, p->input[INPUT_B], p->input[INPUT_B] + f->nstate,
                                 scale);
         p->ninput = f->nstate + f->ninput;
         return;
     }
-    hx_sample_element_state(p->s, b->index, 3, p->input[INPUT_A], p->input[INPUT_A] + 6, scale);
-    hx_sample_element_state(p->s, b->index, 8, p->input[INPUT_B], p->input[INPUT_B] + 6, scale);
+    hx_sample_force_deformation(p->s, b->index, 3, p->input[INPUT_A], p->input[INPUT_A] + 6, scale);
+    hx_sample_force_deformation(p->s, b->index, 8, p->input[INPUT_B], p->input[INPUT_B] + 6, scale);
     p->ninput = 12;
 }
 
@@ -250,14 +250,14 @@ int hx_audit_history(hx_session *s, hx_binding *b, FILE *out)
 {
     probe p = {.s = s, .b = b};
     if (b->kind == HX_BIND_YFOSUB) {
-        const hx_state_eqn *f = &s->model->state_eqns[b->index];
+        const hx_stateeqn *f = &s->model->stateeqns[b->index];
         if (f->nstate + f->ninput > MAX_IN || f->nstate + 6 > MAX_OUT) {
             fprintf(out, "  %s %d: history audit: %d states and %d inputs are more than it"
                     " compares (%d): FAIL\n", b->element, b->id, f->nstate, f->ninput, MAX_IN);
             return 1;
         }
     }
-    if (hx_state_clone(&p.state, &s->state) != 0)
+    if (hx_frames_clone(&p.frames, &s->frames) != 0)
         return 1;
     choose_inputs(&p);
     choose_times(&p);
@@ -274,7 +274,7 @@ int hx_audit_history(hx_session *s, hx_binding *b, FILE *out)
             if (memcmp(&r[0].audited[k], &r[h].audited[k], sizeof(double)) != 0)
                 failed = h, component = k;
     }
-    hx_state_free(&p.state);
+    hx_frames_free(&p.frames);
     if (failed >= 0 && r[failed].outcome == STOPPED) {
         fprintf(out, "  %s %d: history audit: the element stopped the run in the calls %s\n",
                 b->element, b->id, histories[failed].what);

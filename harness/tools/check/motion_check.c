@@ -14,10 +14,10 @@
 #include "tools/check/element_samples.h"
 
 /* Order `iord` of the motion at time t; -1 when the routine stopped the run. */
-static int motion_at(hx_binding *b, hx_state *s, double t, int iord, double *value)
+static int motion_at(hx_binding *b, hx_frames *s, double t, int iord, double *value)
 {
     s->time = t;
-    hx_call_routine(b, s, iord, 0, value, NULL);
+    hx_invoke_routine(b, s, iord, 0, value, NULL);
     return hx_messages_stopped(b->messages) ? -1 : 0;
 }
 
@@ -26,16 +26,16 @@ int hx_check_motion(hx_session *s, hx_binding *b, FILE *out)
     const hx_model *m = s->model;
     const double h = 1e-4 * hx_model_second(m);
     double worst[2] = {0, 0}, worst_time[2] = {0, 0}, size[2] = {0, 0}, at_worst[2][2] = {{0}};
-    const double saved = s->state.time;
+    const double saved = s->frames.time;
     int failed = 0;
     for (int k = 1; k < HX_FORCE_SAMPLES && !failed; ++k) {
         const double t = hx_sample_time(m, k);
         for (int iord = 1; iord <= 2 && !failed; ++iord) {
             double exact, v[4]; /* at t - 2h, t - h, t + h, t + 2h */
             static const double at[4] = {-2.0, -1.0, 1.0, 2.0};
-            failed = motion_at(b, &s->state, t, iord, &exact) != 0;
+            failed = motion_at(b, &s->frames, t, iord, &exact) != 0;
             for (int i = 0; i < 4 && !failed; ++i)
-                failed = motion_at(b, &s->state, t + at[i] * h, iord - 1, &v[i]) != 0;
+                failed = motion_at(b, &s->frames, t + at[i] * h, iord - 1, &v[i]) != 0;
             if (failed)
                 break;
             const double near = (v[2] - v[1]) / (2.0 * h), far = (v[3] - v[0]) / (4.0 * h);
@@ -50,7 +50,7 @@ int hx_check_motion(hx_session *s, hx_binding *b, FILE *out)
             }
         }
     }
-    s->state.time = saved;
+    s->frames.time = saved;
     if (failed)
         return 1;
     int failures = 0;

@@ -11,7 +11,7 @@ static int evaluate(hx_rig *r, double t, const double d[6], const double v[6], d
                     double *J, double *Jv)
 {
     r->element_calls++;
-    return hx_element_at(r->s, &r->scratch, &r->s->state, r->force, t, d, v, F, J, Jv);
+    return hx_element_at(r->s, &r->scratch, &r->s->frames, r->force, t, d, v, F, J, Jv);
 }
 
 /* Newton on the controlled directions: element force + applied load = 0. */

@@ -15,9 +15,9 @@
 
 typedef struct hx_rig {
     hx_session *s;
-    hx_state scratch;     /* where a GFOSUB element's body is placed */
-    int force;            /* element index (the model's forces[], or its state_eqns[] for a
-                           * Force_StateEqn: tools/rig/state_rig.h) */
+    hx_frames scratch;     /* where a GFOSUB element's body is placed */
+    int force;            /* element index (the model's forces[], or its stateeqns[] for a
+                           * Force_StateEqn: tools/rig/stateeqn_rig.h) */
     int force_controlled;
     hx_rig_path path;
     double end, step;

@@ -8,21 +8,21 @@
  * rubber). CSV rows at every rig step: t, deformation (6), rate (6), the
  * outputs on I in the ref_marker's axes (6), the states.
  */
-#ifndef HX_TOOLS_RIG_STATE_RIG_H
-#define HX_TOOLS_RIG_STATE_RIG_H
+#ifndef HX_TOOLS_RIG_STATEEQN_RIG_H
+#define HX_TOOLS_RIG_STATEEQN_RIG_H
 
 #include "sim/ode/integrator.h"
 #include "tools/rig/rig.h"
 
-typedef struct hx_state_rig_result {
+typedef struct hx_stateeqn_rig_result {
     hx_integrator_stats stats; /* the states' integration (none without states) */
     double work;               /* done by the rig on the element over the path: -integral of
                                 * F . v dt (trapezoidal at the rig steps): stored or dissipated */
     char message[512];
-} hx_state_rig_result;
+} hx_stateeqn_rig_result;
 
-/* Drives Force_StateEqn r->force (an index in state_eqns[]) along r->path;
+/* Drives Force_StateEqn r->force (an index in stateeqns[]) along r->path;
  * returns 0, or -1 (result->message) when it failed or stopped the run. */
-int hx_state_rig_run(hx_rig *r, hx_state_rig_result *result);
+int hx_stateeqn_rig_run(hx_rig *r, hx_stateeqn_rig_result *result);
 
 #endif

@@ -4,15 +4,15 @@
  * names (its states X, its inputs U, its initial states IC; Y arrays are read
  * and unused) and the Reference_Variable elements of its U array. Rows of
  * the element table (elements.c); their references are resolved by
- * hx_draft_resolve_state_eqns once the whole file is read.
+ * hx_draft_resolve_stateeqns once the whole file is read.
  */
-#ifndef HX_MODEL_STATE_EQUATION_ELEMENTS_H
-#define HX_MODEL_STATE_EQUATION_ELEMENTS_H
+#ifndef HX_MODEL_STATEEQN_ELEMENTS_H
+#define HX_MODEL_STATEEQN_ELEMENTS_H
 
 #include "model/xml_schema.h"
 
-extern const hx_attr_spec hx_state_eqn_attrs[];
-void hx_build_state_eqn(hx_draft *d, const hx_element_read *e);
+extern const hx_attr_spec hx_stateeqn_attrs[];
+void hx_build_stateeqn(hx_draft *d, const hx_element_read *e);
 
 extern const hx_attr_spec hx_array_attrs[];
 void hx_build_array(hx_draft *d, const hx_element_read *e);

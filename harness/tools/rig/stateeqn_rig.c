@@ -1,5 +1,5 @@
-/* The rig for a Force_StateEqn (state_rig.h). */
-#include "tools/rig/state_rig.h"
+/* The rig for a Force_StateEqn (stateeqn_rig.h). */
+#include "tools/rig/stateeqn_rig.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -13,8 +13,8 @@
 typedef struct state_rig {
     hx_rig *r;
     hx_binding *b;
-    const hx_state_eqn *f;
-    hx_state_rig_result *result;
+    const hx_stateeqn *f;
+    hx_stateeqn_rig_result *result;
     double *u, *copy, *rates, *rates_minus; /* scratch */
     double out[6], disp[6], velo[6];
     double last_t, last_power;              /* the previous row's, for the work */
@@ -26,11 +26,11 @@ typedef struct state_rig {
 static int evaluate(state_rig *sr, double t, const double *x, int dflag, double *xdot)
 {
     hx_rig *r = sr->r;
-    const hx_state_eqn *f = sr->f;
+    const hx_stateeqn *f = sr->f;
     hx_rig_path_at(&r->path, t, r->end, sr->disp, sr->velo);
-    hx_place_relative(&r->s->state, &r->scratch, f->i_marker, f->j_marker, sr->disp, sr->velo);
+    hx_place_relative(&r->s->frames, &r->scratch, f->i_marker, f->j_marker, sr->disp, sr->velo);
     r->scratch.time = t;
-    if (hx_state_eqn_inputs(&r->scratch, r->force, sr->u) != 0) {
+    if (hx_stateeqn_inputs(&r->scratch, r->force, sr->u) != 0) {
         snprintf(sr->result->message, sizeof sr->result->message, "an input of Force_StateEqn"
                  " %d could not be measured at t = %g", f->id, t);
         return -1;
@@ -38,7 +38,7 @@ static int evaluate(state_rig *sr, double t, const double *x, int dflag, double 
     memcpy(sr->copy, x, sizeof(double) * (size_t)f->nstate); /* copies: it may write there */
     memcpy(sr->copy + f->nstate, sr->u, sizeof(double) * (size_t)f->ninput);
     double out[6];
-    hx_call_yfosub(sr->b, &r->scratch, sr->copy, sr->copy + f->nstate, dflag, 0, xdot, out, NULL);
+    hx_invoke_yfosub(sr->b, &r->scratch, sr->copy, sr->copy + f->nstate, dflag, 0, xdot, out, NULL);
     r->element_calls++;
     if (hx_messages_stopped(&r->s->messages) || !hx_all_finite(out, 6) ||
         !hx_all_finite(xdot, f->nstate)) {
@@ -49,8 +49,8 @@ static int evaluate(state_rig *sr, double t, const double *x, int dflag, double 
     }
     /* the outputs are in the ref_marker's axes: the rig reports J's */
     hx_frame frames[2];
-    const hx_frame *J = hx_state_marker(&r->scratch, f->j_marker, &frames[0]);
-    const hx_frame *ref = hx_state_marker(&r->scratch, f->ref_marker, &frames[1]);
+    const hx_frame *J = hx_frames_marker(&r->scratch, f->j_marker, &frames[0]);
+    const hx_frame *ref = hx_frames_marker(&r->scratch, f->ref_marker, &frames[1]);
     double Rjr[9];
     m3_tmul(Rjr, J->R, ref->R);
     m3_apply(sr->out, Rjr, out);
@@ -74,7 +74,7 @@ static int rate_jacobian(void *ctx, double t, const double *x, const double *fx,
             return -1;
         memcpy(sr->copy, x, sizeof(double) * (size_t)ns);
         memcpy(sr->copy + ns, sr->u, sizeof(double) * (size_t)sr->f->ninput);
-        hx_call_state_partial(sr->b, 0, &sr->r->scratch, sr->copy, sr->copy + ns, J, NULL);
+        hx_invoke_yfosub_partial(sr->b, 0, &sr->r->scratch, sr->copy, sr->copy + ns, J, NULL);
         return hx_all_finite(J, ns * ns) && !hx_messages_stopped(&sr->r->s->messages) ? 0 : -1;
     }
     double *xp = sr->rates + ns; /* past the rates: ns values */
@@ -143,12 +143,12 @@ static int integrate_states(state_rig *sr, double *x)
     return status == HX_INTEGRATION_OK ? 0 : -1;
 }
 
-int hx_state_rig_run(hx_rig *r, hx_state_rig_result *result)
+int hx_stateeqn_rig_run(hx_rig *r, hx_stateeqn_rig_result *result)
 {
     memset(result, 0, sizeof *result);
-    const hx_state_eqn *f = &r->s->model->state_eqns[r->force];
+    const hx_stateeqn *f = &r->s->model->stateeqns[r->force];
     state_rig sr = {.r = r, .f = f, .result = result};
-    sr.b = hx_binding_of_state_eqn(&r->s->bindings, r->force);
+    sr.b = hx_binding_of_stateeqn(&r->s->bindings, r->force);
     const int ns = f->nstate, ni = f->ninput;
     double *work = calloc((size_t)(5 * ns + 2 * ni + 1), sizeof(double));
     if (work == NULL) {

@@ -1,6 +1,6 @@
 /*
  * Force_StateEqn, Reference_Array and Reference_Variable: their descriptions,
- * builders and resolve pass (state_equation_elements.h). The attribute names
+ * builders and resolve pass (stateeqn_elements.h). The attribute names
  * are MotionSolve's (docs/interface.md §7.10 gives the sources and what is
  * our reading).
  */
@@ -14,7 +14,7 @@
 #include "model/draft.h"
 #include "model/number_list.h"
 #include "model/routine_elements.h"
-#include "model/state_equation_elements.h"
+#include "model/stateeqn_elements.h"
 #include "model/variable_expression.h"
 #include "model/xml_attrs.h"
 
@@ -205,20 +205,20 @@ void hx_array_text(hx_draft *d, int line, const char *text)
 
 /* ----  --------------------------------------------------------------------------------------- */
 
-const hx_attr_spec hx_state_eqn_attrs[] = {
+const hx_attr_spec hx_stateeqn_attrs[] = {
     ID, REQUIRED("type", HX_ATTR_TEXT), REQUIRED("x_array_id", HX_ATTR_INT), INT("u_array_id"),
     INT("ic_array_id"), INT("num_state"), {"is_static_hold", HX_ATTR_BOOL, 0},
     REQUIRED("i_marker_id", HX_ATTR_INT), REQUIRED("j_floating_marker_id", HX_ATTR_INT),
     REQUIRED("ref_marker_id", HX_ATTR_INT), USER_CALL, TEXT("usrsub_der1_name"),
     TEXT("usrsub_der2_name"), TEXT("usrsub_der3_name"), TEXT("usrsub_der4_name"), END};
 
-void hx_build_state_eqn(hx_draft *d, const hx_element_read *e)
+void hx_build_stateeqn(hx_draft *d, const hx_element_read *e)
 {
     hx_model *m = d->m;
-    for (int k = 0; k < m->nstate_eqns; ++k)
-        if (m->state_eqns[k].id == e->id) {
+    for (int k = 0; k < m->nstateeqns; ++k)
+        if (m->stateeqns[k].id == e->id) {
             hx_draft_fail(d, e->line, "Force_StateEqn %d is defined twice (line %d)", e->id,
-                          m->state_eqns[k].line);
+                          m->stateeqns[k].line);
             return;
         }
     const char *type = hx_attr_text(e, "type");
@@ -237,9 +237,9 @@ void hx_build_state_eqn(hx_draft *d, const hx_element_read *e)
                       nstate);
         return;
     }
-    hx_state_eqn *f = hx_draft_push(d, (void **)&m->state_eqns, &m->nstate_eqns,
-                                    &d->cap_state_eqns, sizeof *f, (void **)&d->rstate_eqns,
-                                    sizeof(raw_state_eqn));
+    hx_stateeqn *f = hx_draft_push(d, (void **)&m->stateeqns, &m->nstateeqns,
+                                    &d->cap_stateeqns, sizeof *f, (void **)&d->rstateeqns,
+                                    sizeof(raw_stateeqn));
     if (f == NULL)
         return;
     f->id = e->id;
@@ -247,7 +247,7 @@ void hx_build_state_eqn(hx_draft *d, const hx_element_read *e)
     f->nstate = nstate;
     f->static_hold = hx_attr_number(e, "is_static_hold", 0.0) != 0.0;
     f->x_array = f->u_array = f->ic_array = -1;
-    raw_state_eqn *raw = &d->rstate_eqns[m->nstate_eqns - 1];
+    raw_stateeqn *raw = &d->rstateeqns[m->nstateeqns - 1];
     raw->marker_ids[0] = hx_attr_int(e, "i_marker_id", 0);
     raw->marker_ids[1] = hx_attr_int(e, "j_floating_marker_id", 0);
     raw->marker_ids[2] = hx_attr_int(e, "ref_marker_id", 0);
@@ -303,7 +303,7 @@ static int resolve_variables(hx_draft *d)
 
 /* The array attribute of f named `what`, of the type wanted; -1 with the
  * draft failed when it is not one. */
-static int array_ref(hx_draft *d, const hx_state_eqn *f, const char *what, int id,
+static int array_ref(hx_draft *d, const hx_stateeqn *f, const char *what, int id,
                      hx_array_type wanted, int *index)
 {
     *index = hx_model_array(d->m, id);
@@ -322,7 +322,7 @@ static int array_ref(hx_draft *d, const hx_state_eqn *f, const char *what, int i
     return 0;
 }
 
-static int resolve_markers(hx_draft *d, hx_state_eqn *f, const raw_state_eqn *raw)
+static int resolve_markers(hx_draft *d, hx_stateeqn *f, const raw_stateeqn *raw)
 {
     static const char *const names[3] = {"i_marker_id", "j_floating_marker_id", "ref_marker_id"};
     int *index[3] = {&f->i_marker, &f->j_marker, &f->ref_marker};
@@ -344,7 +344,7 @@ static int resolve_markers(hx_draft *d, hx_state_eqn *f, const raw_state_eqn *ra
     return 0;
 }
 
-static int resolve_arrays(hx_draft *d, hx_state_eqn *f, const raw_state_eqn *raw)
+static int resolve_arrays(hx_draft *d, hx_stateeqn *f, const raw_stateeqn *raw)
 {
     hx_model *m = d->m;
     if (array_ref(d, f, "x_array_id", raw->x_array_id, HX_ARRAY_X, &f->x_array) != 0)
@@ -392,14 +392,14 @@ static int resolve_arrays(hx_draft *d, hx_state_eqn *f, const raw_state_eqn *raw
     return 0;
 }
 
-int hx_draft_resolve_state_eqns(hx_draft *d)
+int hx_draft_resolve_stateeqns(hx_draft *d)
 {
     hx_model *m = d->m;
     if (resolve_variables(d) != 0)
         return -1;
-    for (int k = 0; k < m->nstate_eqns; ++k) {
-        hx_state_eqn *f = &m->state_eqns[k];
-        const raw_state_eqn *raw = &d->rstate_eqns[k];
+    for (int k = 0; k < m->nstateeqns; ++k) {
+        hx_stateeqn *f = &m->stateeqns[k];
+        const raw_stateeqn *raw = &d->rstateeqns[k];
         if (resolve_markers(d, f, raw) != 0 || resolve_arrays(d, f, raw) != 0)
             return -1;
     }

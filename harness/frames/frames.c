@@ -1,5 +1,5 @@
 /* The model's state and its kinematics stage (state.h). */
-#include "state/state.h"
+#include "frames/frames.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -28,14 +28,14 @@ void hx_marker_frame(const hx_model *m, const hx_frame *b, int marker, hx_frame 
     v3_add(out->v, b->v, wr);
 }
 
-static void all_markers(hx_state *s)
+static void all_markers(hx_frames *s)
 {
     const hx_model *m = s->model;
     for (int k = 0; k < m->nmarkers; ++k)
         hx_marker_frame(m, &s->bodies[m->markers[k].body], k, &s->markers[k]);
 }
 
-int hx_state_init(hx_state *s, const hx_model *m)
+int hx_frames_init(hx_frames *s, const hx_model *m)
 {
     memset(s, 0, sizeof *s);
     s->model = m;
@@ -44,7 +44,7 @@ int hx_state_init(hx_state *s, const hx_model *m)
     s->moving = calloc((size_t)m->nmarkers + 1, sizeof *s->moving);
     s->diffs = calloc(2 * (size_t)m->nroutines_of[HX_ROUTINE_DIFF] + 1, sizeof *s->diffs);
     if (s->bodies == NULL || s->markers == NULL || s->moving == NULL || s->diffs == NULL) {
-        hx_state_free(s);
+        hx_frames_free(s);
         return -1;
     }
     for (int k = 0; k < m->nbodies; ++k) {
@@ -65,7 +65,7 @@ int hx_state_init(hx_state *s, const hx_model *m)
     return 0;
 }
 
-void hx_state_free(hx_state *s)
+void hx_frames_free(hx_frames *s)
 {
     free(s->bodies);
     free(s->markers);
@@ -74,15 +74,15 @@ void hx_state_free(hx_state *s)
     memset(s, 0, sizeof *s);
 }
 
-int hx_state_clone(hx_state *to, const hx_state *from)
+int hx_frames_clone(hx_frames *to, const hx_frames *from)
 {
-    if (hx_state_init(to, from->model) != 0)
+    if (hx_frames_init(to, from->model) != 0)
         return -1;
-    hx_state_copy(to, from);
+    hx_frames_copy(to, from);
     return 0;
 }
 
-void hx_state_copy(hx_state *to, const hx_state *from)
+void hx_frames_copy(hx_frames *to, const hx_frames *from)
 {
     const hx_model *m = from->model;
     to->time = from->time;
@@ -91,7 +91,7 @@ void hx_state_copy(hx_state *to, const hx_state *from)
     memcpy(to->diffs, from->diffs, sizeof *to->diffs * 2 * (size_t)m->nroutines_of[HX_ROUTINE_DIFF]);
 }
 
-void hx_state_update(hx_state *s)
+void hx_frames_update(hx_frames *s)
 {
     const hx_model *m = s->model;
     for (int n = 0; n < s->nmoving; ++n) {
@@ -100,7 +100,7 @@ void hx_state_update(hx_state *s)
     }
 }
 
-const hx_frame *hx_state_marker(const hx_state *s, int index, hx_frame *scratch)
+const hx_frame *hx_frames_marker(const hx_frames *s, int index, hx_frame *scratch)
 {
     if (index < 0)
         return &hx_world_frame;

@@ -1,7 +1,7 @@
-/* The Force_StateEqn elements in the equations of motion (state_elements.h). */
+/* The Force_StateEqn elements in the equations of motion (stateeqns.h). */
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/stage_failure.h"
-#include "sim/dynamics/state_elements.h"
+#include "sim/dynamics/stateeqns.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -10,14 +10,14 @@
 #include "base/vecmath.h"
 #include "host/state_inputs.h"
 
-int hx_state_elements_init(hx_dynamics *d, hx_message *msg)
+int hx_stateeqns_init(hx_dynamics *d, hx_message *msg)
 {
     const hx_model *m = d->m;
-    hx_state_elements *se = calloc(1, sizeof *se);
+    hx_stateeqns *se = calloc(1, sizeof *se);
     if (se == NULL)
         return hx_fail(msg, "out of memory");
-    d->stateful = se;
-    se->count = m->nstate_eqns;
+    d->stateeqns = se;
+    se->count = m->nstateeqns;
     const size_t n1 = (size_t)se->count + 1;
     int work = 6;
     d->states = d->nq + d->nu;
@@ -28,8 +28,8 @@ int hx_state_elements_init(hx_dynamics *d, hx_message *msg)
     if (se->binding == NULL || se->offset == NULL || se->outputs == NULL)
         return hx_fail(msg, "out of memory");
     for (int k = 0; k < se->count; ++k) {
-        const hx_state_eqn *f = &m->state_eqns[k];
-        se->binding[k] = hx_binding_of_state_eqn(&d->s->bindings, k);
+        const hx_stateeqn *f = &m->stateeqns[k];
+        se->binding[k] = hx_binding_of_stateeqn(&d->s->bindings, k);
         se->offset[k] = d->states + d->nstates;
         d->nstates += f->nstate;
         if (f->nstate + 2 * f->ninput > work)
@@ -39,9 +39,9 @@ int hx_state_elements_init(hx_dynamics *d, hx_message *msg)
     return se->work != NULL ? 0 : hx_fail(msg, "out of memory");
 }
 
-void hx_state_elements_free(hx_dynamics *d)
+void hx_stateeqns_free(hx_dynamics *d)
 {
-    hx_state_elements *se = d->stateful;
+    hx_stateeqns *se = d->stateeqns;
     if (se == NULL)
         return;
     free(se->binding);
@@ -49,47 +49,47 @@ void hx_state_elements_free(hx_dynamics *d)
     free(se->outputs);
     free(se->work);
     free(se);
-    d->stateful = NULL;
+    d->stateeqns = NULL;
 }
 
-void hx_state_elements_initial(const hx_dynamics *d, double *y)
+void hx_stateeqns_initial(const hx_dynamics *d, double *y)
 {
-    const hx_state_elements *se = d->stateful;
+    const hx_stateeqns *se = d->stateeqns;
     for (int k = 0; k < se->count; ++k) {
-        const hx_state_eqn *f = &d->m->state_eqns[k];
+        const hx_stateeqn *f = &d->m->stateeqns[k];
         for (int i = 0; i < f->nstate; ++i)
             y[se->offset[k] + i] = f->initial[i];
     }
 }
 
-int hx_state_element_evaluate(hx_dynamics *d, int k, const double *x, const double *u, int dflag,
+int hx_stateeqn_evaluate(hx_dynamics *d, int k, const double *x, const double *u, int dflag,
                               double *xdot, double out[6])
 {
-    hx_state_elements *se = d->stateful;
-    const hx_state_eqn *f = &d->m->state_eqns[k];
+    hx_stateeqns *se = d->stateeqns;
+    const hx_stateeqn *f = &d->m->stateeqns[k];
     hx_binding *b = se->binding[k];
-    /* copies (past the inputs of hx_state_elements_apply): a library may
+    /* copies (past the inputs of hx_stateeqns_apply): a library may
      * write into its arguments, never into y */
     double *states = se->work + f->ninput, *input = states + f->nstate;
     memcpy(states, x, sizeof(double) * (size_t)f->nstate);
     memcpy(input, u, sizeof(double) * (size_t)f->ninput);
-    hx_call_yfosub(b, &d->state, states, input, dflag, 0, xdot, out, NULL);
+    hx_invoke_yfosub(b, &d->frames, states, input, dflag, 0, xdot, out, NULL);
     if (hx_dynamics_check_stop(d, b) != 0)
         return -1;
     if (!hx_all_finite(out, 6) || !hx_all_finite(xdot, f->nstate))
         return hx_dynamics_fail(d, "Force_StateEqn %d returned a non-finite %s at t = %g", f->id,
-                                hx_all_finite(out, 6) ? "state rate" : "force", d->state.time);
+                                hx_all_finite(out, 6) ? "state rate" : "force", d->frames.time);
     return 0;
 }
 
 /* The outputs on I (ref_marker axes) applied to I's body at the I marker and,
  * reversed, to the J marker's body at the same point; their power. */
-static double apply_outputs(hx_dynamics *d, const hx_state_eqn *f, const double out[6])
+static double apply_outputs(hx_dynamics *d, const hx_stateeqn *f, const double out[6])
 {
     const hx_model *m = d->m;
     hx_frame scratch[2];
-    const hx_frame *I = hx_state_marker(&d->state, f->i_marker, &scratch[0]);
-    const hx_frame *ref = hx_state_marker(&d->state, f->ref_marker, &scratch[1]);
+    const hx_frame *I = hx_frames_marker(&d->frames, f->i_marker, &scratch[0]);
+    const hx_frame *ref = hx_frames_marker(&d->frames, f->ref_marker, &scratch[1]);
     double F[3], T[3];
     m3_apply(F, ref->R, out);
     m3_apply(T, ref->R, out + 3);
@@ -97,27 +97,27 @@ static double apply_outputs(hx_dynamics *d, const hx_state_eqn *f, const double 
            hx_bodies_apply_load(d, m->markers[f->j_marker].body, I->p, F, T, -1.0);
 }
 
-int hx_state_elements_apply(hx_dynamics *d, const double *y, double *ydot)
+int hx_stateeqns_apply(hx_dynamics *d, const double *y, double *ydot)
 {
-    hx_state_elements *se = d->stateful;
+    hx_stateeqns *se = d->stateeqns;
     for (int k = 0; k < se->count; ++k) {
-        const hx_state_eqn *f = &d->m->state_eqns[k];
+        const hx_stateeqn *f = &d->m->stateeqns[k];
         double *out = se->outputs + 6 * k, *xdot = ydot + se->offset[k];
         double *u = se->work; /* the call's own copies come after them */
-        if (hx_state_eqn_inputs(&d->state, k, u) != 0)
+        if (hx_stateeqn_inputs(&d->frames, k, u) != 0)
             return hx_dynamics_fail(d, "Force_StateEqn %d: an input could not be measured", f->id);
-        if (hx_state_element_evaluate(d, k, y + se->offset[k], u, 0, xdot, out) != 0)
+        if (hx_stateeqn_evaluate(d, k, y + se->offset[k], u, 0, xdot, out) != 0)
             return -1;
         ydot[d->element_work] += apply_outputs(d, f, out);
     }
     return 0;
 }
 
-void hx_state_elements_csv_header(FILE *f, const hx_dynamics *d)
+void hx_stateeqns_csv_header(FILE *f, const hx_dynamics *d)
 {
     static const char *const loads[6] = {"fx", "fy", "fz", "tx", "ty", "tz"};
-    for (int k = 0; k < d->m->nstate_eqns; ++k) {
-        const hx_state_eqn *e = &d->m->state_eqns[k];
+    for (int k = 0; k < d->m->nstateeqns; ++k) {
+        const hx_stateeqn *e = &d->m->stateeqns[k];
         for (int i = 0; i < e->nstate; ++i)
             fprintf(f, ",stateeqn%d.x%d", e->id, i + 1);
         for (int i = 0; i < e->ninput; ++i)
@@ -127,14 +127,14 @@ void hx_state_elements_csv_header(FILE *f, const hx_dynamics *d)
     }
 }
 
-void hx_state_elements_csv_row(FILE *f, const hx_dynamics *d, const double *y)
+void hx_stateeqns_csv_row(FILE *f, const hx_dynamics *d, const double *y)
 {
-    const hx_state_elements *se = d->stateful;
+    const hx_stateeqns *se = d->stateeqns;
     for (int k = 0; k < se->count; ++k) {
-        const hx_state_eqn *e = &d->m->state_eqns[k];
+        const hx_stateeqn *e = &d->m->stateeqns[k];
         for (int i = 0; i < e->nstate; ++i)
             fprintf(f, ",%.12g", y[se->offset[k] + i]);
-        hx_state_eqn_inputs(&d->state, k, se->work);
+        hx_stateeqn_inputs(&d->frames, k, se->work);
         for (int i = 0; i < e->ninput; ++i)
             fprintf(f, ",%.12g", se->work[i]);
         for (int j = 0; j < 6; ++j)

@@ -27,18 +27,18 @@ static const char *const output_names[6] = {"Fx", "Fy", "Fz", "Tx", "Ty", "Tz"};
 typedef struct state_sampler {
     hx_session *session;
     hx_binding *b;
-    hx_state *s;
+    hx_frames *s;
     int ns, ni;
     int outputs;         /* 0: the rates (stated), 1: the outputs */
     double *copy, *rates, out[6];
 } state_sampler;
 
 /* YFOSUB at v = (states, inputs): the rates or the outputs. */
-static int sample_state_eqn(void *ctx, const double *v, double *out)
+static int sample_stateeqn(void *ctx, const double *v, double *out)
 {
     state_sampler *ss = ctx;
     memcpy(ss->copy, v, sizeof(double) * (size_t)(ss->ns + ss->ni)); /* it may write there */
-    hx_call_yfosub(ss->b, ss->s, ss->copy, ss->copy + ss->ns, 1, 0, ss->rates, ss->out, NULL);
+    hx_invoke_yfosub(ss->b, ss->s, ss->copy, ss->copy + ss->ns, 1, 0, ss->rates, ss->out, NULL);
     if (hx_messages_stopped(ss->b->messages) || !hx_all_finite(ss->rates, ss->ns) ||
         !hx_all_finite(ss->out, 6))
         return -1;
@@ -58,7 +58,7 @@ static int jacobian_at(state_sampler *ss, double *v, const double *scale, double
         if (ss->b->state_partial[r] == NULL)
             continue;
         memcpy(ss->copy, v, sizeof(double) * (size_t)(ns + ni));
-        hx_call_state_partial(ss->b, r, ss->s, ss->copy, ss->copy + ns, matrix[r], NULL);
+        hx_invoke_yfosub_partial(ss->b, r, ss->s, ss->copy, ss->copy + ns, matrix[r], NULL);
         const int size = (r < YX ? ns : 6) * (r == XX || r == YX ? ns : ni);
         if (hx_messages_stopped(ss->b->messages) || !hx_all_finite(matrix[r], size))
             return -1 - r;
@@ -69,7 +69,7 @@ static int jacobian_at(state_sampler *ss, double *v, const double *scale, double
         for (int side = 0; side < 2; ++side) {
             v[c] = keep + (side ? -h : h);
             for (ss->outputs = 0; ss->outputs < 2; ++ss->outputs)
-                if (sample_state_eqn(ss, v, (side ? down : up) + (ss->outputs ? ns : 0)) != 0) {
+                if (sample_stateeqn(ss, v, (side ? down : up) + (ss->outputs ? ns : 0)) != 0) {
                     v[c] = keep;
                     return -5;
                 }
@@ -86,7 +86,7 @@ static int jacobian_at(state_sampler *ss, double *v, const double *scale, double
     return 0;
 }
 
-static void describe_entry(char *text, size_t size, const hx_model *m, const hx_state_eqn *f,
+static void describe_entry(char *text, size_t size, const hx_model *m, const hx_stateeqn *f,
                            int r, int row, int column, int sample, double t)
 {
     char output[32], input[48];
@@ -106,12 +106,12 @@ static void describe_entry(char *text, size_t size, const hx_model *m, const hx_
 }
 
 /* One sample: every column of every exported routine against differences. */
-static int check_sample(state_sampler *ss, const hx_model *m, const hx_state_eqn *f, int k,
+static int check_sample(state_sampler *ss, const hx_model *m, const hx_stateeqn *f, int k,
                         hx_worst worst[4])
 {
     const int ns = ss->ns, ni = ss->ni, rows = ns + 6;
     double v[64], scale[64], J[70 * 64];
-    hx_sample_state_element(ss->session, ss->b->index, k, v, v + ns, scale);
+    hx_sample_stateeqn_states(ss->session, ss->b->index, k, v, v + ns, scale);
     ss->s->time = hx_sample_time(m, k);
     const int status = jacobian_at(ss, v, scale, J);
     if (status != 0)
@@ -132,13 +132,13 @@ static int check_sample(state_sampler *ss, const hx_model *m, const hx_state_eqn
             }
             const double h = 1e-6 * fmax(fabs(v[c]), scale[c]);
             int row, wide_row;
-            double e = hx_check_column(sample_state_eqn, ss, v, c, height, column, floor, h, &row);
+            double e = hx_check_column(sample_stateeqn, ss, v, c, height, column, floor, h, &row);
             /* an output that is a difference of larger terms (the friction torque's,
              * a state equation's internal balance) carries more rounding than the
              * 4 eps the column's noise floor allows for: wider steps too */
             for (double wide = 100.0 * h; !(e <= HX_DERIVATIVE_TOLERANCE) && wide <= 1e4 * h;
                  wide *= 100.0) {
-                const double e_wide = hx_check_column(sample_state_eqn, ss, v, c, height, column,
+                const double e_wide = hx_check_column(sample_stateeqn, ss, v, c, height, column,
                                                       floor, wide, &wide_row);
                 if (e_wide < e)
                     e = e_wide, row = wide_row;
@@ -153,7 +153,7 @@ static int check_sample(state_sampler *ss, const hx_model *m, const hx_state_eqn
 int hx_check_state_partials(hx_session *s, hx_binding *b, FILE *out)
 {
     const hx_model *m = s->model;
-    const hx_state_eqn *f = &m->state_eqns[b->index];
+    const hx_stateeqn *f = &m->stateeqns[b->index];
     static const char *const meaning[4] = {"d stated/d states", "d stated/d inputs",
                                            "d outputs/d states", "d outputs/d inputs"};
     if (f->nstate + f->ninput > 64) {
@@ -161,9 +161,9 @@ int hx_check_state_partials(hx_session *s, hx_binding *b, FILE *out)
                 " in all: FAIL\n", b->element, b->id, f->nstate, f->ninput);
         return 1;
     }
-    hx_state state;
+    hx_frames state;
     double copy[64], rates[64];
-    if (hx_state_clone(&state, &s->state) != 0)
+    if (hx_frames_clone(&state, &s->frames) != 0)
         return 1;
     state_sampler ss = {s, b, &state, f->nstate, f->ninput, 0, copy, rates, {0}};
     hx_worst worst[4];
@@ -171,7 +171,7 @@ int hx_check_state_partials(hx_session *s, hx_binding *b, FILE *out)
     int failures = 0, status = 0, k = 0;
     for (; k < HX_FORCE_SAMPLES && status == 0; ++k)
         status = check_sample(&ss, m, f, k, worst);
-    hx_state_free(&state);
+    hx_frames_free(&state);
     if (status != 0) {
         fprintf(out, "  %s %d: %s returned non-finite values or stopped the run at sample %d:"
                 " FAIL\n", b->element, b->id, status >= -4 ? b->names[-status] : b->names[0],

@@ -4,10 +4,10 @@
  * AX/AY/AZ(I,J), the 3-1-3 Euler angles of DISP, VX..(I,J,K,L) and
  * WX..(I,J,K). Computed with the C library only.
  */
-#ifndef HX_STATE_MEASURES_H
-#define HX_STATE_MEASURES_H
+#ifndef HX_FRAMES_MEASURES_H
+#define HX_FRAMES_MEASURES_H
 
-#include "state/state.h"
+#include "frames/frames.h"
 
 /* R_K^T (p_I - p_J) */
 void hx_displacement(const hx_frame *I, const hx_frame *J, const hx_frame *K, double d[3]);
@@ -37,10 +37,10 @@ void hx_relative_angular_velocity(const hx_frame *I, const hx_frame *J, const hx
 void hx_field_state(const hx_frame *I, const hx_frame *J, double disp[6], double velo[6]);
 
 /* The deformation of a force element of the model at a state. */
-void hx_force_deformation(const hx_state *s, int force, double disp[6], double velo[6]);
+void hx_force_deformation(const hx_frames *s, int force, double disp[6], double velo[6]);
 
 /* Joint coordinate at a state: AZ(I,J) of a revolute or DZ(I,J,J) of a
  * translational joint. */
-double hx_joint_coordinate(const hx_state *s, int joint);
+double hx_joint_coordinate(const hx_frames *s, int joint);
 
 #endif

@@ -21,14 +21,14 @@
 #include "base/vecmath.h"
 #include "host/state_inputs.h"
 #include "sim/dynamics/stage_failure.h"
-#include "sim/dynamics/state_elements.h"
+#include "sim/dynamics/stateeqns.h"
 #include "sim/newton/newton_parts.h"
 
 #define MAX_INPUT_BODIES 32
 
 static const char *const routine_names[4] = {"YFOXX", "YFOXU", "YFOYX", "YFOYU"};
 
-struct hx_state_blocks {
+struct hx_stateeqn_blocks {
     size_t *block;       /* per element: where its F_x, F_u, G_x, G_u start in partials */
     double *partials;
     double *x, *u, *xdot, *xdotm, *out, *outm, *up, *um, *du, *g; /* scratch */
@@ -36,10 +36,10 @@ struct hx_state_blocks {
     unsigned char differenced[4]; /* routine r was differenced for some element */
 };
 
-int hx_state_input_bodies(const hx_dynamics *d, int k, int *bodies, int max)
+int hx_stateeqn_input_bodies(const hx_dynamics *d, int k, int *bodies, int max)
 {
     const hx_model *m = d->m;
-    const hx_state_eqn *f = &m->state_eqns[k];
+    const hx_stateeqn *f = &m->stateeqns[k];
     int count = 0;
     for (int i = 0; i < f->ninput; ++i) {
         const hx_variable *v = &m->variables[f->inputs[i]];
@@ -58,17 +58,17 @@ int hx_state_input_bodies(const hx_dynamics *d, int k, int *bodies, int max)
     return count;
 }
 
-int hx_state_blocks_init(hx_newton_matrix *nm, hx_message *msg)
+int hx_stateeqn_blocks_init(hx_newton_matrix *nm, hx_message *msg)
 {
     const hx_model *m = nm->d->m;
-    struct hx_state_blocks *sb = nm->states = calloc(1, sizeof *sb);
+    struct hx_stateeqn_blocks *sb = nm->states = calloc(1, sizeof *sb);
     if (sb == NULL)
         return hx_fail(msg, "out of memory");
-    sb->block = calloc((size_t)m->nstate_eqns + 1, sizeof *sb->block);
+    sb->block = calloc((size_t)m->nstateeqns + 1, sizeof *sb->block);
     size_t partials = 0;
     int widest = 6;
-    for (int k = 0; k < m->nstate_eqns; ++k) {
-        const hx_state_eqn *f = &m->state_eqns[k];
+    for (int k = 0; k < m->nstateeqns; ++k) {
+        const hx_stateeqn *f = &m->stateeqns[k];
         sb->block[k] = partials;
         partials += ((size_t)f->nstate + 6) * ((size_t)f->nstate + (size_t)f->ninput);
         if (f->nstate + f->ninput + 6 > widest)
@@ -86,9 +86,9 @@ int hx_state_blocks_init(hx_newton_matrix *nm, hx_message *msg)
     return 0;
 }
 
-void hx_state_blocks_free(hx_newton_matrix *nm)
+void hx_stateeqn_blocks_free(hx_newton_matrix *nm)
 {
-    struct hx_state_blocks *sb = nm->states;
+    struct hx_stateeqn_blocks *sb = nm->states;
     if (sb == NULL)
         return;
     free(sb->block);
@@ -103,9 +103,9 @@ void hx_state_blocks_free(hx_newton_matrix *nm)
 static int library_partials(hx_newton_matrix *nm, int k, double *blocks[4], int which[4])
 {
     hx_dynamics *d = nm->d;
-    struct hx_state_blocks *sb = nm->states;
-    const hx_state_eqn *f = &d->m->state_eqns[k];
-    hx_binding *b = d->stateful->binding[k];
+    struct hx_stateeqn_blocks *sb = nm->states;
+    const hx_stateeqn *f = &d->m->stateeqns[k];
+    hx_binding *b = d->stateeqns->binding[k];
     const int size[4] = {f->nstate * f->nstate, f->nstate * f->ninput, 6 * f->nstate,
                          6 * f->ninput};
     for (int r = 0; r < 4; ++r) {
@@ -117,13 +117,13 @@ static int library_partials(hx_newton_matrix *nm, int k, double *blocks[4], int 
         sb->exported[r] = 1;
         memcpy(sb->xdot, sb->x, sizeof(double) * (size_t)f->nstate); /* copies it may write */
         memcpy(sb->xdotm, sb->u, sizeof(double) * (size_t)f->ninput);
-        hx_call_state_partial(b, r, &d->state, sb->xdot, sb->xdotm, blocks[r], NULL);
+        hx_invoke_yfosub_partial(b, r, &d->frames, sb->xdot, sb->xdotm, blocks[r], NULL);
         nm->partial_calls++;
         if (hx_dynamics_check_stop(d, b) != 0)
             return -1;
         if (!hx_all_finite(blocks[r], size[r]))
             return hx_dynamics_fail(d, "Force_StateEqn %d: %s returned non-finite partials at t ="
-                                    " %g", f->id, b->names[1 + r], d->state.time);
+                                    " %g", f->id, b->names[1 + r], d->frames.time);
     }
     return 0;
 }
@@ -141,8 +141,8 @@ static int differenced_partials(hx_newton_matrix *nm, int k, double *blocks[4],
                                 const int which[4])
 {
     hx_dynamics *d = nm->d;
-    struct hx_state_blocks *sb = nm->states;
-    const hx_state_eqn *f = &d->m->state_eqns[k];
+    struct hx_stateeqn_blocks *sb = nm->states;
+    const hx_stateeqn *f = &d->m->stateeqns[k];
     const int ns = f->nstate, ni = f->ninput;
     for (int group = 0; group < 2; ++group) {
         if (!which[group] && !which[group + 2])
@@ -152,10 +152,10 @@ static int differenced_partials(hx_newton_matrix *nm, int k, double *blocks[4],
         for (int j = 0; j < columns; ++j) {
             const double keep = v[j], h = step_of(keep);
             v[j] = keep + h;
-            int status = hx_state_element_evaluate(d, k, sb->x, sb->u, 1, sb->xdot, sb->out);
+            int status = hx_stateeqn_evaluate(d, k, sb->x, sb->u, 1, sb->xdot, sb->out);
             v[j] = keep - h;
             if (status == 0)
-                status = hx_state_element_evaluate(d, k, sb->x, sb->u, 1, sb->xdotm, sb->outm);
+                status = hx_stateeqn_evaluate(d, k, sb->x, sb->u, 1, sb->xdotm, sb->outm);
             v[j] = keep;
             nm->partial_calls += 2;
             if (status != 0)
@@ -172,14 +172,14 @@ static int differenced_partials(hx_newton_matrix *nm, int k, double *blocks[4],
 /* dU/dy along column c of body b: differences of the harness's measures. */
 static void input_slope(hx_newton_matrix *nm, int k, int b, int c)
 {
-    struct hx_state_blocks *sb = nm->states;
+    struct hx_stateeqn_blocks *sb = nm->states;
     const hx_model *m = nm->d->m;
-    const hx_state_eqn *f = &m->state_eqns[k];
+    const hx_stateeqn *f = &m->stateeqns[k];
     const double keep = nm->y[c], h = hx_newton_step(nm->y, c);
     for (int side = 0; side < 2; ++side) {
         nm->y[c] = keep + (side == 0 ? h : -h);
         hx_newton_probe_move(nm, b, nm->y);
-        hx_state_eqn_inputs(&nm->probe, k, side == 0 ? sb->up : sb->um);
+        hx_stateeqn_inputs(&nm->probe, k, side == 0 ? sb->up : sb->um);
     }
     nm->y[c] = keep;
     hx_newton_probe_restore(nm, b);
@@ -212,13 +212,13 @@ static void through(const double *Fb, const double *Gb, int ns, int nv, const do
 static int element_block(hx_newton_matrix *nm, int k, const double *y)
 {
     hx_dynamics *d = nm->d;
-    struct hx_state_blocks *sb = nm->states;
+    struct hx_stateeqn_blocks *sb = nm->states;
     const hx_model *m = d->m;
-    const hx_state_eqn *f = &m->state_eqns[k];
-    const hx_state *s = &d->state;
-    const int ns = f->nstate, ni = f->ninput, x0 = d->stateful->offset[k];
+    const hx_stateeqn *f = &m->stateeqns[k];
+    const hx_frames *s = &d->frames;
+    const int ns = f->nstate, ni = f->ninput, x0 = d->stateeqns->offset[k];
     memcpy(sb->x, y + x0, sizeof(double) * (size_t)ns);
-    if (hx_state_eqn_inputs(s, k, sb->u) != 0)
+    if (hx_stateeqn_inputs(s, k, sb->u) != 0)
         return hx_dynamics_fail(d, "Force_StateEqn %d: an input could not be measured", f->id);
     double *xx = sb->partials + sb->block[k];
     double *blocks[4] = {xx, xx + ns * ns, xx + ns * (ns + ni), xx + ns * (ns + ni) + 6 * ns};
@@ -230,9 +230,9 @@ static int element_block(hx_newton_matrix *nm, int k, const double *y)
     a.bi = m->markers[f->i_marker].body;
     a.bj = m->markers[f->j_marker].body;
     a.ba = f->ref_marker >= 0 ? m->markers[f->ref_marker].body : -1;
-    a.I = hx_state_marker(s, f->i_marker, &scratch[0]);
-    a.R_A = hx_state_marker(s, f->ref_marker, &scratch[1])->R;
-    const double *out0 = d->stateful->outputs + 6 * k;
+    a.I = hx_frames_marker(s, f->i_marker, &scratch[0]);
+    a.R_A = hx_frames_marker(s, f->ref_marker, &scratch[1])->R;
+    const double *out0 = d->stateeqns->outputs + 6 * k;
     m3_apply(a.F, a.R_A, out0);
     m3_apply(a.T, a.R_A, out0 + 3);
     static const hx_motion still;
@@ -249,7 +249,7 @@ static int element_block(hx_newton_matrix *nm, int k, const double *y)
     }
     /* the bodies' columns: through the inputs, and the force's geometry */
     int bodies[MAX_INPUT_BODIES + 3];
-    const int measured = hx_state_input_bodies(d, k, bodies, MAX_INPUT_BODIES);
+    const int measured = hx_stateeqn_input_bodies(d, k, bodies, MAX_INPUT_BODIES);
     int count = measured;
     const int geometry[3] = {a.bi, a.bj, a.ba};
     for (int i = 0; i < 3; ++i) {
@@ -278,19 +278,19 @@ static int element_block(hx_newton_matrix *nm, int k, const double *y)
     return 0;
 }
 
-int hx_state_blocks(hx_newton_matrix *nm, double t, const double *y)
+int hx_stateeqn_blocks(hx_newton_matrix *nm, double t, const double *y)
 {
     (void)t;
-    for (int k = 0; k < nm->d->m->nstate_eqns; ++k)
+    for (int k = 0; k < nm->d->m->nstateeqns; ++k)
         if (element_block(nm, k, y) != 0)
             return -1;
     return 0;
 }
 
-void hx_state_blocks_describe(const hx_newton_matrix *nm, char *text, size_t size)
+void hx_stateeqn_blocks_describe(const hx_newton_matrix *nm, char *text, size_t size)
 {
-    const struct hx_state_blocks *sb = nm->states;
-    if (nm->d->m->nstate_eqns == 0)
+    const struct hx_stateeqn_blocks *sb = nm->states;
+    if (nm->d->m->nstateeqns == 0)
         return;
     size_t len = strlen(text);
     for (int r = 0; r < 4 && len < size; ++r)
