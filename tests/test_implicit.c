@@ -6,7 +6,7 @@
  * steps) but not change the trajectory; a GFOSUB twin that disagrees with its
  * element being set aside; BDF's agreement with DOPRI5 on every bundled model
  * (couplers held by the projection); run with bdf on every model, and its
- * advice on stiff models.
+ * advice on stiff models; the integrators' norm against SUNDIALS' own.
  */
 #include <dirent.h>
 #include <fcntl.h>
@@ -19,6 +19,7 @@
 #include "cmd/commands.h"
 #include "sim/newton/newton_matrix.h"
 #include "sim/ode/column_groups.h"
+#include "sim/ode/wrms_norm.h"
 #include "sim_support.h"
 #include "test_support.h"
 #include "tools/bench/linear_reference.h"
@@ -616,6 +617,42 @@ static void run_takes_bdf_on_every_model_and_says_when_it_is_stiff(void **state)
     assert_contains(text, "linear solver: dense LU (auto", "column groups", "Newton matrices took");
 }
 
+/* hx_wrms_norm: by hand, then against SUNDIALS' serial vector's own norm on
+ * every length from 0 to 13 (the partial sums' tails) and the 64-body
+ * chain's 834, with values of every sign and size; and installed, it is the
+ * norm of every vector cloned from the one it was installed on. */
+static void the_norm_is_sundials_own(void **state)
+{
+    (void)state;
+    const double three_four[2] = {3.0, 4.0}, halves[2] = {2.0, 0.5};
+    assert_close(hx_wrms_norm(three_four, halves, 2), sqrt((36.0 + 4.0) / 2.0), 1e-15, 0);
+    assert_close(hx_wrms_norm(three_four, halves, 0), 0.0, 0, 0);
+    SUNContext context;
+    assert_int_equal(SUNContext_Create(NULL, &context), 0);
+    unsigned seed = 12345u;
+    for (long n = 0; n <= 834; n = n < 13 ? n + 1 : 834) {
+        N_Vector x = N_VNew_Serial(n, context), w = N_VNew_Serial(n, context);
+        for (long i = 0; i < n; ++i) {
+            seed = seed * 1664525u + 1013904223u;
+            NV_Ith_S(x, i) = ((double)(seed >> 8) / 16777216.0 - 0.5) * pow(10.0, (double)(i % 7) - 3.0);
+            NV_Ith_S(w, i) = 1.0 / (1e-5 * fabs(NV_Ith_S(x, i)) + 1e-8 * (double)(1 + i % 3));
+        }
+        const double theirs = n > 0 ? N_VWrmsNorm(x, w) : 0.0;
+        const double ours = hx_wrms_norm(NV_DATA_S(x), NV_DATA_S(w), n);
+        assert_close(ours, theirs, 1e-14, 0);
+        hx_wrms_norm_install(x);
+        N_Vector clone = N_VClone(x);
+        assert_true(clone->ops->nvwrmsnorm == x->ops->nvwrmsnorm);
+        assert_true(w->ops->nvwrmsnorm != x->ops->nvwrmsnorm);
+        if (n > 0)
+            assert_close(N_VWrmsNorm(x, w), ours, 0, 0);
+        N_VDestroy(clone), N_VDestroy(x), N_VDestroy(w);
+        if (n == 834)
+            break;
+    }
+    SUNContext_Free(&context);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -624,6 +661,7 @@ int main(void)
         cmocka_unit_test(newton_matrix_asks_a_field_for_its_partials),
         cmocka_unit_test(newton_matrix_has_the_routines_rows),
         cmocka_unit_test(differences_by_column_groups_equal_them_column_by_column),
+        cmocka_unit_test(the_norm_is_sundials_own),
         cmocka_unit_test(bdf_converges_at_its_order),
         cmocka_unit_test(a_wrong_partial_costs_newton_iterations_not_accuracy),
         cmocka_unit_test(a_twin_that_disagrees_is_set_aside),
