@@ -170,6 +170,38 @@ static void newton_matrix_has_the_routines_rows(void **state)
                    HX_PARTIALS_DIFFERENCES);
 }
 
+/* The y of a model with Force_StateEqn states, a Control_Diff state after
+ * them and loads (suspension_bushing.xml with tp_routines.c's LAG on the arm's
+ * angle): every block where the layout puts it, against differences, during
+ * the torque ramp. */
+static void newton_matrix_with_state_equations_diffs_and_loads(void **state)
+{
+    (void)state;
+    FILE *f = fopen(EXAMPLES_DIR "/suspension_bushing.xml", "r");
+    assert_non_null(f);
+    static char text[16384], changed[17408];
+    const size_t n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = '\0';
+    /* the property files by absolute path: the variant is written elsewhere */
+    const char *gbs = strstr(text, "string=\"suspension_bushing.gbs\"");
+    const char *gbi = strstr(text, "string=\"suspension_bushing.gbi\"");
+    const char *end = strstr(text, "</Model>");
+    assert_true(gbs != NULL && gbi != NULL && end != NULL && gbs < gbi && gbi < end);
+    const int key = (int)strlen("string=\"suspension_bushing.gbs\"");
+    snprintf(changed, sizeof changed,
+             "%.*sstring=\"%s/suspension_bushing.gbs\"%.*sstring=\"%s/suspension_bushing.gbi\""
+             "%.*s<Control_Diff id=\"7\" type=\"USERSUB\" ic=\"0.01\""
+             " usrsub_param_string=\"USER(20, 10, 0.01)\" usrsub_fnc_name=\"LAG\""
+             " usrsub_dll_name=\"libtp_routines.so\"/>\n%s",
+             (int)(gbs - text), text, EXAMPLES_DIR, (int)(gbi - gbs) - key, gbs + key,
+             EXAMPLES_DIR, (int)(end - gbi) - key, gbi + key, end);
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    jacobian_after(test_write_file("bushing_and_diff.xml", changed), 0.2,
+                   "suspension_bushing.xml with a Control_Diff at t = 0.2 s",
+                   HX_PARTIALS_FIESUB /* no force elements */);
+}
+
 /* Every bundled model the harness simulates, at a state it reaches (0.05 s
  * of DOPRI5 from the start: loads on, elements deformed), and chains of
  * bodies from scripts/chain_model.sh: the assembled matrix equals the
@@ -660,6 +692,7 @@ int main(void)
         cmocka_unit_test(newton_matrix_equals_differences_on_every_model),
         cmocka_unit_test(newton_matrix_asks_a_field_for_its_partials),
         cmocka_unit_test(newton_matrix_has_the_routines_rows),
+        cmocka_unit_test(newton_matrix_with_state_equations_diffs_and_loads),
         cmocka_unit_test(differences_by_column_groups_equal_them_column_by_column),
         cmocka_unit_test(the_norm_is_sundials_own),
         cmocka_unit_test(bdf_converges_at_its_order),
