@@ -1,6 +1,6 @@
 /*
  * tp_records.c -- test user library in Adams' C-style form: entries
- * named Gfosub, Vfosub, Sfosub, Motsub, Difsub, Varsub, Reqsub (the default names in
+ * named Gfosub, Vfosub, Fiesub, Sfosub, Motsub, Difsub, Varsub, Reqsub (the default names in
  * mixed case), each given a constant record of its element, then the time
  * and flags by value. The records are laid out here from Adams' published
  * description: the id, the USER list's length and the list, then the
@@ -9,6 +9,8 @@
  *   Gfosub: a spring from I to the point (x0, 0, 0) of J, USER(k, x0, i, j);
  *   Vfosub (a Force_Vector_OneBody, whose JFLOAT is 0): the same spring
  *       from I to the point (x0, 0, 0) of RM, USER(k, x0);
+ *   Fiesub (a Force_Field): -k (x - x0) along J's x from the deformation it
+ *       is handed, with -k its one partial, USER(k, x0);
  *   Sfosub: -k (DM(I, J) - L0) along the line, USER(k, L0);
  *   Motsub: a sin(w t) and its derivatives, USER(a, w);
  *   Difsub: (AZ(i, j) - DIF(self)) / tau, USER(i, j, tau);
@@ -23,6 +25,7 @@
 
 struct sGforce { int ID; int NPAR; const double *PAR; int I; int RM; int JFLOAT; };
 struct sVforce { int ID; int NPAR; const double *PAR; int I; int JFLOAT; int RM; };
+struct sField { int ID; int NPAR; const double *PAR; int I; int J; };
 struct sSforce { int ID; int NPAR; const double *PAR; int I; int J; int ACTION_ONLY; const char *Type; };
 struct sMotion {
     int ID; int NPAR; const double *PAR; int JOINT; const char *Type; int I; int J;
@@ -34,6 +37,8 @@ struct sRequest { int ID; int NPAR; const double *PAR; const char *COMMENT; cons
 
 USRSUB_EXPORT void Gfosub(const struct sGforce *g, double time, int dflag, int iflag, double *result);
 USRSUB_EXPORT void Vfosub(const struct sVforce *v, double time, int dflag, int iflag, double *result);
+USRSUB_EXPORT void Fiesub(const struct sField *f, double time, double *disp, double *velo,
+                          int dflag, int iflag, double *field, double *dfddis, double *dfdvel);
 USRSUB_EXPORT void Sfosub(const struct sSforce *s, double time, int dflag, int iflag, double *result);
 USRSUB_EXPORT void Motsub(const struct sMotion *m, double time, int iord, int iflag, double *result);
 USRSUB_EXPORT void Difsub(const struct sDiff *d, double time, int dflag, int iflag, double *result);
@@ -73,6 +78,24 @@ USRSUB_EXPORT void Vfosub(const struct sVforce *v, double time, int dflag, int i
     }
     result[0] = -v->PAR[0] * (measure("DX", v->I, v->RM) - v->PAR[1]);
     result[1] = result[2] = 0.0;
+}
+
+USRSUB_EXPORT void Fiesub(const struct sField *f, double time, double *disp, double *velo,
+                          int dflag, int iflag, double *field, double *dfddis, double *dfdvel)
+{
+    (void)time, (void)velo, (void)iflag;
+    for (int k = 0; k < 6; ++k)
+        field[k] = 0.0;
+    if (f->ID != 12 || f->NPAR != 2 || f->I != 60 || f->J != 16) {
+        field[0] = NAN;
+        return;
+    }
+    field[0] = -f->PAR[0] * (disp[0] - f->PAR[1]);
+    if (dflag) {
+        for (int k = 0; k < 36; ++k)
+            dfddis[k] = dfdvel[k] = 0.0;
+        dfddis[0] = -f->PAR[0];
+    }
 }
 
 USRSUB_EXPORT void Sfosub(const struct sSforce *s, double time, int dflag, int iflag, double *result)
