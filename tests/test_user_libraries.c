@@ -540,7 +540,9 @@ static void the_c_style_record_form_binds_and_runs(void **state)
                    "Reference_Variable 9 (Varsub in libtp_records.so)",
                    "Post_Request 8 (Reqsub in libtp_records.so)",
                    "Force_Vector_OneBody 11 (Vfosub in libtp_records.so)",
-                   "Force_Field 12 (Fiesub in libtp_records.so)", "8 passed, 0 failed"),
+                   "Force_Field 12 (Fiesub in libtp_records.so)",
+                   "Constraint_Coupler 1 (Cousub Couxx Couxx2 in libtp_records.so)",
+                   "9 passed, 0 failed"),
            NEEDLES("FAIL", "never writes", "non-finite"));
     setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
     char csv[512];
@@ -550,9 +552,9 @@ static void the_c_style_record_form_binds_and_runs(void **state)
     assert_int_equal(sim_run_csv(USER_LIBRARIES_DIR "/tp_records.xml", csv, args), 0);
     static const char *const names[] = {"t", "body2.x", "joint5.q", "variable9", "joint6.q",
                                         "diff7", "request8.1", "request8.2", "request8.3",
-                                        "body5.x", "body6.x"};
-    int col[11];
-    for (int k = 0; k < 11; ++k)
+                                        "body5.x", "body6.x", "joint7.q", "joint8.q"};
+    int col[13];
+    for (int k = 0; k < 13; ++k)
         assert_true((col[k] = csv_column(csv, names[k])) >= 0);
     csv_table tb;
     csv_read(csv, &tb);
@@ -561,7 +563,7 @@ static void the_c_style_record_form_binds_and_runs(void **state)
     for (int row = 0; row < tb.rows; ++row) {
         const double t = csv_at(&tb, row, col[0]);
         const double lag = a / (1.0 + r * r) * (sin(w * t) - r * cos(w * t) + r * exp(-t / tau));
-        const double errors[10] = {
+        const double errors[12] = {
             (csv_at(&tb, row, col[1]) - 10.0 - 2.0 * cos(1000.0 * t)) / 2.0,
             (csv_at(&tb, row, col[2]) - csv_at(&tb, 0, col[2]) - 2.0 * (cos(1000.0 * t) - 1.0)) / 2.0,
             (csv_at(&tb, row, col[3]) + 2000.0 * sin(1000.0 * t)) / 2000.0,
@@ -571,8 +573,11 @@ static void the_c_style_record_form_binds_and_runs(void **state)
             (csv_at(&tb, row, col[7]) - csv_at(&tb, row, col[4])) / a,
             (csv_at(&tb, row, col[8]) - csv_at(&tb, row, col[1])) / 2.0,
             (csv_at(&tb, row, col[9]) - 10.0 - 2.0 * cos(1000.0 * t)) / 2.0,
-            (csv_at(&tb, row, col[10]) - 10.0 - 2.0 * cos(1000.0 * t)) / 2.0};
-        for (int k = 0; k < 10; ++k)
+            (csv_at(&tb, row, col[10]) - 10.0 - 2.0 * cos(1000.0 * t)) / 2.0,
+            /* the coupled joints turn steadily, q7 + 2 q8 = 0 */
+            (csv_at(&tb, row, col[11]) - 2.0 * t) / 0.04,
+            (csv_at(&tb, row, col[12]) + t) / 0.02};
+        for (int k = 0; k < 12; ++k)
             worst = fmax(worst, fabs(errors[k]));
     }
     printf("  tp_records over 0.02 s: off the closed forms and the run's own values by %.2g of"

@@ -1,6 +1,7 @@
 /*
  * tp_records.c -- test user library in Adams' C-style form: entries
- * named Gfosub, Vfosub, Fiesub, Sfosub, Motsub, Difsub, Varsub, Reqsub (the default names in
+ * named Gfosub, Vfosub, Fiesub, Sfosub, Cousub, Couxx, Couxx2, Motsub, Difsub, Varsub,
+ * Reqsub (the default names in
  * mixed case), each given a constant record of its element, then the time
  * and flags by value. The records are laid out here from Adams' published
  * description: the id, the USER list's length and the list, then the
@@ -12,6 +13,8 @@
  *   Fiesub (a Force_Field): -k (x - x0) along J's x from the deformation it
  *       is handed, with -k its one partial, USER(k, x0);
  *   Sfosub: -k (DM(I, J) - L0) along the line, USER(k, L0);
+ *   Cousub, Couxx, Couxx2: the coupler a1 q1 + a2 q2 = 0, its gradient and
+ *       its (zero) second derivatives, USER(a1, a2);
  *   Motsub: a sin(w t) and its derivatives, USER(a, w);
  *   Difsub: (AZ(i, j) - DIF(self)) / tau, USER(i, j, tau);
  *   Varsub: VX(i, j), USER(i, j);
@@ -26,6 +29,7 @@
 struct sGforce { int ID; int NPAR; const double *PAR; int I; int RM; int JFLOAT; };
 struct sVforce { int ID; int NPAR; const double *PAR; int I; int JFLOAT; int RM; };
 struct sField { int ID; int NPAR; const double *PAR; int I; int J; };
+struct sCoupler { int ID; int NPAR; const double *PAR; int NJOINT; int JOINTS[3]; char TYPE[3]; };
 struct sSforce { int ID; int NPAR; const double *PAR; int I; int J; int ACTION_ONLY; const char *Type; };
 struct sMotion {
     int ID; int NPAR; const double *PAR; int JOINT; const char *Type; int I; int J;
@@ -40,6 +44,9 @@ USRSUB_EXPORT void Vfosub(const struct sVforce *v, double time, int dflag, int i
 USRSUB_EXPORT void Fiesub(const struct sField *f, double time, double *disp, double *velo,
                           int dflag, int iflag, double *field, double *dfddis, double *dfdvel);
 USRSUB_EXPORT void Sfosub(const struct sSforce *s, double time, int dflag, int iflag, double *result);
+USRSUB_EXPORT void Cousub(const struct sCoupler *c, double time, double *disp, int iflag, double *out);
+USRSUB_EXPORT void Couxx(const struct sCoupler *c, double time, double *disp, int iflag, double *out);
+USRSUB_EXPORT void Couxx2(const struct sCoupler *c, double time, double *disp, int iflag, double *out);
 USRSUB_EXPORT void Motsub(const struct sMotion *m, double time, int iord, int iflag, double *result);
 USRSUB_EXPORT void Difsub(const struct sDiff *d, double time, int dflag, int iflag, double *result);
 USRSUB_EXPORT void Varsub(const struct sVariable *v, double time, int dflag, int iflag, double *result);
@@ -107,6 +114,36 @@ USRSUB_EXPORT void Sfosub(const struct sSforce *s, double time, int dflag, int i
         return;
     }
     *result = -s->PAR[0] * (measure("DM", s->I, s->J) - s->PAR[1]);
+}
+
+/* Whether the coupler's record is the model's: Constraint_Coupler 1 on the
+ * revolute joints 7 and 8. */
+static int coupler_record_ok(const struct sCoupler *c)
+{
+    return c->ID == 1 && c->NPAR == 2 && c->NJOINT == 2 && c->JOINTS[0] == 7 &&
+           c->JOINTS[1] == 8 && c->TYPE[0] == 'R' && c->TYPE[1] == 'R';
+}
+
+USRSUB_EXPORT void Cousub(const struct sCoupler *c, double time, double *disp, int iflag, double *out)
+{
+    (void)time, (void)iflag;
+    out[0] = coupler_record_ok(c) ? c->PAR[0] * disp[0] + c->PAR[1] * disp[1] : NAN;
+}
+
+USRSUB_EXPORT void Couxx(const struct sCoupler *c, double time, double *disp, int iflag, double *out)
+{
+    (void)time, (void)disp, (void)iflag;
+    const int ok = coupler_record_ok(c);
+    for (int k = 0; k < c->NJOINT; ++k)
+        out[k] = ok ? c->PAR[k] : NAN;
+}
+
+USRSUB_EXPORT void Couxx2(const struct sCoupler *c, double time, double *disp, int iflag, double *out)
+{
+    (void)time, (void)disp, (void)iflag;
+    const int ok = coupler_record_ok(c);
+    for (int k = 0; k < c->NJOINT * c->NJOINT; ++k)
+        out[k] = ok ? 0.0 : NAN;
 }
 
 USRSUB_EXPORT void Motsub(const struct sMotion *m, double time, int iord, int iflag, double *result)
