@@ -286,9 +286,9 @@ static void routines_that_are_not_forces_are_checked_and_run(void **state)
     assert_int_equal(sim_run_csv(USER_LIBRARIES_DIR "/tp_routines.xml", csv, args), 0);
     static const char *const names[] = {"t", "body2.x", "variable9", "joint6.q",
                                         "motion6.error", "diff7", "request8.1", "request8.2",
-                                        "request8.3", "request8.4"};
-    int col[10];
-    for (int k = 0; k < 10; ++k)
+                                        "request8.3", "request8.4", "joint6.u"};
+    int col[11];
+    for (int k = 0; k < 11; ++k)
         assert_true((col[k] = csv_column(csv, names[k])) >= 0);
     csv_table tb;
     csv_read(csv, &tb);
@@ -300,6 +300,8 @@ static void routines_that_are_not_forces_are_checked_and_run(void **state)
         worst[0] = fmax(worst[0], fabs(csv_at(&tb, row, col[1]) - 10.0 - 2.0 * cos(1000.0 * t)) / 2.0);
         worst[1] = fmax(worst[1], fabs(csv_at(&tb, row, col[2]) + 2000.0 * sin(1000.0 * t)) / 2000.0);
         worst[2] = fmax(worst[2], fabs(csv_at(&tb, row, col[3]) - a * sin(w * t)) / a);
+        /* the rate from iord 1, from the start on */
+        worst[2] = fmax(worst[2], fabs(csv_at(&tb, row, col[10]) - a * w * cos(w * t)) / (a * w));
         worst[3] = fmax(worst[3], fabs(csv_at(&tb, row, col[4])) / a);
         worst[4] = fmax(worst[4], fabs(csv_at(&tb, row, col[5]) - lag) / a);
         /* the request reports the states the run has */
