@@ -649,6 +649,50 @@ static void run_takes_bdf_on_every_model_and_says_when_it_is_stiff(void **state)
     assert_contains(text, "linear solver: dense LU (auto", "column groups", "Newton matrices took");
 }
 
+/* KLU's Newton matrix A = I - gamma J, written by the harness in one pass
+ * (bdf.c's linear_system), against dense LU's, which CVODE builds itself:
+ * on the powertrain the two runs take the same steps, Newton iterations and
+ * Jacobians within rounding, and end in the same state. A wrong sign, a
+ * missing identity or a Jacobian kept when CVODE asks for a new one shows as
+ * Newton iterations and steps. */
+static void the_one_pass_newton_matrix_is_cvodes(void **state)
+{
+    (void)state;
+    hx_simulation_result r[2];
+    double y[2][64];
+    for (int k = 0; k < 2; ++k) {
+        model m;
+        open_model(&m, EXAMPLES_DIR "/powertrain.xml");
+        assert_true(m.d.n <= 64);
+        hx_simulation_options so = {0};
+        hx_integrator_defaults(&so.integration);
+        so.integration.method = HX_METHOD_BDF;
+        so.integration.linear_solver = k ? HX_LINEAR_KLU : HX_LINEAR_DENSE;
+        so.integration.rtol = 1e-6;
+        so.integration.atol = 1e-9;
+        so.integration.t_end = so.integration.output_interval = 0.6;
+        so.integration.max_steps = 5000; /* five times what it takes: a broken matrix stops */
+        so.skip_energy = 1;
+        hx_simulate(&m.d, &so, y[k], &r[k]);
+        assert_int_equal(r[k].status, HX_INTEGRATION_OK);
+        close_model(&m);
+    }
+    assert_int_equal(r[0].stats.linear_solver, HX_LINEAR_DENSE);
+    assert_int_equal(r[1].stats.linear_solver, HX_LINEAR_KLU);
+    const hx_integrator_stats *dense = &r[0].stats, *klu = &r[1].stats;
+    printf("  powertrain to 0.6 s: dense %ld steps, %ld Newton iterations, %ld Jacobians;"
+           " KLU %ld, %ld, %ld\n", dense->steps, dense->newton_iterations, dense->jacobians,
+           klu->steps, klu->newton_iterations, klu->jacobians);
+    assert_true(labs(klu->steps - dense->steps) <= dense->steps / 20);
+    assert_true(labs(klu->newton_iterations - dense->newton_iterations) <=
+                dense->newton_iterations / 20);
+    assert_true(labs(klu->jacobians - dense->jacobians) <= 2 + dense->jacobians / 10);
+    double worst = 0.0;
+    for (int i = 0; i < r[0].n; ++i)
+        worst = fmax(worst, fabs(y[1][i] - y[0][i]) / (1.0 + fabs(y[0][i])));
+    assert_true(worst < 1e-4);
+}
+
 /* hx_wrms_norm: by hand, then against SUNDIALS' serial vector's own norm on
  * every length from 0 to 13 (the partial sums' tails) and the 64-body
  * chain's 834, with values of every sign and size; and installed, it is the
@@ -695,6 +739,7 @@ int main(void)
         cmocka_unit_test(newton_matrix_with_state_equations_diffs_and_loads),
         cmocka_unit_test(differences_by_column_groups_equal_them_column_by_column),
         cmocka_unit_test(the_norm_is_sundials_own),
+        cmocka_unit_test(the_one_pass_newton_matrix_is_cvodes),
         cmocka_unit_test(bdf_converges_at_its_order),
         cmocka_unit_test(a_wrong_partial_costs_newton_iterations_not_accuracy),
         cmocka_unit_test(a_twin_that_disagrees_is_set_aside),

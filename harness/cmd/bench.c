@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "tools/bench/call_cost.h"
+#include "tools/bench/entry_cost.h"
 #include "cmd/commands.h"
 #include "cmd/crash_report.h"
 #include "cmd/options.h"
@@ -53,7 +53,7 @@ typedef struct comparison {
     int base, other; /* force indices */
 } comparison;
 
-static const hx_call_cost *cost_of(const hx_call_cost *costs, int n, int force_index)
+static const hx_entry_cost *cost_of(const hx_entry_cost *costs, int n, int force_index)
 {
     for (int k = 0; k < n; ++k)
         if (costs[k].force_index == force_index)
@@ -100,7 +100,7 @@ static int costs_section(hx_session *s, const bench_options *o)
         printf("cost per call and right-hand side split: not measured: %s\n", msg.text);
         return 0;
     }
-    hx_call_cost *costs = calloc(256, sizeof *costs);
+    hx_entry_cost *costs = calloc(256, sizeof *costs);
     hx_rhs_cost rc;
     int n = 0;
     if (costs == NULL || hx_measure_rhs_cost(s, o->repeats, costs, 256, &n, &rc, &msg) != 0) {
@@ -109,7 +109,7 @@ static int costs_section(hx_session *s, const bench_options *o)
         return 1;
     }
     printf("cost per call (median of %d batches):\n", o->repeats);
-    hx_print_call_costs(stdout, costs, n);
+    hx_print_entry_costs(stdout, costs, n);
     if (rc.user_calls == 0)
         printf("right-hand side: %.1f ns per evaluation (no user entries)\n", rc.rhs_ns);
     else
@@ -118,8 +118,8 @@ static int costs_section(hx_session *s, const bench_options *o)
                rc.user_calls, rc.user_ns, rc.harness_ns,
                rc.user_ns > 0.0 ? 100.0 * rc.harness_ns / rc.user_ns : 0.0);
     for (int k = 0; k < o->ncompare; ++k) {
-        const hx_call_cost *base = cost_of(costs, n, o->compare[k].base);
-        const hx_call_cost *other = cost_of(costs, n, o->compare[k].other);
+        const hx_entry_cost *base = cost_of(costs, n, o->compare[k].base);
+        const hx_entry_cost *other = cost_of(costs, n, o->compare[k].other);
         if (base == NULL || other == NULL) {
             printf("added cost %s: not a user element of the model\n", o->compare[k].text);
             continue;
@@ -128,7 +128,7 @@ static int costs_section(hx_session *s, const bench_options *o)
                " differences)\n", other->element, other->function, base->element,
                base->function, hx_added_cost(base, other, o->repeats));
     }
-    hx_call_costs_free(costs, n);
+    hx_entry_costs_free(costs, n);
     free(costs);
     return 0;
 }

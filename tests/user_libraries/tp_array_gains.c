@@ -4,8 +4,9 @@
  * A 6-direction linear spring-damper whose twelve gains come from the model,
  * as many real libraries take their tables:
  *     F_k = -K_k * d_k - C_k * v_k,   k = x, y, z, ax, ay, az
- * with (K_1..K_6, C_1..C_6) the twelve numbers of an IC Reference_Array,
- * read with one c_sysary("ARRAY") into a buffer of twelve;
+ * with (K_1..K_6, C_1..C_6) the last twelve numbers of an IC Reference_Array
+ * of 12 to 64 (a table whose head holds other data), read with one
+ * c_sysary("ARRAY");
  * d = (DX, DY, DZ, AX, AY, AZ) and v = (VX, VY, VZ, WX, WY, WZ) by c_sysfnc.
  * USER(i_marker, j_marker, array_id). The dependency pass makes the same
  * queries. No static state.
@@ -53,16 +54,17 @@ USRSUB_EXPORT void STDCALL GFOSUB(int *id, double *time, double *par, int *npar,
         c_errmes(1, msg, *id, "STOP");
         return;
     }
-    double gains[12] = {0};
+    double table[64] = {0};
     int count = 0, errflg = 0;
-    c_sysary("ARRAY", array, 1, gains, &count, &errflg);
-    if (errflg != 0 || count != 12) {
+    c_sysary("ARRAY", array, 1, table, &count, &errflg);
+    if (errflg != 0 || count < 12 || count > 64) {
         char msg[200];
-        snprintf(msg, sizeof msg, "tp_array_gains: element %d: array %d must hold 12 numbers,"
-                 " got %d", *id, array[0], count);
+        snprintf(msg, sizeof msg, "tp_array_gains: element %d: array %d must hold 12 to 64"
+                 " numbers, got %d", *id, array[0], count);
         c_errmes(1, msg, *id, "STOP");
         return;
     }
+    const double *gains = table + count - 12;
     const int ij[2] = {i_mk, j_mk}, ijj[3] = {i_mk, j_mk, j_mk};
     const int ijjj[4] = {i_mk, j_mk, j_mk, j_mk};
     static const char *const dname[6] = {"DX", "DY", "DZ", "AX", "AY", "AZ"};

@@ -45,7 +45,6 @@ typedef struct bdf_context {
                                  * sparse one when own_system) */
     int own_system;             /* KLU: A = I - gamma J written here in one pass (linear_system) */
     int *diagonal;              /* own_system: where each column's diagonal is in values */
-    long jacobians;             /* own_system: J evaluated (CVODE counts only its own) */
     double *increment, *work;   /* n and 2n: the differences' */
     long fd_evaluations;
     double seconds;
@@ -132,12 +131,11 @@ static int linear_system(double t, N_Vector y, N_Vector fy, SUNMatrix A, sunbool
     bdf_context *c = user_data;
     const hx_sparsity *sp = c->s.r->ode->sparsity;
     *jcur = SUNFALSE;
-    if (!jok || c->jacobians == 0) {
+    if (!jok) { /* false at the first step and after a failure: the kept values are whole */
         const int status = newton_jacobian(t, y, fy, A, user_data, tmp1, tmp2, tmp3);
         if (status != 0)
             return status;
-        ++c->jacobians;
-        *jcur = SUNTRUE;
+        *jcur = SUNTRUE; /* CVODE counts it */
     }
     sunindextype *ptr = SM_INDEXPTRS_S(A), *ind = SM_INDEXVALS_S(A);
     double *a = SM_DATA_S(A);
@@ -271,6 +269,7 @@ hx_status hx_integrate_bdf(hx_integration *r, double t0, double *y)
     ok = ok && CVodeSetLinearSolver(solver, ls, A) == CV_SUCCESS;
     /* NULL: CVODE's own difference quotients, column by column (no sparsity) */
     ok = ok && CVodeSetJacFn(solver, ours ? newton_jacobian : NULL) == CV_SUCCESS;
+    /* after CVodeSetJacFn, which clears a linear-system function */
     if (ok && c.own_system)
         ok = CVodeSetLinSysFn(solver, linear_system) == CV_SUCCESS;
     ok = ok && CVodeSetStopTime(solver, opt->t_end) == CV_SUCCESS;
@@ -301,8 +300,6 @@ hx_status hx_integrate_bdf(hx_integration *r, double t0, double *y)
     st->nonzeros = c.sparse ? sp->nnz : (long)o->n * o->n;
     st->column_groups = c.groups.count;
     st->jacobian_seconds = c.seconds;
-    if (c.own_system)
-        st->jacobians = c.jacobians;
     if (ours)
         st->fd_jacobian_evaluations = c.fd_evaluations;
     CVodeFree(&solver);

@@ -3,10 +3,10 @@
 
 #include <math.h>
 
-double hx_wrms_norm(const double *x, const double *w, long n)
+double hx_wrms_norm(const double *x, const double *w, sunindextype n)
 {
     double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    long i = 0;
+    sunindextype i = 0;
     for (; i + 4 <= n; i += 4) {
         const double a = x[i] * w[i], b = x[i + 1] * w[i + 1];
         const double c = x[i + 2] * w[i + 2], d = x[i + 3] * w[i + 3];
@@ -19,7 +19,7 @@ double hx_wrms_norm(const double *x, const double *w, long n)
 
 static sunrealtype wrms_norm_op(N_Vector x, N_Vector w)
 {
-    return hx_wrms_norm(NV_DATA_S(x), NV_DATA_S(w), (long)NV_LENGTH_S(x));
+    return hx_wrms_norm(NV_DATA_S(x), NV_DATA_S(w), NV_LENGTH_S(x));
 }
 
 void hx_wrms_norm_install(N_Vector v)

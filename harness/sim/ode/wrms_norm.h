@@ -10,7 +10,8 @@
 
 #include <nvector/nvector_serial.h>
 
-double hx_wrms_norm(const double *x, const double *w, long n);
+/* 0 for n = 0 (SUNDIALS' own divides by n). */
+double hx_wrms_norm(const double *x, const double *w, sunindextype n);
 
 /* Makes v (and every vector SUNDIALS clones from it) take hx_wrms_norm. */
 void hx_wrms_norm_install(N_Vector v);

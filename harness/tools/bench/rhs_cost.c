@@ -235,7 +235,7 @@ int hx_rhs_cost_supported(const hx_session *s, hx_message *msg)
     return 0;
 }
 
-int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
+int hx_measure_rhs_cost(hx_session *s, int repeats, hx_entry_cost *costs, int capacity,
                         int *ncosts, hx_rhs_cost *out, hx_message *msg)
 {
     memset(out, 0, sizeof *out);
@@ -262,7 +262,7 @@ int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int cap
         hx_timed_body bodies[3] = {{run_rhs, &as_is, real},
                                    {run_rhs, &replayed, replay},
                                    {run_standins, &alone, alone_ns}};
-        *ncosts = hx_measure_call_costs_with(s, repeats, costs, capacity, bodies, 3);
+        *ncosts = hx_measure_entry_costs_with(s, repeats, costs, capacity, bodies, 3);
         if (*ncosts < 0) {
             *ncosts = 0;
             status = hx_fail(msg, "out of memory");

@@ -11,7 +11,7 @@
 #ifndef HX_RHS_COST_H
 #define HX_RHS_COST_H
 
-#include "tools/bench/call_cost.h"
+#include "tools/bench/entry_cost.h"
 #include "sim/dynamics/dynamics.h"
 
 typedef struct hx_rhs_cost {
@@ -26,9 +26,9 @@ typedef struct hx_rhs_cost {
  * forms of force, coupler and state-equation routines only). */
 int hx_rhs_cost_supported(const hx_session *s, hx_message *msg);
 
-/* Fills costs (as hx_measure_call_costs; *ncosts rows) and out at the
+/* Fills costs (as hx_measure_entry_costs; *ncosts rows) and out at the
  * model's initial state. Returns 0, or -1 with msg. */
-int hx_measure_rhs_cost(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
+int hx_measure_rhs_cost(hx_session *s, int repeats, hx_entry_cost *costs, int capacity,
                         int *ncosts, hx_rhs_cost *out, hx_message *msg);
 
 #endif

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "tools/bench/call_cost.h"
+#include "tools/bench/entry_cost.h"
 #include "tools/bench/linear_reference.h"
 #include "tools/plot.h"
 #include "sim/simulation/simulation.h"

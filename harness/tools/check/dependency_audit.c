@@ -24,8 +24,6 @@
 #include "tools/check/element_samples.h"
 
 #define MAX_OUT 8
-/* Components of one query whose use is recorded: an ARRAY may be longer. */
-#define USED_BITS 32
 
 static int outputs_at(hx_binding *b, const hx_frames *s, hx_call *call, double out[MAX_OUT])
 {
@@ -74,9 +72,11 @@ typedef struct audit {
     int nout;           /* outputs compared */
     const char *what;   /* "force", or "output" for the routines that are not forces */
     int failures, states, checked, influencing, unreached;
-    unsigned used[HX_MAX_QUERIES]; /* a bit per component, the first USED_BITS */
     int counts[HX_MAX_QUERIES];
-    double *answer0, *answer1; /* room for any query's answer (hx_query_capacity) */
+    int capacity;              /* the most numbers any query answers (hx_query_capacity) */
+    double *answer0, *answer1; /* capacity each */
+    /* which components of query q move the outputs: used[q * capacity + c] */
+    unsigned char *used;
     FILE *out;
 } audit;
 
@@ -197,7 +197,7 @@ static int audit_queries(audit *a, const double *out0)
         double *v = a->answer0;
         const hx_query *dq = &b->deps.query[q];
         a->counts[q] = hx_answer_query(&a->base, dq->fnc, dq->ipar, dq->nsize, dq->is_array, v);
-        for (int c = 0; c < a->counts[q] && c < USED_BITS; ++c) {
+        for (int c = 0; c < a->counts[q]; ++c) {
             hx_call call;
             double out1[MAX_OUT];
             hx_binding_call_init(b, &call, 0, &a->base, 0);
@@ -207,7 +207,7 @@ static int audit_queries(audit *a, const double *out0)
             if (outputs_at(b, &a->base, &call, out1) != 0)
                 return -1;
             if (differs(out0, out1, a->nout, 1e-12))
-                a->used[q] |= 1u << c;
+                a->used[(size_t)q * (size_t)a->capacity + (size_t)c] = 1;
         }
     }
     return 0;
@@ -244,10 +244,14 @@ static void summarize(audit *a, double t_last)
     for (int q = 0; q < b->deps.count; ++q) {
         char qt[64];
         hx_query_text(&b->deps.query[q], qt, sizeof qt);
-        used_len += (size_t)snprintf(used_text + used_len, sizeof used_text - used_len,
-                                     "%s%s uses %d of %d", q ? ", " : "", qt,
-                                     __builtin_popcount(a->used[q]), a->counts[q]);
-        if (a->used[q] == 0 && a->failures == 0) {
+        int used = 0;
+        for (int c = 0; c < a->counts[q]; ++c)
+            used += a->used[(size_t)q * (size_t)a->capacity + (size_t)c];
+        if (used_len < sizeof used_text) /* else the line is cut short */
+            used_len += (size_t)snprintf(used_text + used_len, sizeof used_text - used_len,
+                                         "%s%s uses %d of %d", q ? ", " : "", qt, used,
+                                         a->counts[q]);
+        if (used == 0 && a->failures == 0) {
             fprintf(a->out, "  %s %d: FAIL: declares %s but its %s depends on it at none of the"
                     " %d states\n", b->element, b->id, qt, a->what, HX_FORCE_SAMPLES - 1);
             ++a->failures;
@@ -273,6 +277,7 @@ static void audit_free(audit *a)
     hx_frames_free(&a->moved);
     free(a->answer0);
     free(a->answer1);
+    free(a->used);
 }
 
 int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
@@ -283,10 +288,12 @@ int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
     a.s = s, a.b = b, a.out = out;
     a.nout = b->kind == HX_BIND_GFOSUB ? 6 : hx_binding_output_count(b);
     a.what = b->kind == HX_BIND_GFOSUB ? "force" : "output";
-    const size_t capacity = (size_t)hx_query_capacity(m);
+    a.capacity = hx_query_capacity(m);
+    const size_t capacity = (size_t)a.capacity;
     a.answer0 = malloc(sizeof(double) * capacity);
     a.answer1 = malloc(sizeof(double) * capacity);
-    if (a.answer0 == NULL || a.answer1 == NULL || hx_frames_clone(&a.base, &s->frames) != 0 ||
+    a.used = calloc(HX_MAX_QUERIES * capacity, 1);
+    if (a.answer0 == NULL || a.answer1 == NULL || a.used == NULL || hx_frames_clone(&a.base, &s->frames) != 0 ||
         hx_frames_clone(&a.moved, &s->frames) != 0) {
         fprintf(out, "  %s %d: FAIL: out of memory for the dependency audit\n", b->element, b->id);
         audit_free(&a);

@@ -11,7 +11,7 @@
 
 #include "host/session.h"
 
-typedef struct hx_call_cost {
+typedef struct hx_entry_cost {
     char element[64];
     char function[32];
     double median_ns, min_ns, max_ns;
@@ -25,7 +25,7 @@ typedef struct hx_call_cost {
      * answering one evaluation's queries (0 for FIESUB and couplers), and the
      * median over rounds of the cost over the floor */
     double empty_ns, host_ns, floor_ratio;
-} hx_call_cost;
+} hx_entry_cost;
 
 /* Further bodies timed in the same rounds as the entries (one call per
  * iteration), e.g. a right-hand side that calls them. */
@@ -38,18 +38,18 @@ typedef struct hx_timed_body {
 /* Times each entry of each user element (COUSUB, COUXX and COUXX2 separately),
  * and the extra bodies in the same rounds. Returns the number of rows written
  * into costs (at most capacity), or -1 when out of memory (nothing timed). */
-int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
+int hx_measure_entry_costs_with(hx_session *s, int repeats, hx_entry_cost *costs, int capacity,
                                hx_timed_body *extra, int nextra);
 
-void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count);
+void hx_print_entry_costs(FILE *f, const hx_entry_cost *costs, int count);
 
 /* The median of n timings (sorts v in place; v[0] and v[n-1] are then the
  * extremes). */
 double hx_median(double *v, int n);
-void hx_call_costs_free(hx_call_cost *costs, int count);
+void hx_entry_costs_free(hx_entry_cost *costs, int count);
 
 /* Median over rounds of other's cost minus base's in the same round: a slow
  * spell of the machine cancels out of the difference. */
-double hx_added_cost(const hx_call_cost *base, const hx_call_cost *other, int repeats);
+double hx_added_cost(const hx_entry_cost *base, const hx_entry_cost *other, int repeats);
 
 #endif

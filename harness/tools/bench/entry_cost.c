@@ -1,6 +1,6 @@
-/* Cost per call of the user entries (call_cost.h). */
+/* Cost per call of the user entries (entry_cost.h). */
 #define _GNU_SOURCE /* sched_setaffinity, sched_getcpu */
-#include "tools/bench/call_cost.h"
+#include "tools/bench/entry_cost.h"
 
 #include <sched.h>
 #include <math.h>
@@ -250,7 +250,7 @@ static double median_of(const double *ns, int repeats)
     return median;
 }
 
-int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, int capacity,
+int hx_measure_entry_costs_with(hx_session *s, int repeats, hx_entry_cost *costs, int capacity,
                                hx_timed_body *extra, int nextra)
 {
     /* the entries, the empty call, the host replays (one per GFOSUB row), the extras */
@@ -285,7 +285,7 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
                 contexts[ncontexts++] = cb;
                 replay_of[rows] = -1;
                 entries[rows] = (timed_entry){run_coupler, cb, 0, NULL};
-                hx_call_cost *r = &costs[rows++];
+                hx_entry_cost *r = &costs[rows++];
                 snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
                 snprintf(r->function, sizeof r->function, "%s", b->names[fn]);
                 r->host_calls = r->dependency_calls = 0;
@@ -314,7 +314,7 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
                 replay_of[rows] = -1;
             }
             entries[rows] = (timed_entry){run_gfosub, gb, 0, NULL};
-            hx_call_cost *r = &costs[rows++];
+            hx_entry_cost *r = &costs[rows++];
             snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
             snprintf(r->function, sizeof r->function, "%s", b->names[0]);
             r->dependency_calls = dep.host_calls;
@@ -330,7 +330,7 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
             contexts[ncontexts++] = fb;
             replay_of[rows] = -1;
             entries[rows] = (timed_entry){run_fiesub, fb, 0, NULL};
-            hx_call_cost *r = &costs[rows++];
+            hx_entry_cost *r = &costs[rows++];
             snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
             snprintf(r->function, sizeof r->function, "%s", b->names[0]);
             r->host_calls = r->dependency_calls = 0;
@@ -347,7 +347,7 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
                 contexts[ncontexts++] = sb;
                 replay_of[rows] = -1;
                 entries[rows] = (timed_entry){run_state, sb, 0, NULL};
-                hx_call_cost *r = &costs[rows++];
+                hx_entry_cost *r = &costs[rows++];
                 snprintf(r->element, sizeof r->element, "%s %d", b->element, b->id);
                 snprintf(r->function, sizeof r->function, "%s", b->names[which]);
                 r->host_calls = r->dependency_calls = 0;
@@ -389,7 +389,7 @@ int hx_measure_call_costs_with(hx_session *s, int repeats, hx_call_cost *costs, 
     const double *empty_ns = has_floor ? entries[empty_index].ns : NULL;
     const double empty_median = has_floor ? median_of(empty_ns, repeats) : NAN;
     for (int k = 0; k < rows; ++k) {
-        hx_call_cost *c = &costs[k];
+        hx_entry_cost *c = &costs[k];
         c->rounds = entries[k].ns; /* the caller frees them */
         c->median_ns = median_of(entries[k].ns, repeats);
         c->min_ns = c->max_ns = entries[k].ns[0];
@@ -415,13 +415,13 @@ out_of_memory:
     return -1;
 }
 
-void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count)
+void hx_print_entry_costs(FILE *f, const hx_entry_cost *costs, int count)
 {
     fprintf(f, "%-26s %-20s %10s %8s %8s %10s %9s %9s %9s %7s\n", "element", "function",
             "median ns", "min ns", "max ns", "host/eval", "host/dep", "host ns", "floor ns",
             "ratio");
     for (int k = 0; k < count; ++k) {
-        const hx_call_cost *c = &costs[k];
+        const hx_entry_cost *c = &costs[k];
         fprintf(f, "%-26s %-20s %10.1f %8.1f %8.1f %10d %9d %9.1f %9.1f %7.2f\n", c->element,
                 c->function, c->median_ns, c->min_ns, c->max_ns, c->host_calls,
                 c->dependency_calls, c->host_ns, c->empty_ns + c->host_ns, c->floor_ratio);
@@ -432,7 +432,7 @@ void hx_print_call_costs(FILE *f, const hx_call_cost *costs, int count)
                 " entry's cost over its floor's in the same round\n", costs[0].empty_ns);
 }
 
-void hx_call_costs_free(hx_call_cost *costs, int count)
+void hx_entry_costs_free(hx_entry_cost *costs, int count)
 {
     for (int k = 0; k < count; ++k) {
         free(costs[k].rounds);
@@ -440,7 +440,7 @@ void hx_call_costs_free(hx_call_cost *costs, int count)
     }
 }
 
-double hx_added_cost(const hx_call_cost *base, const hx_call_cost *other, int repeats)
+double hx_added_cost(const hx_entry_cost *base, const hx_entry_cost *other, int repeats)
 {
     double *d = malloc(sizeof(double) * (size_t)repeats);
     if (d == NULL)
