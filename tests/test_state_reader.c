@@ -411,35 +411,37 @@ static void routine_errors_name_element_and_line(void **state)
                    "val = \"2\" and a user routine");
 }
 
+/* The model of `parts`, written as `name`, reads, and binding its routines
+ * fails: the message in msg. */
+static void expect_bind_fails(const char *name, const char *parts, hx_message *msg)
+{
+    hx_model *m = read_parts(name, parts, msg);
+    if (m == NULL)
+        fail_msg("%s", msg->text);
+    hx_messages messages;
+    hx_messages_init(&messages, NULL);
+    hx_bindings bindings;
+    assert_int_equal(hx_bind(m, &messages, &bindings, msg), -1);
+    hx_bindings_free(&bindings);
+    hx_messages_destroy(&messages);
+    hx_model_free(m);
+}
+
 static void the_partial_routines_are_optional_unless_named(void **state)
 {
     (void)state;
     /* the library's default names bind; a named routine that is missing is an error */
     char parts[2048];
+    hx_message msg;
     snprintf(parts, sizeof parts, X3 ELEMENT("x_array_id=\"31\" num_state=\"3\""
              " usrsub_dll_name=\"%s\" usrsub_der2_name=\"NO_SUCH_XU\""), USRSUB_LIBRARY);
-    hx_message msg;
-    hx_model *m = read_parts("named.xml", parts, &msg);
-    if (m == NULL)
-        fail_msg("%s", msg.text);
-    hx_messages messages;
-    hx_messages_init(&messages, NULL);
-    hx_bindings bindings;
-    assert_int_equal(hx_bind(m, &messages, &bindings, &msg), -1);
+    expect_bind_fails("named.xml", parts, &msg);
     assert_contains(msg.text, "named.xml:8:", "Force_StateEqn 7", "'NO_SUCH_XU' not found");
-    hx_bindings_free(&bindings);
-    hx_messages_destroy(&messages);
-    hx_model_free(m);
+    /* the probe library exports no state-equation entry at all: YFOSUB is needed */
     snprintf(parts, sizeof parts, X3 ELEMENT("x_array_id=\"31\" num_state=\"3\""
              " usrsub_dll_name=\"%s\""), HOSTPROBE_LIBRARY);
-    assert_non_null(m = read_parts("defaults_bind.xml", parts, &msg));
-    hx_messages_init(&messages, NULL);
-    /* the probe library exports no state-equation entry at all: YFOSUB is needed */
-    assert_int_equal(hx_bind(m, &messages, &bindings, &msg), -1);
+    expect_bind_fails("defaults_bind.xml", parts, &msg);
     assert_contains(msg.text, "Force_StateEqn 7", "'YFOSUB' not found");
-    hx_bindings_free(&bindings);
-    hx_messages_destroy(&messages);
-    hx_model_free(m);
 }
 
 /* A routine with its default name found in neither form: both lookups named. */
@@ -447,22 +449,13 @@ static void a_routine_in_neither_form_is_named(void **state)
 {
     (void)state;
     char parts[1024];
+    hx_message msg;
     snprintf(parts, sizeof parts, "<Post_Request id=\"8\" usrsub_param_string=\"USER(1)\""
              " usrsub_dll_name=\"%s\"/>\n", HOSTPROBE_LIBRARY);
-    hx_message msg;
-    hx_model *m = read_parts("neither.xml", parts, &msg);
-    if (m == NULL)
-        fail_msg("%s", msg.text);
-    hx_messages messages;
-    hx_messages_init(&messages, NULL);
-    hx_bindings bindings;
-    assert_int_equal(hx_bind(m, &messages, &bindings, &msg), -1);
+    expect_bind_fails("neither.xml", parts, &msg);
     assert_contains(msg.text, "Post_Request 8", "function 'REQSUB' not found",
                     "(looked up REQSUB, reqsub_ and reqsub)",
                     "nor in the C-style form: function 'Reqsub' not found");
-    hx_bindings_free(&bindings);
-    hx_messages_destroy(&messages);
-    hx_model_free(m);
 }
 
 /* A U array of another length than the library's bushing takes: the
