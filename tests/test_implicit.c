@@ -17,6 +17,8 @@
 #include <unistd.h>
 
 #include "cmd/commands.h"
+#include "sim/dynamics/element_probe.h"
+#include "sim/dynamics/energy.h"
 #include "sim/newton/newton_matrix.h"
 #include "sim/ode/column_groups.h"
 #include "sim/ode/wrms_norm.h"
@@ -729,6 +731,43 @@ static void the_norm_is_sundials_own(void **state)
     SUNContext_Free(&context);
 }
 
+/* The elastic energy at every output time, at the size of a full vehicle:
+ * one copy of the frames serves all its 73 bushings (each moved GFOSUB body
+ * put back), so the energy equals the sum of each element's potential from
+ * a fresh copy, and leaves the copy as it found it. A body not put back
+ * changes the next elements' potentials. */
+static void the_energy_of_every_element_from_one_copy_of_the_frames(void **state)
+{
+    (void)state;
+    model m;
+    open_model(&m, EXAMPLES_DIR "/full_vehicle.xml");
+    hx_dynamics *d = &m.d;
+    double *y = malloc(sizeof(double) * (size_t)d->n);
+    assert_non_null(y);
+    /* deformed: the bump under the left wheels has begun */
+    simulate(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-6, 0.15, y);
+    const double t = 0.15;
+    const hx_energy e = hx_energy_of(d, t, y);
+    assert_int_equal(memcmp(d->probe.bodies, d->frames.bodies,
+                            sizeof *d->frames.bodies * (size_t)d->m->nbodies), 0);
+    assert_int_equal(memcmp(d->probe.markers, d->frames.markers,
+                            sizeof *d->frames.markers * (size_t)d->m->nmarkers), 0);
+    double sum = 0.0;
+    int gfosub = 0;
+    for (int k = 0; k < d->m->nforces; ++k) {
+        hx_frames_copy(&d->probe, &d->frames);
+        sum += hx_element_potential(d->s, &d->probe, &d->frames, k, t);
+        gfosub += hx_binding_of_force(&d->s->bindings, k)->kind != HX_BIND_FIESUB;
+    }
+    printf("  elastic energy %.10g from one copy, %.10g from a copy each (%d GFOSUB elements)\n",
+           e.elastic, sum, gfosub);
+    assert_true(gfosub >= 20);
+    assert_true(fabs(e.elastic) > 0.0);
+    assert_true(e.elastic == sum);
+    free(y);
+    close_model(&m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -740,6 +779,7 @@ int main(void)
         cmocka_unit_test(differences_by_column_groups_equal_them_column_by_column),
         cmocka_unit_test(the_norm_is_sundials_own),
         cmocka_unit_test(the_one_pass_newton_matrix_is_cvodes),
+        cmocka_unit_test(the_energy_of_every_element_from_one_copy_of_the_frames),
         cmocka_unit_test(bdf_converges_at_its_order),
         cmocka_unit_test(a_wrong_partial_costs_newton_iterations_not_accuracy),
         cmocka_unit_test(a_twin_that_disagrees_is_set_aside),

@@ -23,7 +23,10 @@ typedef struct hx_frames {
     double time;
     hx_frame *bodies;   /* nbodies */
     hx_frame *markers;  /* nmarkers: tracked markers are current after hx_frames_update */
-    int *moving;        /* tracked markers on moving bodies: what the update recomputes */
+    int *moving;        /* tracked markers on moving bodies: what the update recomputes,
+                         * body by body */
+    int *first_moving;  /* nbodies + 1: body b's are moving[first_moving[b] ..
+                         * first_moving[b + 1] - 1] */
     int nmoving;
     /* the Control_Diff states, two per element in the order of their slots
      * (model.h): the value and its rate (DIF and DIF1), ic and ic_dot at first */
@@ -42,6 +45,11 @@ void hx_frames_copy(hx_frames *to, const hx_frames *from);
 /* The kinematics stage: world frames of the tracked markers of moving bodies
  * from the bodies' frames (those on ground never move). */
 void hx_frames_update(hx_frames *s);
+
+/* The same for one body's markers alone (a probe that moved one body). */
+void hx_frames_update_body(hx_frames *s, int body);
+/* Copies one body's frame and its tracked markers' (undoing such a move). */
+void hx_frames_copy_body(hx_frames *to, const hx_frames *from, int body);
 
 /* World frame of marker index (-1: the world frame) in these frames: the kept
  * one when the marker is tracked, else computed into scratch. */

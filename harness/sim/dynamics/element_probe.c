@@ -50,12 +50,14 @@ int hx_rotation_from_angles(const double a[3], double R[9])
     return hx_max_abs(f, 3) < 1e-12 ? 0 : -1;
 }
 
-void hx_place_pose(const hx_frames *base, hx_frames *out, int i_marker, int j_marker,
-                   const double p[3], const double Rrel[9], const double v[3],
-                   const double w[3])
+/* Moves the body that carries i_marker in out so that the I marker sits at
+ * (p, Rrel) and moves at (v, w) relative to the J marker as base has it;
+ * returns that body. Only its frame is written, not its markers'. */
+static int place_body(const hx_frames *base, hx_frames *out, int i_marker, int j_marker,
+                      const double p[3], const double Rrel[9], const double v[3],
+                      const double w[3])
 {
     const hx_model *m = base->model;
-    hx_frames_copy(out, base);
     hx_frame scratch;
     const hx_frame *J = hx_frames_marker(base, j_marker, &scratch);
     hx_frame I;
@@ -70,7 +72,6 @@ void hx_place_pose(const hx_frames *base, hx_frames *out, int i_marker, int j_ma
     v3_cross(wr, J->w, r);
     v3_add(I.v, J->v, vg);
     v3_add(I.v, I.v, wr);
-    /* the body frame that carries the I marker there */
     const hx_marker *mk = &m->markers[i_marker];
     hx_frame *b = &out->bodies[mk->body];
     m3_mult(b->R, I.R, mk->R_local);
@@ -81,6 +82,15 @@ void hx_place_pose(const hx_frames *base, hx_frames *out, int i_marker, int j_ma
     double wrb[3];
     v3_cross(wrb, b->w, rb);
     v3_sub(b->v, I.v, wrb);
+    return mk->body;
+}
+
+void hx_place_pose(const hx_frames *base, hx_frames *out, int i_marker, int j_marker,
+                   const double p[3], const double Rrel[9], const double v[3],
+                   const double w[3])
+{
+    hx_frames_copy(out, base);
+    place_body(base, out, i_marker, j_marker, p, Rrel, v, w);
     hx_frames_update(out);
 }
 
@@ -152,21 +162,31 @@ int hx_element_at(hx_session *s, hx_frames *scratch, const hx_frames *base, int 
     return status;
 }
 
-/* Force and torque on I in J axes with I at rest at pose (p, R) relative to J. */
+/* Force and torque on I in J axes with I at rest at pose (p, R) relative to
+ * J. scratch equals base on entry and on return: a FIESUB reads its
+ * deformation as arguments and the frames only through its queries; a
+ * GFOSUB's I body is moved and put back, its markers with it. */
 static int element_at_pose(hx_session *s, hx_frames *scratch, const hx_frames *base, int force,
                            double t, const double p[3], const double R[9], double F[6])
 {
-    const double zero[6] = {0, 0, 0, 0, 0, 0};
+    static const double zero[6] = {0, 0, 0, 0, 0, 0};
     hx_binding *b = hx_binding_of_force(&s->bindings, force);
+    scratch->time = t;
     if (b->kind == HX_BIND_FIESUB) {
-        double disp[6];
+        double disp[6], dfd[36], dfv[36];
         v3_copy(disp, p);
         hx_projection_angles(R, disp + 3);
-        return hx_element_at(s, scratch, base, force, t, disp, zero, F, NULL, NULL);
+        hx_invoke_fiesub(b, scratch, disp, zero, 0, 0, F, dfd, dfv, NULL);
+        scratch->time = base->time;
+        return hx_messages_stopped(&s->messages) ? -1 : 0;
     }
     const hx_force *f = &s->model->forces[b->index];
-    hx_place_pose(base, scratch, f->i_marker, f->j_marker, p, R, zero, zero);
-    return gfosub_placed(s, b, scratch, t, F);
+    const int body = place_body(base, scratch, f->i_marker, f->j_marker, p, R, zero, zero);
+    hx_frames_update_body(scratch, body);
+    const int status = gfosub_placed(s, b, scratch, t, F);
+    hx_frames_copy_body(scratch, base, body);
+    scratch->time = base->time;
+    return status;
 }
 
 double hx_element_potential(hx_session *s, hx_frames *scratch, const hx_frames *base, int force,

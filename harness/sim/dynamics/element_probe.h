@@ -35,7 +35,8 @@ int hx_element_at(hx_session *s, hx_frames *scratch, const hx_frames *base, int 
                   const double disp[6], const double velo[6], double F[6], double *dFdd,
                   double *dFdv);
 
-/* Elastic energy of the element at state base: minus the work of its force
+/* Elastic energy of the element at state base (scratch: a copy of base,
+ * which it is again on return; one copy serves every element): minus the work of its force
  * and torque on I, at rest, along the path from J's pose to I's that moves
  * straight and turns about one fixed axis (I at s x and exp(s [r]x) in J, s
  * from 0 to 1; 8-point Gauss-Legendre). For a conservative element any path

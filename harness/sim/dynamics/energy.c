@@ -25,6 +25,7 @@ hx_energy hx_energy_of(hx_dynamics *d, double t, const double *y)
         potential -= m->bodies[k].mass * v3_dot(m->gravity, f->p);
     }
     double elastic = 0.0;
+    hx_frames_copy(&d->probe, &d->frames);
     for (int k = 0; k < m->nforces; ++k)
         elastic += hx_element_potential(d->s, &d->probe, &d->frames, k, t);
     hx_energy e;
