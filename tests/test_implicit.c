@@ -21,7 +21,6 @@
 #include "sim/dynamics/energy.h"
 #include "sim/newton/newton_matrix.h"
 #include "sim/ode/column_groups.h"
-#include "sim/ode/wrms_norm.h"
 #include "sim_support.h"
 #include "test_support.h"
 #include "tools/bench/linear_reference.h"
@@ -695,42 +694,6 @@ static void the_one_pass_newton_matrix_is_cvodes(void **state)
     assert_true(worst < 1e-4);
 }
 
-/* hx_wrms_norm: by hand, then against SUNDIALS' serial vector's own norm on
- * every length from 0 to 13 (the partial sums' tails) and the 64-body
- * chain's 834, with values of every sign and size; and installed, it is the
- * norm of every vector cloned from the one it was installed on. */
-static void the_norm_is_sundials_own(void **state)
-{
-    (void)state;
-    const double three_four[2] = {3.0, 4.0}, halves[2] = {2.0, 0.5};
-    assert_close(hx_wrms_norm(three_four, halves, 2), sqrt((36.0 + 4.0) / 2.0), 1e-15, 0);
-    assert_close(hx_wrms_norm(three_four, halves, 0), 0.0, 0, 0);
-    SUNContext context;
-    assert_int_equal(SUNContext_Create(NULL, &context), 0);
-    unsigned seed = 12345u;
-    for (long n = 0; n <= 834; n = n < 13 ? n + 1 : 834) {
-        N_Vector x = N_VNew_Serial(n, context), w = N_VNew_Serial(n, context);
-        for (long i = 0; i < n; ++i) {
-            seed = seed * 1664525u + 1013904223u;
-            NV_Ith_S(x, i) = ((double)(seed >> 8) / 16777216.0 - 0.5) * pow(10.0, (double)(i % 7) - 3.0);
-            NV_Ith_S(w, i) = 1.0 / (1e-5 * fabs(NV_Ith_S(x, i)) + 1e-8 * (double)(1 + i % 3));
-        }
-        const double theirs = n > 0 ? N_VWrmsNorm(x, w) : 0.0;
-        const double ours = hx_wrms_norm(NV_DATA_S(x), NV_DATA_S(w), n);
-        assert_close(ours, theirs, 1e-14, 0);
-        hx_wrms_norm_install(x);
-        N_Vector clone = N_VClone(x);
-        assert_true(clone->ops->nvwrmsnorm == x->ops->nvwrmsnorm);
-        assert_true(w->ops->nvwrmsnorm != x->ops->nvwrmsnorm);
-        if (n > 0)
-            assert_close(N_VWrmsNorm(x, w), ours, 0, 0);
-        N_VDestroy(clone), N_VDestroy(x), N_VDestroy(w);
-        if (n == 834)
-            break;
-    }
-    SUNContext_Free(&context);
-}
-
 /* The elastic energy at every output time, at the size of a full vehicle:
  * one copy of the frames serves all its 73 bushings (each moved GFOSUB body
  * put back), so the energy equals the sum of each element's potential from
@@ -777,7 +740,6 @@ int main(void)
         cmocka_unit_test(newton_matrix_has_the_routines_rows),
         cmocka_unit_test(newton_matrix_with_state_equations_diffs_and_loads),
         cmocka_unit_test(differences_by_column_groups_equal_them_column_by_column),
-        cmocka_unit_test(the_norm_is_sundials_own),
         cmocka_unit_test(the_one_pass_newton_matrix_is_cvodes),
         cmocka_unit_test(the_energy_of_every_element_from_one_copy_of_the_frames),
         cmocka_unit_test(bdf_converges_at_its_order),

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "base/finite.h"
-#include "sim/ode/wrms_norm.h"
+#include "sim/ode/vector_ops.h"
 
 int hx_sundials_open(hx_sundials *s, hx_integration *r, double *y)
 {
@@ -25,7 +25,7 @@ int hx_sundials_open(hx_sundials *s, hx_integration *r, double *y)
         hx_sundials_close(s);
         return -1;
     }
-    hx_wrms_norm_install(s->y);
+    hx_vector_ops_install(s->y);
     return 0;
 }
 
