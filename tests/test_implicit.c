@@ -731,6 +731,70 @@ static void the_energy_of_every_element_from_one_copy_of_the_frames(void **state
     close_model(&m);
 }
 
+/* bushing_mount.xml with each of the replacements (from, to) made once. */
+static const char *mount_variant(const char *name, const char *const *pairs, int count)
+{
+    static char text[8192];
+    FILE *f = fopen(EXAMPLES_DIR "/bushing_mount.xml", "r");
+    assert_non_null(f);
+    const size_t size = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[size] = '\0';
+    for (int k = 0; k < count; ++k) {
+        char *at = strstr(text, pairs[2 * k]);
+        if (at == NULL)
+            fail_msg("bushing_mount.xml has no %s", pairs[2 * k]);
+        const size_t from = strlen(pairs[2 * k]), to = strlen(pairs[2 * k + 1]);
+        assert_true(strlen(text) - from + to < sizeof text);
+        memmove(at + to, at + from, strlen(at + from) + 1);
+        memcpy(at, pairs[2 * k + 1], to);
+    }
+    return test_write_file(name, text);
+}
+
+/* The elastic energy of the four mounts after 0.1 s, the same however the
+ * model is written: with ground not the first body (the frames' markers
+ * grouped by body start at a moving one), and with mount 1's I on ground
+ * (its GFOSUB probed by moving ground's frame, which carries I). */
+static void the_elastic_energy_does_not_depend_on_how_the_model_is_written(void **state)
+{
+    (void)state;
+    static const char *const gbs[2] = {"\"mount_linear.gbs\"",
+                                       "\"" EXAMPLES_DIR "/mount_linear.gbs\""};
+    static const char *const ground_second[6] = {
+        gbs[0], gbs[1], "<Body_Ground id=\"1\"/>", "",
+        /* after the block's own element */
+        "<Reference_Marker id=\"20\"", "<Body_Ground id=\"1\"/><Reference_Marker id=\"20\"",
+    };
+    static const char *const swapped[6] = {
+        gbs[0], gbs[1],
+        "i_marker_id=\"21\" j_floating_marker_id=\"11\" ref_marker_id=\"11\"",
+        "i_marker_id=\"11\" j_floating_marker_id=\"21\" ref_marker_id=\"21\"",
+        "USER(1, 21, 11, 100)", "USER(1, 11, 21, 100)",
+    };
+    const char *paths[3];
+    paths[0] = EXAMPLES_DIR "/bushing_mount.xml";
+    paths[1] = mount_variant("mount_ground_second.xml", ground_second, 3);
+    paths[2] = mount_variant("mount_swapped.xml", swapped, 3);
+    double elastic[3];
+    for (int k = 0; k < 3; ++k) {
+        model m;
+        open_model(&m, paths[k]);
+        double *y = malloc(sizeof(double) * (size_t)m.d.n);
+        assert_non_null(y);
+        simulate(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-11, 0.1, y);
+        if (k == 1)
+            assert_false(m.d.m->bodies[0].is_ground);
+        elastic[k] = hx_energy_of(&m.d, 0.1, y).elastic;
+        printf("  %s: elastic energy at 0.1 s %.12g\n", paths[k], elastic[k]);
+        free(y);
+        close_model(&m);
+    }
+    assert_true(fabs(elastic[0]) > 1e-4); /* wrong ones were 1e3 and more */
+    assert_close(elastic[1], elastic[0], 1e-7, 0);
+    assert_close(elastic[2], elastic[0], 1e-7, 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -742,6 +806,7 @@ int main(void)
         cmocka_unit_test(differences_by_column_groups_equal_them_column_by_column),
         cmocka_unit_test(the_one_pass_newton_matrix_is_cvodes),
         cmocka_unit_test(the_energy_of_every_element_from_one_copy_of_the_frames),
+        cmocka_unit_test(the_elastic_energy_does_not_depend_on_how_the_model_is_written),
         cmocka_unit_test(bdf_converges_at_its_order),
         cmocka_unit_test(a_wrong_partial_costs_newton_iterations_not_accuracy),
         cmocka_unit_test(a_twin_that_disagrees_is_set_aside),

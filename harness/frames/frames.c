@@ -28,11 +28,6 @@ void hx_marker_frame(const hx_model *m, const hx_frame *b, int marker, hx_frame 
     v3_add(out->v, b->v, wr);
 }
 
-/* A tracked marker on a moving body: the kinematics stage updates it. */
-static int moves(const hx_model *m, int marker)
-{
-    return m->markers[marker].tracked && !m->bodies[m->markers[marker].body].is_ground;
-}
 
 static void all_markers(hx_frames *s)
 {
@@ -47,11 +42,11 @@ int hx_frames_init(hx_frames *s, const hx_model *m)
     s->model = m;
     s->bodies = calloc((size_t)m->nbodies + 1, sizeof *s->bodies);
     s->markers = calloc((size_t)m->nmarkers + 1, sizeof *s->markers);
-    s->moving = calloc((size_t)m->nmarkers + 1, sizeof *s->moving);
-    s->first_moving = calloc((size_t)m->nbodies + 1, sizeof *s->first_moving);
+    s->tracked = calloc((size_t)m->nmarkers + 1, sizeof *s->tracked);
+    s->first_tracked = calloc((size_t)m->nbodies + 1, sizeof *s->first_tracked);
     s->diffs = calloc(2 * (size_t)m->nroutines_of[HX_ROUTINE_DIFF] + 1, sizeof *s->diffs);
-    if (s->bodies == NULL || s->markers == NULL || s->moving == NULL ||
-        s->first_moving == NULL || s->diffs == NULL) {
+    if (s->bodies == NULL || s->markers == NULL || s->tracked == NULL ||
+        s->first_tracked == NULL || s->diffs == NULL) {
         hx_frames_free(s);
         return -1;
     }
@@ -66,17 +61,16 @@ int hx_frames_init(hx_frames *s, const hx_model *m)
     /* grouped by body (a counting sort), so that one body's markers can be
      * updated alone: count, then place each at its body's next free slot */
     for (int k = 0; k < m->nmarkers; ++k)
-        if (moves(m, k))
-            s->first_moving[m->markers[k].body + 1]++;
+        if (m->markers[k].tracked)
+            s->first_tracked[m->markers[k].body + 1]++;
     for (int b = 0; b < m->nbodies; ++b)
-        s->first_moving[b + 1] += s->first_moving[b];
-    s->nmoving = s->first_moving[m->nbodies];
+        s->first_tracked[b + 1] += s->first_tracked[b];
     for (int k = 0; k < m->nmarkers; ++k)
-        if (moves(m, k))
-            s->moving[s->first_moving[m->markers[k].body]++] = k;
+        if (m->markers[k].tracked)
+            s->tracked[s->first_tracked[m->markers[k].body]++] = k;
     for (int b = m->nbodies; b > 0; --b) /* each now holds the next body's start */
-        s->first_moving[b] = s->first_moving[b - 1];
-    s->first_moving[0] = 0;
+        s->first_tracked[b] = s->first_tracked[b - 1];
+    s->first_tracked[0] = 0;
     for (int k = 0; k < m->nroutines; ++k)
         if (m->routines[k].kind == HX_ROUTINE_DIFF)
             memcpy(&s->diffs[2 * m->routines[k].slot], m->routines[k].ic, sizeof(double[2]));
@@ -88,8 +82,8 @@ void hx_frames_free(hx_frames *s)
 {
     free(s->bodies);
     free(s->markers);
-    free(s->moving);
-    free(s->first_moving);
+    free(s->tracked);
+    free(s->first_tracked);
     free(s->diffs);
     memset(s, 0, sizeof *s);
 }
@@ -114,17 +108,16 @@ void hx_frames_copy(hx_frames *to, const hx_frames *from)
 void hx_frames_update(hx_frames *s)
 {
     const hx_model *m = s->model;
-    for (int n = 0; n < s->nmoving; ++n) {
-        const int k = s->moving[n];
-        hx_marker_frame(m, &s->bodies[m->markers[k].body], k, &s->markers[k]);
-    }
+    for (int b = 0; b < m->nbodies; ++b)
+        if (!m->bodies[b].is_ground) /* those on ground never move */
+            hx_frames_update_body(s, b);
 }
 
 void hx_frames_update_body(hx_frames *s, int body)
 {
     const hx_model *m = s->model;
-    for (int n = s->first_moving[body]; n < s->first_moving[body + 1]; ++n) {
-        const int k = s->moving[n];
+    for (int n = s->first_tracked[body]; n < s->first_tracked[body + 1]; ++n) {
+        const int k = s->tracked[n];
         hx_marker_frame(m, &s->bodies[body], k, &s->markers[k]);
     }
 }
@@ -132,8 +125,8 @@ void hx_frames_update_body(hx_frames *s, int body)
 void hx_frames_copy_body(hx_frames *to, const hx_frames *from, int body)
 {
     to->bodies[body] = from->bodies[body];
-    for (int n = from->first_moving[body]; n < from->first_moving[body + 1]; ++n) {
-        const int k = from->moving[n];
+    for (int n = from->first_tracked[body]; n < from->first_tracked[body + 1]; ++n) {
+        const int k = from->tracked[n];
         to->markers[k] = from->markers[k];
     }
 }

@@ -23,11 +23,10 @@ typedef struct hx_frames {
     double time;
     hx_frame *bodies;   /* nbodies */
     hx_frame *markers;  /* nmarkers: tracked markers are current after hx_frames_update */
-    int *moving;        /* tracked markers on moving bodies: what the update recomputes,
-                         * body by body */
-    int *first_moving;  /* nbodies + 1: body b's are moving[first_moving[b] ..
-                         * first_moving[b + 1] - 1] */
-    int nmoving;
+    int *tracked;       /* the tracked markers, body by body: what the update recomputes
+                         * (those of moving bodies) */
+    int *first_tracked; /* nbodies + 1: body b's are tracked[first_tracked[b] ..
+                         * first_tracked[b + 1] - 1] */
     /* the Control_Diff states, two per element in the order of their slots
      * (model.h): the value and its rate (DIF and DIF1), ic and ic_dot at first */
     double *diffs;
@@ -46,7 +45,8 @@ void hx_frames_copy(hx_frames *to, const hx_frames *from);
  * from the bodies' frames (those on ground never move). */
 void hx_frames_update(hx_frames *s);
 
-/* The same for one body's markers alone (a probe that moved one body). */
+/* The same for one body's tracked markers alone, on ground too (a probe
+ * that moved one body, ground included). */
 void hx_frames_update_body(hx_frames *s, int body);
 /* Copies one body's frame and its tracked markers' (undoing such a move). */
 void hx_frames_copy_body(hx_frames *to, const hx_frames *from, int body);

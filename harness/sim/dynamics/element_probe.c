@@ -90,8 +90,11 @@ void hx_place_pose(const hx_frames *base, hx_frames *out, int i_marker, int j_ma
                    const double w[3])
 {
     hx_frames_copy(out, base);
-    place_body(base, out, i_marker, j_marker, p, Rrel, v, w);
+    const int body = place_body(base, out, i_marker, j_marker, p, Rrel, v, w);
     hx_frames_update(out);
+    /* the body's markers follow it on ground too, which the kinematics stage
+     * leaves: an element's I on ground moves with ground's frame */
+    hx_frames_update_body(out, body);
 }
 
 void hx_place_relative(const hx_frames *base, hx_frames *out, int i_marker, int j_marker,
