@@ -42,8 +42,25 @@ static void open_pair(pair *p, SUNContext context, long n)
         p->theirs[k] = N_VClone(plain);
         p->ours[k] = N_VClone(template);
         assert_non_null(p->theirs[k]), assert_non_null(p->ours[k]);
-        assert_true(p->ours[k]->ops->nvlinearsum == template->ops->nvlinearsum);
-        assert_true(p->ours[k]->ops->nvlinearsum != plain->ops->nvlinearsum);
+        /* every operation installed, in every clone */
+        const N_Vector_Ops o = p->ours[k]->ops, t = template->ops, s = plain->ops;
+        const void *ours[14] = {o->nvlinearsum, o->nvconst, o->nvprod, o->nvdiv, o->nvscale,
+                                o->nvabs, o->nvinv, o->nvaddconst, o->nvmaxnorm,
+                                o->nvwrmsnorm, o->nvmin, o->nvcompare,
+                                o->nvlinearcombination, o->nvscaleaddmulti};
+        const void *installed[14] = {t->nvlinearsum, t->nvconst, t->nvprod, t->nvdiv,
+                                     t->nvscale, t->nvabs, t->nvinv, t->nvaddconst,
+                                     t->nvmaxnorm, t->nvwrmsnorm, t->nvmin, t->nvcompare,
+                                     t->nvlinearcombination, t->nvscaleaddmulti};
+        const void *theirs[14] = {s->nvlinearsum, s->nvconst, s->nvprod, s->nvdiv, s->nvscale,
+                                  s->nvabs, s->nvinv, s->nvaddconst, s->nvmaxnorm,
+                                  s->nvwrmsnorm, s->nvmin, s->nvcompare,
+                                  s->nvlinearcombination, s->nvscaleaddmulti};
+        for (int op = 0; op < 14; ++op) {
+            assert_true(ours[op] == installed[op]);
+            if (ours[op] == theirs[op])
+                fail_msg("operation %d of the table is still SUNDIALS' own", op);
+        }
     }
     N_VDestroy(plain), N_VDestroy(template);
 }
@@ -127,10 +144,15 @@ static void element_wise(pair *p, long n)
         N_VAddConst(p->theirs[0], -0.375, p->theirs[z]);
         N_VAddConst(p->ours[0], -0.375, p->ours[z]);
         assert_same(p, n, "add a constant");
-        fill(p, n);
-        N_VCompare(0.01, p->theirs[0], p->theirs[z]);
-        N_VCompare(0.01, p->ours[0], p->ours[z]);
-        assert_same(p, n, "compare");
+        /* the threshold apart from every value, at zero (values hold zeros),
+         * and at a value itself: >= and > differ only there */
+        for (int t = 0; t < 3; ++t) {
+            fill(p, n);
+            const double c = t == 0 ? 0.01 : t == 1 || n == 0 ? 0.0 : fabs(NV_Ith_S(p->ours[0], n / 2));
+            N_VCompare(c, p->theirs[0], p->theirs[z]);
+            N_VCompare(c, p->ours[0], p->ours[z]);
+            assert_same(p, n, "compare");
+        }
     }
 }
 
@@ -149,33 +171,43 @@ static void reductions(pair *p, long n)
 
 static void fused(pair *p, long n)
 {
-    static const double c[TERMS] = {1.0, -1.0, 0.3, 2.5, -0.7};
-    static const double c2[TERMS] = {0.9, 1.0, -1.0, 0.4, 0.4};
-    for (int count = 1; count <= 4; ++count)
-        for (int into = 0; into < 4; ++into) { /* z apart, z = X0 with c0 = 1, c0 != 1, z = X1 */
-            if (into == 3 && count < 3)
-                continue;
-            fill(p, n);
-            const double *coefficients = into == 2 ? c2 : c;
-            const int z = into == 0 ? 4 : into == 3 ? 1 : 0;
-            N_VLinearCombination(count, (double *)coefficients, p->theirs, p->theirs[z]);
-            N_VLinearCombination(count, (double *)coefficients, p->ours, p->ours[z]);
-            char what[80];
-            snprintf(what, sizeof what, "linear combination of %d into %d", count, z);
-            assert_same(p, n, what);
-        }
-    for (int count = 1; count <= 3; ++count)
-        for (int in_place = 0; in_place < 2; ++in_place) {
-            fill(p, n);
-            N_Vector *Yt = p->theirs + 1, *Yo = p->ours + 1;
-            N_Vector *Zt = in_place ? Yt : p->theirs + 1 + count;
-            N_Vector *Zo = in_place ? Yo : p->ours + 1 + count;
-            N_VScaleAddMulti(count, (double *)c, p->theirs[0], Yt, Zt);
-            N_VScaleAddMulti(count, (double *)c, p->ours[0], Yo, Zo);
-            char what[80];
-            snprintf(what, sizeof what, "scale-add of %d%s", count, in_place ? " in place" : "");
-            assert_same(p, n, what);
-        }
+    /* coefficients SUNDIALS treats apart: 1 and -1, and a = b, a = -b away from them */
+    static const double sets[4][TERMS] = {{1.0, -1.0, 0.3, 2.5, -0.7},
+                                          {0.9, 1.0, -1.0, 0.4, 0.4},
+                                          {0.7, 0.7, 0.7, -0.7, 1.0},
+                                          {0.7, -0.7, 2.0, 1.0, -1.0}};
+    for (int set = 0; set < 4; ++set)
+        for (int count = 1; count <= TERMS; ++count)
+            for (int into = -1; into < count; ++into) { /* z apart, or each of the terms */
+                fill(p, n);
+                const int z = into < 0 ? TERMS : into;
+                N_VLinearCombination(count, (double *)sets[set], p->theirs, p->theirs[z]);
+                N_VLinearCombination(count, (double *)sets[set], p->ours, p->ours[z]);
+                char what[96];
+                snprintf(what, sizeof what, "linear combination of %d (set %d) into %d", count,
+                         set, z);
+                assert_same(p, n, what);
+            }
+    for (int set = 0; set < 4; ++set)
+        for (int count = 1; count <= 3; ++count)
+            for (int in_place = 0; in_place < 2; ++in_place) {
+                fill(p, n);
+                N_Vector *Yt = p->theirs + 1, *Yo = p->ours + 1;
+                N_Vector *Zt = in_place ? Yt : p->theirs + 1 + count;
+                N_Vector *Zo = in_place ? Yo : p->ours + 1 + count;
+                N_VScaleAddMulti(count, (double *)sets[set], p->theirs[0], Yt, Zt);
+                N_VScaleAddMulti(count, (double *)sets[set], p->ours[0], Yo, Zo);
+                char what[96];
+                snprintf(what, sizeof what, "scale-add of %d (set %d)%s", count, set,
+                         in_place ? " in place" : "");
+                assert_same(p, n, what);
+            }
+    /* no terms: refused, as SUNDIALS refuses them */
+    double one = 1.0;
+    assert_int_equal(N_VLinearCombination(0, &one, p->ours, p->ours[0]),
+                     N_VLinearCombination(0, &one, p->theirs, p->theirs[0]));
+    assert_int_equal(N_VScaleAddMulti(0, &one, p->ours[0], p->ours + 1, p->ours + 1),
+                     N_VScaleAddMulti(0, &one, p->theirs[0], p->theirs + 1, p->theirs + 1));
 }
 
 static void every_operation_is_sundials_own(void **state)

@@ -1,7 +1,8 @@
 /* The serial vector's operations (vector_ops.h). Each keeps SUNDIALS'
  * arithmetic element by element (the same products and sums in the same
- * order), so that CVODE takes the same steps; tests/test_implicit.c compares
- * every one with SUNDIALS' own, bit for bit, aliased and not. */
+ * order, never contracted into fused multiply-adds: CMakeLists.txt), so that
+ * CVODE takes the same steps; tests/test_vector_ops.c compares every one with
+ * SUNDIALS' own, bit for bit (a NaN's sign apart), aliased and not. */
 #include "sim/ode/vector_ops.h"
 
 #include <math.h>
@@ -165,6 +166,8 @@ static void compare(sunrealtype c, N_Vector vx, N_Vector vz)
  * does in as many passes over memory as there are vectors. */
 static int linear_combination(int count, sunrealtype *c, N_Vector *X, N_Vector vz)
 {
+    if (count < 1)
+        return -1; /* as SUNDIALS' */
     if (count == 1) {
         scale(c[0], X[0], vz);
         return 0;
@@ -196,6 +199,8 @@ static int linear_combination(int count, sunrealtype *c, N_Vector *X, N_Vector v
 /* Z_k = a_k x + Y_k for each k (CVODE's update of its history array). */
 static int scale_add_multi(int count, sunrealtype *a, N_Vector vx, N_Vector *Y, N_Vector *Z)
 {
+    if (count < 1)
+        return -1; /* as SUNDIALS' */
     if (count == 1) {
         linear_sum(a[0], vx, 1.0, Y[0], Z[0]);
         return 0;
