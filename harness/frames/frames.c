@@ -28,7 +28,6 @@ void hx_marker_frame(const hx_model *m, const hx_frame *b, int marker, hx_frame 
     v3_add(out->v, b->v, wr);
 }
 
-
 static void all_markers(hx_frames *s)
 {
     const hx_model *m = s->model;
