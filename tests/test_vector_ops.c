@@ -32,6 +32,17 @@ static double draw(long i)
     return ((double)(seed >> 8) / 16777216.0 - 0.5) * pow(10.0, (double)(i % 7) - 3.0);
 }
 
+/* The operations vector_ops.c installs, as they stand in a table. */
+#define OPS 14
+static void installed_ops(const N_Vector_Ops o, const void *out[OPS])
+{
+    const void *ops[OPS] = {o->nvlinearsum, o->nvconst,     o->nvprod,     o->nvdiv,
+                            o->nvscale,     o->nvabs,       o->nvinv,      o->nvaddconst,
+                            o->nvmaxnorm,   o->nvwrmsnorm,  o->nvmin,      o->nvcompare,
+                            o->nvlinearcombination, o->nvscaleaddmulti};
+    memcpy(out, ops, sizeof ops);
+}
+
 static void open_pair(pair *p, SUNContext context, long n)
 {
     N_Vector plain = N_VNew_Serial(n, context), template = N_VNew_Serial(n, context);
@@ -43,20 +54,11 @@ static void open_pair(pair *p, SUNContext context, long n)
         p->ours[k] = N_VClone(template);
         assert_non_null(p->theirs[k]), assert_non_null(p->ours[k]);
         /* every operation installed, in every clone */
-        const N_Vector_Ops o = p->ours[k]->ops, t = template->ops, s = plain->ops;
-        const void *ours[14] = {o->nvlinearsum, o->nvconst, o->nvprod, o->nvdiv, o->nvscale,
-                                o->nvabs, o->nvinv, o->nvaddconst, o->nvmaxnorm,
-                                o->nvwrmsnorm, o->nvmin, o->nvcompare,
-                                o->nvlinearcombination, o->nvscaleaddmulti};
-        const void *installed[14] = {t->nvlinearsum, t->nvconst, t->nvprod, t->nvdiv,
-                                     t->nvscale, t->nvabs, t->nvinv, t->nvaddconst,
-                                     t->nvmaxnorm, t->nvwrmsnorm, t->nvmin, t->nvcompare,
-                                     t->nvlinearcombination, t->nvscaleaddmulti};
-        const void *theirs[14] = {s->nvlinearsum, s->nvconst, s->nvprod, s->nvdiv, s->nvscale,
-                                  s->nvabs, s->nvinv, s->nvaddconst, s->nvmaxnorm,
-                                  s->nvwrmsnorm, s->nvmin, s->nvcompare,
-                                  s->nvlinearcombination, s->nvscaleaddmulti};
-        for (int op = 0; op < 14; ++op) {
+        const void *ours[OPS], *installed[OPS], *theirs[OPS];
+        installed_ops(p->ours[k]->ops, ours);
+        installed_ops(template->ops, installed);
+        installed_ops(plain->ops, theirs);
+        for (int op = 0; op < OPS; ++op) {
             assert_true(ours[op] == installed[op]);
             if (ours[op] == theirs[op])
                 fail_msg("operation %d of the table is still SUNDIALS' own", op);
