@@ -11,7 +11,27 @@
 #include "base/vecmath.h"
 #include "sim/newton/newton_parts.h"
 
-void hx_newton_body_load(hx_newton_matrix *nm, int b, int col, const double dF[3],
+int hx_newton_body_rows_at(const hx_newton_matrix *nm, int b, int col)
+{
+    const hx_dynamics *d = nm->d;
+    const hx_body_dof *dof = &d->dof[b];
+    if (dof->kind == HX_DOF_GROUND)
+        return -1;
+    return hx_newton_rows_at(nm, d->nq + dof->u, dof->kind == HX_DOF_FREE ? 6 : 1, col);
+}
+
+/* J[row .. row + count - 1, col] += v, at `at` when known. */
+static void add_rows(hx_newton_matrix *nm, int at, int row, int count, int col, const double *v)
+{
+    if (at < 0) {
+        hx_newton_add(nm, row, count, col, v);
+        return;
+    }
+    for (int i = 0; i < count; ++i)
+        nm->values[at + i] += v[i];
+}
+
+void hx_newton_body_load(hx_newton_matrix *nm, int b, int col, int at, const double dF[3],
                          const double dT[3])
 {
     const hx_dynamics *d = nm->d;
@@ -23,11 +43,13 @@ void hx_newton_body_load(hx_newton_matrix *nm, int b, int col, const double dF[3
     case HX_DOF_GROUND:
         return;
     case HX_DOF_FREE: {
-        double tb[3];
-        v3_scale(v, dF, d->ucf / dof->mass);
-        m3_tapply(tb, f->R, dT);
-        m3_apply(v + 3, dof->inertia_inv, tb);
-        v3_scale(v + 3, v + 3, d->ucf);
+        const double *map = nm->load_map + 12 * b; /* hx_body_blocks */
+        if (at >= 0) {
+            hx_newton_free_body_load(nm->values + at, map, 1.0, dF, dT);
+            return;
+        }
+        v3_scale(v, dF, map[0]);
+        m3_apply(v + 3, map + 3, dT);
         hx_newton_add(nm, row, 6, col, v);
         return;
     }
@@ -36,12 +58,12 @@ void hx_newton_body_load(hx_newton_matrix *nm, int b, int col, const double dF[3
         v3_sub(r, f->p, dof->origin);
         v3_cross(ar, dof->axis, r); /* a.(r x F) = (a x r).F */
         v[0] = d->ucf * (v3_dot(dof->axis, dT) + v3_dot(ar, dF)) / dof->mass;
-        hx_newton_add(nm, row, 1, col, v);
+        add_rows(nm, at, row, 1, col, v);
         return;
     }
     case HX_DOF_SLIDER:
         v[0] = d->ucf * v3_dot(dof->axis, dF) / dof->mass;
-        hx_newton_add(nm, row, 1, col, v);
+        add_rows(nm, at, row, 1, col, v);
         return;
     }
 }
@@ -110,6 +132,12 @@ void hx_body_blocks(hx_newton_matrix *nm, const double *y)
         if (dof->kind == HX_DOF_GROUND)
             continue;
         if (dof->kind == HX_DOF_FREE) {
+            /* what a load's change does to the accelerations, once per build */
+            double *map = nm->load_map + 12 * b, IinvRt[9];
+            m3_mult(IinvRt, dof->inertia_inv, d->frames.bodies[b].R);
+            map[0] = d->ucf / dof->mass;
+            for (int i = 0; i < 9; ++i)
+                map[3 + i] = d->ucf * IinvRt[i];
             free_body(nm, b, y);
             continue;
         }

@@ -23,6 +23,10 @@
 
 #define TWIN_TOLERANCE 1e-9
 
+/* An element's rows per column: for each of its (up to 3) bodies' 13
+ * columns, where its I and J bodies' rows sit. */
+#define ELEMENT_ROWS (3 * 13 * 2)
+
 /* The twin's results are in J's axes; the GFOSUB result in the reference
  * marker's: the two compare only when those axes coincide for good. */
 static int same_axes(const hx_model *m, const hx_force *f)
@@ -43,7 +47,9 @@ int hx_element_blocks_init(hx_newton_matrix *nm, hx_message *msg)
     nm->source = calloc(f1, sizeof *nm->source);
     nm->why = calloc(f1 * HX_NEWTON_WHY, 1);
     nm->twin_partials = calloc(72 * f1, sizeof(double));
-    if (nm->source == NULL || nm->why == NULL || nm->twin_partials == NULL)
+    nm->element_rows = malloc(ELEMENT_ROWS * f1 * sizeof(int));
+    if (nm->source == NULL || nm->why == NULL || nm->twin_partials == NULL ||
+        nm->element_rows == NULL)
         return hx_fail(msg, "out of memory");
     for (int k = 0; k < nm->nf; ++k) {
         const hx_force *f = &m->forces[k];
@@ -68,6 +74,48 @@ int hx_element_blocks_init(hx_newton_matrix *nm, hx_message *msg)
         }
     }
     return 0;
+}
+
+/* The bodies whose columns move element k's outputs or its load: I's, J's,
+ * the outputs' axes' (-1 where none, ground, or one already listed). */
+static void element_bodies(const hx_dynamics *d, int k, int bodies[3])
+{
+    const hx_model *m = d->m;
+    const hx_force *f = &m->forces[k];
+    const int axes = f->interface == HX_FORCE_GFOSUB ? f->ref_marker : f->j_marker;
+    bodies[0] = m->markers[f->i_marker].body;
+    bodies[1] = m->markers[f->j_marker].body;
+    bodies[2] = axes >= 0 ? m->markers[axes].body : -1;
+    for (int i = 0; i < 3; ++i) {
+        const int b = bodies[i];
+        if (b < 0 || d->dof[b].kind == HX_DOF_GROUND || (i >= 1 && b == bodies[0]) ||
+            (i == 2 && b == bodies[1]))
+            bodies[i] = -1;
+    }
+}
+
+void hx_element_blocks_locate(hx_newton_matrix *nm)
+{
+    const hx_dynamics *d = nm->d;
+    const hx_model *m = d->m;
+    for (int k = 0; k < nm->nf; ++k) {
+        const hx_force *f = &m->forces[k];
+        const int sides[2] = {m->markers[f->i_marker].body, m->markers[f->j_marker].body};
+        int bodies[3], *rows = nm->element_rows + ELEMENT_ROWS * k;
+        element_bodies(d, k, bodies);
+        for (int i = 0; i < 3 * 13 * 2; ++i)
+            rows[i] = -1;
+        for (int i = 0; i < 3; ++i) {
+            if (bodies[i] < 0)
+                continue;
+            int columns[13];
+            const int count = hx_newton_body_columns(d, bodies[i], columns);
+            for (int j = 0; j < count; ++j)
+                for (int side = 0; side < 2; ++side)
+                    rows[(13 * i + j) * 2 + side] =
+                        hx_newton_body_rows_at(nm, sides[side], columns[j]);
+        }
+    }
 }
 
 /* The twin agrees with the GFOSUB result: each of force and torque to 1e-9
@@ -139,42 +187,11 @@ static void angle_slopes(const double R[9], double A[9])
     }
 }
 
-static void deformation_change(const hx_frame *I, const hx_frame *J, const hx_motion *mI,
-                               const hx_motion *mJ, const double A[9], double ddisp[6],
-                               double dvelo[6])
+/* A motion that leaves the pose as it is (a velocity's column). */
+static int still_pose(const hx_motion *mo)
 {
-    double dist[3], ddist[3], x[3], t1[3], t2[3], v[3];
-    v3_sub(dist, I->p, J->p);
-    v3_sub(ddist, mI->dp, mJ->dp);
-    /* ddisp_t */
-    v3_cross(t1, mJ->dth, dist);
-    v3_sub(v, ddist, t1);
-    m3_tapply(ddisp, J->R, v);
-    /* ddisp_r */
-    double phi[3];
-    v3_sub(v, mI->dth, mJ->dth);
-    m3_tapply(phi, J->R, v);
-    for (int i = 0; i < 3; ++i)
-        ddisp[3 + i] = A[i] * phi[0] + A[i + 3] * phi[1] + A[i + 6] * phi[2];
-    /* dvelo_t: x = v_I - v_J - w_J x d */
-    v3_sub(x, I->v, J->v);
-    v3_cross(t1, J->w, dist);
-    v3_sub(x, x, t1);
-    v3_sub(v, mI->dv, mJ->dv);
-    v3_cross(t1, mJ->dw, dist);
-    v3_sub(v, v, t1);
-    v3_cross(t1, J->w, ddist);
-    v3_sub(v, v, t1);
-    v3_cross(t2, mJ->dth, x);
-    v3_sub(v, v, t2);
-    m3_tapply(dvelo, J->R, v);
-    /* dvelo_r */
-    double dw[3];
-    v3_sub(dw, I->w, J->w);
-    v3_sub(v, mI->dw, mJ->dw);
-    v3_cross(t1, mJ->dth, dw);
-    v3_sub(v, v, t1);
-    m3_tapply(dvelo + 3, J->R, v);
+    return mo->dp[0] == 0.0 && mo->dp[1] == 0.0 && mo->dp[2] == 0.0 && mo->dth[0] == 0.0 &&
+           mo->dth[1] == 0.0 && mo->dth[2] == 0.0;
 }
 
 /* The outputs' change by differences of element k alone, its body b moved
@@ -204,6 +221,181 @@ static int differenced_outputs(hx_newton_matrix *nm, int k, int b, int c, double
     return 0;
 }
 
+/* dout = dfddis ddisp + dfdvel dvelo, column by column of the partials
+ * (contiguous); a velocity's column leaves the deformation as it is. */
+static inline void output_change(const double *dfd, int pose, const double ddisp[6],
+                                 const double dvelo[6], double dout[6])
+{
+    double sum[6] = {0, 0, 0, 0, 0, 0}; /* in registers: dout might alias dfd */
+    if (pose)
+        for (int c = 0; c < 6; ++c)
+            for (int r = 0; r < 6; ++r)
+                sum[r] += dfd[r + 6 * c] * ddisp[c];
+    for (int c = 0; c < 6; ++c)
+        for (int r = 0; r < 6; ++r)
+            sum[r] += dfd[36 + r + 6 * c] * dvelo[c];
+    for (int r = 0; r < 6; ++r)
+        dout[r] = sum[r];
+}
+
+/* What the deformation's change needs of an element at the build's state. */
+typedef struct pair_geometry {
+    const double *R, *w_J;         /* J's axes and turning rate */
+    double ARt[9];                 /* the angles' change per turn in world axes: A R^T */
+    double dist[3], x[3], dw[3];   /* p_I - p_J, v_I - v_J - w_J x dist, w_I - w_J */
+} pair_geometry;
+
+static void pair_geometry_of(const hx_frame *I, const hx_frame *J, pair_geometry *g)
+{
+    double A[9], Rrel[9], t[3];
+    hx_relative_rotation(I, J, Rrel);
+    angle_slopes(Rrel, A);
+    g->R = J->R;
+    g->w_J = J->w;
+    for (int i = 0; i < 3; ++i)
+        for (int n = 0; n < 3; ++n)
+            g->ARt[3 * i + n] =
+                A[i] * g->R[3 * n] + A[i + 3] * g->R[3 * n + 1] + A[i + 6] * g->R[3 * n + 2];
+    v3_sub(g->dist, I->p, J->p);
+    v3_sub(g->x, I->v, J->v);
+    v3_cross(t, J->w, g->dist);
+    v3_sub(g->x, g->x, t);
+    v3_sub(g->dw, I->w, J->w);
+}
+
+/* The formulas at the top for a motion pm of I's marker alone (side 0) or of
+ * J's alone (side 1). */
+static void side_deformation_change(const pair_geometry *g, int side, const hx_motion *pm,
+                                    double ddisp[6], double dvelo[6])
+{
+    double t[3], v[3];
+    if (side == 0) {
+        m3_tapply(ddisp, g->R, pm->dp);
+        m3_apply(ddisp + 3, g->ARt, pm->dth);
+        v3_cross(t, g->w_J, pm->dp);
+        v3_sub(v, pm->dv, t);
+        m3_tapply(dvelo, g->R, v);
+        m3_tapply(dvelo + 3, g->R, pm->dw);
+        return;
+    }
+    v3_cross(t, pm->dth, g->dist); /* ddisp_t = -R^T (dp_J + dth_J x d) */
+    v3_add(v, pm->dp, t);
+    v3_scale(v, v, -1.0);
+    m3_tapply(ddisp, g->R, v);
+    m3_apply(ddisp + 3, g->ARt, pm->dth);
+    v3_scale(ddisp + 3, ddisp + 3, -1.0);
+    v3_cross(t, pm->dw, g->dist); /* dvelo_t = -R^T (dv_J + dw_J x d - w_J x dp_J + dth_J x x) */
+    v3_add(v, pm->dv, t);
+    v3_cross(t, g->w_J, pm->dp);
+    v3_sub(v, v, t);
+    v3_cross(t, pm->dth, g->x);
+    v3_add(v, v, t);
+    v3_scale(v, v, -1.0);
+    m3_tapply(dvelo, g->R, v);
+    v3_cross(t, pm->dth, g->dw); /* dvelo_r = -R^T (dw_J + dth_J x dw) */
+    v3_add(v, pm->dw, t);
+    v3_scale(v, v, -1.0);
+    m3_tapply(dvelo + 3, g->R, v);
+}
+
+/* The block of an element with partials (FIESUB's own or its twin's): I
+ * and J on two bodies and the outputs in J's axes (element_bodies), so that
+ * a column moves one side only; hx_newton_applied_force's sums written out
+ * for it, the load's rows found once (hx_element_blocks_locate). */
+static void block_from_partials(hx_newton_matrix *nm, int k, const double *y,
+                                const hx_applied_force *a, const double *dfd,
+                                const int bodies[3], const int *rows)
+{
+    const hx_dynamics *d = nm->d;
+    const hx_frames *s = &d->frames;
+    const hx_force *f = &d->m->forces[k];
+    const hx_frame *I = &s->markers[f->i_marker], *J = &s->markers[f->j_marker];
+    pair_geometry g;
+    pair_geometry_of(I, J, &g);
+    const int loaded[2] = {d->dof[a->bi].kind != HX_DOF_GROUND,
+                           d->dof[a->bj].kind != HX_DOF_GROUND};
+    const int free[2] = {d->dof[a->bi].kind == HX_DOF_FREE, d->dof[a->bj].kind == HX_DOF_FREE};
+    double arm[2][3]; /* from each body's centre to the point of application, I */
+    v3_sub(arm[0], I->p, s->bodies[a->bi].p);
+    v3_sub(arm[1], I->p, s->bodies[a->bj].p);
+    for (int side = 0; side < 2; ++side) {
+        const int b = bodies[side];
+        if (b < 0)
+            continue;
+        int columns[13];
+        const int count = hx_newton_body_columns(d, b, columns);
+        const hx_frame *fb = &s->bodies[b];
+        for (int j = 0; j < count; ++j) {
+            hx_motion mo, pm; /* the body's motion, and its marker's (I or J) */
+            hx_body_column_motion(d, b, j, y, fb, &mo);
+            hx_point_motion(fb, &mo, side == 0 ? I : J, &pm);
+            double ddisp[6], dvelo[6], dout[6], dF[3], dT[3], t[3];
+            side_deformation_change(&g, side, &pm, ddisp, dvelo);
+            output_change(dfd, !still_pose(&mo), ddisp, dvelo, dout);
+            m3_apply(dF, a->R_A, dout);
+            m3_apply(dT, a->R_A, dout + 3);
+            if (side == 1) { /* the axes turn with J's body */
+                v3_cross(t, mo.dth, a->F);
+                v3_add(dF, dF, t);
+                v3_cross(t, mo.dth, a->T);
+                v3_add(dT, dT, t);
+            }
+            /* the arms move by I's motion less their centre's */
+            double darm[2][3];
+            if (side == 0) {
+                v3_sub(darm[0], pm.dp, mo.dp);
+                v3_copy(darm[1], pm.dp);
+            } else {
+                v3_set(darm[0], 0.0, 0.0, 0.0);
+                v3_scale(darm[1], mo.dp, -1.0);
+            }
+            for (int on = 0; on < 2; ++on) {
+                if (!loaded[on])
+                    continue;
+                const double sign = on == 0 ? 1.0 : -1.0;
+                const int body = on == 0 ? a->bi : a->bj, at = rows[(13 * side + j) * 2 + on];
+                double torque[3], force[3];
+                v3_cross(torque, darm[on], a->F);
+                v3_cross(t, arm[on], dF);
+                v3_add(torque, torque, t);
+                v3_add(torque, torque, dT);
+                if (free[on] && at >= 0) {
+                    hx_newton_free_body_load(nm->values + at, nm->load_map + 12 * body, sign, dF,
+                                             torque);
+                    continue;
+                }
+                v3_scale(torque, torque, sign);
+                v3_scale(force, dF, sign);
+                hx_newton_body_load(nm, body, columns[j], at, force, torque);
+            }
+        }
+    }
+}
+
+/* The block of an element by differences of its outputs alone, its load
+ * applied as hx_newton_applied_force says. */
+static int block_by_differences(hx_newton_matrix *nm, int k, const double *y,
+                                const hx_applied_force *a, const int bodies[3], const int *rows)
+{
+    const hx_dynamics *d = nm->d;
+    for (int i = 0; i < 3; ++i) {
+        const int b = bodies[i];
+        if (b < 0)
+            continue;
+        int columns[13];
+        const int count = hx_newton_body_columns(d, b, columns);
+        for (int j = 0; j < count; ++j) {
+            hx_motion mo;
+            double dout[6];
+            hx_body_column_motion(d, b, j, y, &d->frames.bodies[b], &mo);
+            if (differenced_outputs(nm, k, b, columns[j], dout) != 0)
+                return -1;
+            hx_newton_applied_force(nm, a, columns[j], b, &mo, dout, rows + (13 * i + j) * 2);
+        }
+    }
+    return 0;
+}
+
 static int element_block(hx_newton_matrix *nm, int k, const double *y)
 {
     hx_dynamics *d = nm->d;
@@ -212,56 +404,27 @@ static int element_block(hx_newton_matrix *nm, int k, const double *y)
     const hx_frames *s = &d->frames;
     if (nm->source[k] == HX_PARTIALS_TWIN && twin_partials(nm, k) != 0)
         return 0; /* set aside: the caller runs this element again by differences */
-    const hx_frame *I = &s->markers[f->i_marker], *J = &s->markers[f->j_marker];
     hx_applied_force a;
     a.bi = m->markers[f->i_marker].body;
     a.bj = m->markers[f->j_marker].body;
     const int axes = f->interface == HX_FORCE_GFOSUB ? f->ref_marker : f->j_marker;
     a.ba = axes >= 0 ? m->markers[axes].body : -1;
     a.R_A = axes >= 0 ? s->markers[axes].R : hx_world_frame.R;
-    a.I = I;
+    a.I = &s->markers[f->i_marker];
     v3_copy(a.F, d->element_load + 6 * k);
     v3_copy(a.T, d->element_load + 6 * k + 3);
-    const double *dfd = nm->source[k] == HX_PARTIALS_FIESUB ? d->element_partials + 72 * k
-                                                            : nm->twin_partials + 72 * k;
-    double A[9], Rrel[9];
-    hx_relative_rotation(I, J, Rrel);
-    angle_slopes(Rrel, A);
-    const int bodies[3] = {a.bi, a.bj, a.ba};
-    for (int i = 0; i < 3; ++i) {
-        const int b = bodies[i];
-        if (b < 0 || d->dof[b].kind == HX_DOF_GROUND || (i >= 1 && b == bodies[0]) ||
-            (i == 2 && b == bodies[1]))
-            continue;
-        int columns[13];
-        const int count = hx_newton_body_columns(d, b, columns);
-        const hx_frame *fb = &s->bodies[b];
-        for (int j = 0; j < count; ++j) {
-            hx_motion mo, mI, mJ;
-            static const hx_motion still;
-            hx_body_column_motion(d, b, j, y, fb, &mo);
-            double dout[6];
-            if (nm->source[k] == HX_PARTIALS_DIFFERENCES) {
-                if (differenced_outputs(nm, k, b, columns[j], dout) != 0)
-                    return -1;
-            } else {
-                mI = still, mJ = still;
-                if (a.bi == b)
-                    hx_point_motion(fb, &mo, I, &mI);
-                if (a.bj == b)
-                    hx_point_motion(fb, &mo, J, &mJ);
-                double ddisp[6], dvelo[6];
-                deformation_change(I, J, &mI, &mJ, A, ddisp, dvelo);
-                for (int r = 0; r < 6; ++r) {
-                    double sum = 0.0;
-                    for (int c = 0; c < 6; ++c)
-                        sum += dfd[r + 6 * c] * ddisp[c] + dfd[36 + r + 6 * c] * dvelo[c];
-                    dout[r] = sum;
-                }
-            }
-            hx_newton_applied_force(nm, &a, columns[j], b, &mo, dout);
-        }
-    }
+    const int *rows = nm->element_rows + ELEMENT_ROWS * k;
+    int bodies[3];
+    element_bodies(d, k, bodies);
+    if (nm->source[k] == HX_PARTIALS_DIFFERENCES)
+        return block_by_differences(nm, k, y, &a, bodies, rows);
+    if (a.bi == a.bj)
+        return 0; /* I and J on one body: the load and its reaction cancel on it */
+    /* with partials the outputs are in J's axes (hx_element_blocks_init) */
+    block_from_partials(nm, k, y, &a, nm->source[k] == HX_PARTIALS_FIESUB
+                                          ? d->element_partials + 72 * k
+                                          : nm->twin_partials + 72 * k,
+                        bodies, rows);
     return 0;
 }
 

@@ -51,7 +51,7 @@ int hx_load_blocks(hx_newton_matrix *nm, double t, const double *y)
                     double dW[6];
                     for (int r = 0; r < 6; ++r)
                         dW[r] = (W[0][a][r] - W[1][a][r]) / (2.0 * h);
-                    hx_newton_body_load(nm, share[0].body[a], c, dW, dW + 3);
+                    hx_newton_body_load(nm, share[0].body[a], c, -1, dW, dW + 3);
                 }
             }
         }

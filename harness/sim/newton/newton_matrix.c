@@ -27,6 +27,18 @@ void hx_newton_add(hx_newton_matrix *nm, int row0, int count, int col, const dou
     }
 }
 
+int hx_newton_rows_at(const hx_newton_matrix *nm, int row0, int count, int col)
+{
+    const hx_sparsity *s = &nm->pattern;
+    const int p = hx_sparsity_find(s, row0, col);
+    if (p < 0 || p + count > s->colptr[col + 1])
+        return -1;
+    for (int i = 1; i < count; ++i)
+        if (s->rowind[p + i] != row0 + i)
+            return -1;
+    return p;
+}
+
 int hx_newton_body_columns(const hx_dynamics *d, int b, int columns[13])
 {
     const hx_body_dof *dof = &d->dof[b];
@@ -64,7 +76,7 @@ void hx_newton_probe_restore(hx_newton_matrix *nm, int b)
 }
 
 void hx_newton_applied_force(hx_newton_matrix *nm, const hx_applied_force *a, int col, int b,
-                             const hx_motion *mo, const double dout[6])
+                             const hx_motion *mo, const double dout[6], const int at[2])
 {
     const hx_dynamics *d = nm->d;
     static const hx_motion still;
@@ -98,7 +110,7 @@ void hx_newton_applied_force(hx_newton_matrix *nm, const hx_applied_force *a, in
         v3_add(torque, torque, dT);
         v3_scale(torque, torque, sign);
         v3_scale(force, dF, sign);
-        hx_newton_body_load(nm, body, col, force, torque);
+        hx_newton_body_load(nm, body, col, at != NULL ? at[side] : -1, force, torque);
     }
 }
 
@@ -137,7 +149,8 @@ int hx_newton_matrix_init(hx_newton_matrix *nm, hx_dynamics *d, hx_message *msg)
     const int nc = d->m->ncouplers;
     nm->y = calloc(3 * (size_t)nm->n + 1, sizeof(double));
     nm->coupled = calloc((size_t)d->nu + 1, sizeof(int));
-    int ok = nm->y != NULL && nm->coupled != NULL && body_marker_lists(nm) == 0 &&
+    nm->load_map = calloc(12 * ((size_t)d->m->nbodies + 1), sizeof(double));
+    int ok = nm->y != NULL && nm->coupled != NULL && nm->load_map != NULL && body_marker_lists(nm) == 0 &&
              hx_frames_clone(&nm->probe, &d->frames) == 0;
     if (ok) {
         nm->f_plus = nm->y + nm->n;
@@ -154,6 +167,7 @@ int hx_newton_matrix_init(hx_newton_matrix *nm, hx_dynamics *d, hx_message *msg)
         hx_newton_matrix_free(nm);
         return hx_fail(msg, "out of memory");
     }
+    hx_element_blocks_locate(nm);
     return 0;
 }
 
@@ -163,6 +177,8 @@ void hx_newton_matrix_free(hx_newton_matrix *nm)
     free(nm->source);
     free(nm->why);
     free(nm->twin_partials);
+    free(nm->element_rows);
+    free(nm->load_map);
     hx_frames_free(&nm->probe);
     free(nm->body_markers);
     free(nm->body_marker_start);

@@ -53,6 +53,10 @@ typedef struct hx_newton_matrix {
     hx_partials_source *source; /* per force element */
     char *why;                  /* per element, HX_NEWTON_WHY: why differences */
     double *twin_partials;      /* 72 per force element: the twins' dfddis, dfdvel */
+    double *load_map;           /* per body, 12: ucf/m, then ucf I^-1 R^T (row-major) at
+                                 * the build's state (body_blocks.c) */
+    int *element_rows;          /* per force element, ELEMENT_ROWS: where its bodies' rows
+                                 * sit in its columns (element_blocks.c) */
     hx_frames probe;             /* the state at y with one body moved (differences) */
     int *body_markers, *body_marker_start; /* each body's tracked markers */
     /* Force_StateEqn elements (stateeqn_blocks.c) */

@@ -11,14 +11,37 @@
 /* J[row0 .. row0 + count - 1, col] += v (count rows of one body or element). */
 void hx_newton_add(hx_newton_matrix *nm, int row0, int count, int col, const double *v);
 
+/* Where rows row0 .. row0 + count - 1 of column col sit in the values when
+ * the pattern holds them all, one after another; else -1 (hx_newton_add
+ * then looks each up). A build can keep it: the pattern is fixed. */
+int hx_newton_rows_at(const hx_newton_matrix *nm, int row0, int count, int col);
+
 /* The y columns of body b (positions, then velocities); returns their count
  * (0 on ground, 2 jointed, 13 free). */
 int hx_newton_body_columns(const hx_dynamics *d, int b, int columns[13]);
 
 /* A change of the loads on body b (dF, and dT about its centre, world axes)
- * per unit of column col: into the rows of b's accelerations. */
-void hx_newton_body_load(hx_newton_matrix *nm, int b, int col, const double dF[3],
+ * per unit of column col: into the rows of b's accelerations, which sit at
+ * `at` in the values (hx_newton_body_rows_at; -1: looked up). */
+void hx_newton_body_load(hx_newton_matrix *nm, int b, int col, int at, const double dF[3],
                          const double dT[3]);
+
+/* hx_newton_body_load of sign dF, sign dT for a free body whose rows sit at
+ * values (known), map its nm->load_map: the hot case, inline. */
+static inline void hx_newton_free_body_load(double *values, const double map[12], double sign,
+                                            const double dF[3], const double dT[3])
+{
+    const double c = sign * map[0];
+    values[0] += c * dF[0];
+    values[1] += c * dF[1];
+    values[2] += c * dF[2];
+    for (int i = 0; i < 3; ++i)
+        values[3 + i] += sign * (map[3 + 3 * i] * dT[0] + map[4 + 3 * i] * dT[1] +
+                                 map[5 + 3 * i] * dT[2]);
+}
+
+/* hx_newton_rows_at for the rows of body b's accelerations (-1 on ground). */
+int hx_newton_body_rows_at(const hx_newton_matrix *nm, int b, int col);
 
 /* The probe state: body b moved to its frame at y (its tracked markers with
  * it), and back to the state of the build. */
@@ -31,7 +54,8 @@ double hx_newton_step(const double *y, int c);
 /* A force that outputs (6, in axes R_A turning with body ba) put on I's body
  * bi at I's point and, reversed, on bj: the change that column col (of body
  * b, motion mo; b = -1 for none) and a change dout of the outputs make, into
- * J. F, T: the force and couple at the build's state, world axes. */
+ * J. F, T: the force and couple at the build's state, world axes. at: where
+ * bi's and bj's rows sit in column col (hx_newton_body_rows_at), or NULL. */
 typedef struct hx_applied_force {
     int bi, bj, ba;
     const hx_frame *I;     /* the application point's marker */
@@ -39,11 +63,13 @@ typedef struct hx_applied_force {
     double F[3], T[3];
 } hx_applied_force;
 void hx_newton_applied_force(hx_newton_matrix *nm, const hx_applied_force *a, int col, int b,
-                             const hx_motion *mo, const double dout[6]);
+                             const hx_motion *mo, const double dout[6], const int at[2]);
 
 /* The blocks: 0, or -1 (d->message). */
 void hx_body_blocks(hx_newton_matrix *nm, const double *y);
 int hx_element_blocks_init(hx_newton_matrix *nm, hx_message *msg);
+/* After the pattern: where each element's rows sit in its columns. */
+void hx_element_blocks_locate(hx_newton_matrix *nm);
 int hx_element_blocks(hx_newton_matrix *nm, double t, const double *y);
 int hx_load_blocks(hx_newton_matrix *nm, double t, const double *y);
 int hx_stateeqn_blocks_init(hx_newton_matrix *nm, hx_message *msg);

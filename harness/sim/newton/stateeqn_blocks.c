@@ -245,7 +245,7 @@ static int element_block(hx_newton_matrix *nm, int k, const double *y)
         e[j] = 1.0;
         through(blocks[0], blocks[2], ns, ns, e, sb->g, dout);
         hx_newton_add(nm, x0, ns, x0 + j, sb->g);
-        hx_newton_applied_force(nm, &a, x0 + j, -1, &still, dout);
+        hx_newton_applied_force(nm, &a, x0 + j, -1, &still, dout, NULL);
     }
     /* the bodies' columns: through the inputs, and the force's geometry */
     int bodies[MAX_INPUT_BODIES + 3];
@@ -272,7 +272,7 @@ static int element_block(hx_newton_matrix *nm, int k, const double *y)
                 memset(sb->du, 0, sizeof(double) * (size_t)ni);
             through(blocks[1], blocks[3], ns, ni, sb->du, sb->g, dout);
             hx_newton_add(nm, x0, ns, columns[j], sb->g);
-            hx_newton_applied_force(nm, &a, columns[j], b, &mo, dout);
+            hx_newton_applied_force(nm, &a, columns[j], b, &mo, dout, NULL);
         }
     }
     return 0;
