@@ -171,6 +171,75 @@ static void newton_matrix_has_the_routines_rows(void **state)
                    HX_PARTIALS_DIFFERENCES);
 }
 
+/* Elements with partials on jointed bodies: a revolute and a slider body
+ * (one coordinate each) joined to each other both ways, a free body's I on
+ * the revolute's J, an I on ground; then a GFOSUB twin with I on the slider
+ * and J (its axes) on the revolute. Every body kind on either side of an
+ * element, against differences. */
+static const char jointed_model[] =
+    "<MotionSolve><Model>\n"
+    "<Param_Unit force_unit=\"NEWTON\" mass_unit=\"KILOGRAM\" length_unit=\"MILLIMETER\""
+    " time_unit=\"SECOND\"/>\n"
+    "<Reference_String id=\"401\" string=\"%s/flex_coupled.gfj\"/>\n"
+    "<Body_Ground id=\"1\"/>\n"
+    "<Reference_Marker id=\"10\" body_id=\"1\" pos_x=\"5\" pos_y=\"3\" a00=\"0.8\" a01=\"-0.6\""
+    " a02=\"0\" a10=\"0.6\" a11=\"0.8\" a12=\"0\" a20=\"0\" a21=\"0\" a22=\"1\"/>\n"
+    "<Reference_Marker id=\"11\" body_id=\"1\" pos_y=\"40\" a00=\"0\" a10=\"1\" a20=\"0\""
+    " a01=\"0\" a11=\"0\" a21=\"1\" a02=\"1\" a12=\"0\" a22=\"0\"/>\n"
+    "<Reference_Marker id=\"12\" body_id=\"1\" pos_x=\"2\" pos_z=\"1\"/>\n"
+    "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"2\" inertia_xx=\"2000\" inertia_yy=\"2500\""
+    " inertia_zz=\"3000\" w_ic_z=\"2\"/>\n"
+    "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"40\" pos_y=\"-30\" pos_z=\"3\"/>\n"
+    "<Reference_Marker id=\"21\" body_id=\"2\" pos_x=\"5\" pos_y=\"3\" a00=\"0.8\" a01=\"-0.6\""
+    " a02=\"0\" a10=\"0.6\" a11=\"0.8\" a12=\"0\" a20=\"0\" a21=\"0\" a22=\"1\"/>\n"
+    "<Reference_Marker id=\"22\" body_id=\"2\" pos_x=\"30\" pos_y=\"20\" pos_z=\"2\"/>\n"
+    "<Reference_Marker id=\"23\" body_id=\"2\" pos_x=\"-20\" pos_y=\"10\" pos_z=\"-2\"/>\n"
+    "<Body_Rigid id=\"3\" cg_id=\"30\" mass=\"4\" inertia_xx=\"800\" inertia_yy=\"1000\""
+    " inertia_zz=\"1200\" v_ic_z=\"30\"/>\n"
+    "<Reference_Marker id=\"30\" body_id=\"3\" pos_x=\"10\" pos_y=\"40\" pos_z=\"4\"/>\n"
+    "<Reference_Marker id=\"31\" body_id=\"3\" pos_y=\"40\" a00=\"0\" a10=\"1\" a20=\"0\""
+    " a01=\"0\" a11=\"0\" a21=\"1\" a02=\"1\" a12=\"0\" a22=\"0\"/>\n"
+    "<Reference_Marker id=\"32\" body_id=\"3\" pos_x=\"31\" pos_y=\"20.5\" pos_z=\"2.3\"/>\n"
+    "<Reference_Marker id=\"33\" body_id=\"3\" pos_x=\"-19\" pos_y=\"10.5\" pos_z=\"-1.5\"/>\n"
+    "<Body_Rigid id=\"4\" cg_id=\"40\" mass=\"3\" inertia_xx=\"3000\" inertia_yy=\"4000\""
+    " inertia_zz=\"5000\" v_ic_x=\"5\" v_ic_y=\"-3\" v_ic_z=\"2\" w_ic_x=\"0.2\""
+    " w_ic_y=\"-0.3\" w_ic_z=\"0.25\"/>\n"
+    "<Reference_Marker id=\"40\" body_id=\"4\" pos_x=\"30\" pos_y=\"21\" pos_z=\"1.5\"/>\n"
+    "<Reference_Marker id=\"41\" body_id=\"4\" pos_x=\"30.8\" pos_y=\"20.5\" pos_z=\"2.3\""
+    " a00=\"0.998300856485\" a01=\"-0.051137192285\" a02=\"-0.027935416720\""
+    " a10=\"0.049956680331\" a11=\"0.997891416697\" a12=\"-0.041437308954\""
+    " a20=\"0.029995500202\" a21=\"0.039971340336\" a22=\"0.998750500335\"/>\n"
+    "<Reference_Marker id=\"42\" body_id=\"4\" pos_x=\"2.5\" pos_y=\"0.4\" pos_z=\"1.2\"/>\n"
+    "<Constraint_Joint id=\"1\" type=\"REVOLUTE\" i_marker_id=\"21\" j_marker_id=\"10\"/>\n"
+    "<Constraint_Joint id=\"2\" type=\"TRANSLATIONAL\" i_marker_id=\"31\" j_marker_id=\"11\"/>\n"
+    "%s</Model></MotionSolve>\n";
+
+static void newton_matrix_on_jointed_bodies_with_partials(void **state)
+{
+    (void)state;
+    static const char fields[] =
+        "<Force_Field id=\"1\" i_marker_id=\"22\" j_marker_id=\"32\""
+        " usrsub_param_string=\"USER(3, 401)\" usrsub_dll_name=\"libusrsub.so\"/>\n"
+        "<Force_Field id=\"2\" i_marker_id=\"33\" j_marker_id=\"23\""
+        " usrsub_param_string=\"USER(3, 401)\" usrsub_dll_name=\"libusrsub.so\"/>\n"
+        "<Force_Field id=\"3\" i_marker_id=\"41\" j_marker_id=\"22\""
+        " usrsub_param_string=\"USER(3, 401)\" usrsub_dll_name=\"libusrsub.so\"/>\n"
+        "<Force_Field id=\"4\" i_marker_id=\"12\" j_marker_id=\"42\""
+        " usrsub_param_string=\"USER(3, 401)\" usrsub_dll_name=\"libusrsub.so\"/>\n";
+    static const char twin[] =
+        "<Force_Vector_TwoBody id=\"11\" type=\"ForceAndTorque\" i_marker_id=\"32\""
+        " j_floating_marker_id=\"22\" ref_marker_id=\"22\""
+        " usrsub_param_string=\"USER(3, 32, 22, 401)\" usrsub_dll_name=\"libusrsub.so\"/>\n";
+    static char text[8192];
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1); /* libusrsub.so is built there too */
+    snprintf(text, sizeof text, jointed_model, EXAMPLES_DIR, fields);
+    jacobian_after(test_write_file("jointed_fields.xml", text), 0.05,
+                   "jointed bodies, four Force_Fields, at t = 0.05 s", HX_PARTIALS_FIESUB);
+    snprintf(text, sizeof text, jointed_model, EXAMPLES_DIR, twin);
+    jacobian_after(test_write_file("jointed_twin.xml", text), 0.05,
+                   "jointed bodies, a GFOSUB twin, at t = 0.05 s", HX_PARTIALS_TWIN);
+}
+
 /* The y of a model with Force_StateEqn states, a Control_Diff state after
  * them and loads (suspension_bushing.xml with tp_routines.c's LAG on the arm's
  * angle): every block where the layout puts it, against differences, during
@@ -483,6 +552,25 @@ static void a_wrong_partial_costs_newton_iterations_not_accuracy(void **state)
             close_model(&m);
         }
     }
+}
+
+/* A FIESUB whose partials hold a NaN: the run stops with an error naming the
+ * element and its partials, none of them in the Newton matrix. */
+static void non_finite_partials_stop_the_run_with_their_element(void **state)
+{
+    (void)state;
+    const char *path = scaled_field_model(
+        "nan_partials.xml", "<Force_Field id=\"7\" i_marker_id=\"20\" j_marker_id=\"10\""
+                            " usrsub_param_string=\"USER(100, 0.2, 1e6, 2000, 1, 1)\""
+                            " usrsub_dll_name=\"" SCALED_FIELD_LIBRARY "\"/>\n");
+    model m;
+    open_model(&m, path);
+    double y[64];
+    hx_simulation_result r = simulate(&m, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, 1e-6, 0.1, y);
+    printf("%s: %s\n", hx_status_text(r.status), r.message);
+    assert_int_not_equal(r.status, HX_INTEGRATION_OK);
+    assert_contains(r.message, "Force_Field 7 returned non-finite partials");
+    close_model(&m);
 }
 
 /* A GFOSUB element whose FIESUB twin agrees is linearized by the twin; one
@@ -802,6 +890,7 @@ int main(void)
         cmocka_unit_test(newton_matrix_equals_differences_on_every_model),
         cmocka_unit_test(newton_matrix_asks_a_field_for_its_partials),
         cmocka_unit_test(newton_matrix_has_the_routines_rows),
+        cmocka_unit_test(newton_matrix_on_jointed_bodies_with_partials),
         cmocka_unit_test(newton_matrix_with_state_equations_diffs_and_loads),
         cmocka_unit_test(differences_by_column_groups_equal_them_column_by_column),
         cmocka_unit_test(the_one_pass_newton_matrix_is_cvodes),
@@ -809,6 +898,7 @@ int main(void)
         cmocka_unit_test(the_elastic_energy_does_not_depend_on_how_the_model_is_written),
         cmocka_unit_test(bdf_converges_at_its_order),
         cmocka_unit_test(a_wrong_partial_costs_newton_iterations_not_accuracy),
+        cmocka_unit_test(non_finite_partials_stop_the_run_with_their_element),
         cmocka_unit_test(a_twin_that_disagrees_is_set_aside),
         cmocka_unit_test(bdf_agrees_with_dopri5_on_every_bundled_model),
         cmocka_unit_test(run_takes_bdf_on_every_model_and_says_when_it_is_stiff),

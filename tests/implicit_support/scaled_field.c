@@ -3,18 +3,20 @@
  *
  * FIESUB: a linear spring and damper, exact in its field, whose reported
  * partials are scaled on purpose:
- *     USER(k, c, kr, cr, s)
+ *     USER(k, c, kr, cr, s[, nan])
  *     field = -(k, k, k, kr, kr, kr) disp - (c, c, c, cr, cr, cr) velo
  *     dfddis = s * (-diag(k, k, k, kr, kr, kr)), dfdvel = s * (-diag(c, ..., cr))
  * s = 1: the exact partials; any other s: a wrong Newton matrix, which costs
  * BDF Newton iterations or steps but must not change the trajectory it
- * converges to.
+ * converges to. nan != 0: one entry of dfdvel is NaN (a library whose
+ * partials fail).
  * GFOSUB / SCALED_SPRING_FIELD: the same field under the GFOSUB twin
  * convention (docs/interface.md §3.0), USER(I, J, k, c, kr, cr, s) for
  * SCALED_SPRING (GFOSUB-style: it measures DX..AZ and VX..WZ of I in J) and
  * USER(k, c, kr, cr, s) for SCALED_SPRING_FIELD, whose field is scaled by s
  * too: a twin that disagrees with its element when s != 1.
  */
+#include <math.h>
 #include <string.h>
 
 #include "usrsub/solver_abi.h"
@@ -36,6 +38,8 @@ static void field_of(const double *par, int npar, const double *disp, const doub
         dfddis[i + 6 * i] = -s * ki;
         dfdvel[i + 6 * i] = -s * ci;
     }
+    if (npar > 5 && par[5] != 0.0)
+        dfdvel[7] = NAN;
 }
 
 USRSUB_EXPORT void STDCALL FIESUB(int *id, double *time, double *par, int *npar, double *disp,

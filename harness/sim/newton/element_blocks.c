@@ -418,13 +418,14 @@ static int element_block(hx_newton_matrix *nm, int k, const double *y)
     element_bodies(d, k, bodies);
     if (nm->source[k] == HX_PARTIALS_DIFFERENCES)
         return block_by_differences(nm, k, y, &a, bodies, rows);
-    if (a.bi == a.bj)
-        return 0; /* I and J on one body: the load and its reaction cancel on it */
-    /* with partials the outputs are in J's axes (hx_element_blocks_init) */
-    block_from_partials(nm, k, y, &a, nm->source[k] == HX_PARTIALS_FIESUB
-                                          ? d->element_partials + 72 * k
-                                          : nm->twin_partials + 72 * k,
-                        bodies, rows);
+    const double *dfd = nm->source[k] == HX_PARTIALS_FIESUB ? d->element_partials + 72 * k
+                                                            : nm->twin_partials + 72 * k;
+    if (!hx_all_finite(dfd, 72)) /* a twin's were checked when taken */
+        return hx_dynamics_fail(d, "%s %d returned non-finite partials (dfddis, dfdvel) at t = %g",
+                                d->force_binding[k]->element, d->force_binding[k]->id, s->time);
+    /* with partials the outputs are in J's axes (hx_element_blocks_init), and
+     * I and J are on two bodies (the model's reader refuses one) */
+    block_from_partials(nm, k, y, &a, dfd, bodies, rows);
     return 0;
 }
 

@@ -150,8 +150,8 @@ int hx_newton_matrix_init(hx_newton_matrix *nm, hx_dynamics *d, hx_message *msg)
     nm->y = calloc(3 * (size_t)nm->n + 1, sizeof(double));
     nm->coupled = calloc((size_t)d->nu + 1, sizeof(int));
     nm->load_map = calloc(12 * ((size_t)d->m->nbodies + 1), sizeof(double));
-    int ok = nm->y != NULL && nm->coupled != NULL && nm->load_map != NULL && body_marker_lists(nm) == 0 &&
-             hx_frames_clone(&nm->probe, &d->frames) == 0;
+    int ok = nm->y != NULL && nm->coupled != NULL && nm->load_map != NULL &&
+             body_marker_lists(nm) == 0 && hx_frames_clone(&nm->probe, &d->frames) == 0;
     if (ok) {
         nm->f_plus = nm->y + nm->n;
         nm->f_minus = nm->f_plus + nm->n;
