@@ -53,8 +53,8 @@ typedef struct hx_newton_matrix {
     hx_partials_source *source; /* per force element */
     char *why;                  /* per element, HX_NEWTON_WHY: why differences */
     double *twin_partials;      /* 72 per force element: the twins' dfddis, dfdvel */
-    double *load_map;           /* per body, 12: ucf/m, then ucf I^-1 R^T (row-major) at
-                                 * the build's state (body_blocks.c) */
+    double *load_map;           /* per free body, 12: [0] ucf/m, [3..11] ucf I^-1 R^T
+                                 * (row-major) at the build's state (body_blocks.c) */
     int *element_rows;          /* per force element, ELEMENT_ROWS: where its bodies' rows
                                  * sit in its columns (element_blocks.c) */
     hx_frames probe;             /* the state at y with one body moved (differences) */
