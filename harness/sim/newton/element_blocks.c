@@ -76,13 +76,19 @@ int hx_element_blocks_init(hx_newton_matrix *nm, hx_message *msg)
     return 0;
 }
 
+/* The marker whose axes element k's outputs are in (-1: the world's). */
+static int outputs_axes(const hx_force *f)
+{
+    return f->interface == HX_FORCE_GFOSUB ? f->ref_marker : f->j_marker;
+}
+
 /* The bodies whose columns move element k's outputs or its load: I's, J's,
  * the outputs' axes' (-1 where none, ground, or one already listed). */
 static void element_bodies(const hx_dynamics *d, int k, int bodies[3])
 {
     const hx_model *m = d->m;
     const hx_force *f = &m->forces[k];
-    const int axes = f->interface == HX_FORCE_GFOSUB ? f->ref_marker : f->j_marker;
+    const int axes = outputs_axes(f);
     bodies[0] = m->markers[f->i_marker].body;
     bodies[1] = m->markers[f->j_marker].body;
     bodies[2] = axes >= 0 ? m->markers[axes].body : -1;
@@ -103,7 +109,7 @@ void hx_element_blocks_locate(hx_newton_matrix *nm)
         const int sides[2] = {m->markers[f->i_marker].body, m->markers[f->j_marker].body};
         int bodies[3], *rows = nm->element_rows + ELEMENT_ROWS * k;
         element_bodies(d, k, bodies);
-        for (int i = 0; i < 3 * 13 * 2; ++i)
+        for (int i = 0; i < ELEMENT_ROWS; ++i)
             rows[i] = -1;
         for (int i = 0; i < 3; ++i) {
             if (bodies[i] < 0)
@@ -407,7 +413,7 @@ static int element_block(hx_newton_matrix *nm, int k, const double *y)
     hx_applied_force a;
     a.bi = m->markers[f->i_marker].body;
     a.bj = m->markers[f->j_marker].body;
-    const int axes = f->interface == HX_FORCE_GFOSUB ? f->ref_marker : f->j_marker;
+    const int axes = outputs_axes(f);
     a.ba = axes >= 0 ? m->markers[axes].body : -1;
     a.R_A = axes >= 0 ? s->markers[axes].R : hx_world_frame.R;
     a.I = &s->markers[f->i_marker];
