@@ -66,18 +66,12 @@ static int evaluate(hx_session *s, hx_binding *b, char *outputs, size_t size)
     b->output_fill = NAN;
     const int probed = call_once(s, b, in, out);
     b->output_fill = 0.0;
-    /* numbered as the routine's own values: a VTOSUB's three are the host's
-     * torque slots, an SFOSUB's one the first */
-    int first = 0, count = probed;
-    if (b->kind == HX_BIND_GFOSUB && b->part != HX_OUTPUT_FORCE_AND_TORQUE) {
-        first = b->part == HX_OUTPUT_TORQUE ? 3 : 0;
-        count = b->part >= HX_OUTPUT_SCALAR_FORCE ? 1 : 3;
-    }
+    /* numbered as the routine's own values (a VTOSUB's three, an SFOSUB's one) */
     char unwritten[256] = "";
-    for (int k = first, n = 0; k < first + count && n < (int)sizeof unwritten - 8; ++k)
+    for (int k = 0, n = 0; k < probed && n < (int)sizeof unwritten - 8; ++k)
         if (isnan(out[k]))
             n += snprintf(unwritten + n, sizeof unwritten - (size_t)n, "%s%d", n ? ", " : "",
-                          k - first + 1);
+                          k + 1);
     if (unwritten[0] != '\0')
         printf("  note: %s never writes output%s %s of its call (a solver zeroes them before"
                " each call, as the harness does)\n", hx_binding_routine(b, 0),

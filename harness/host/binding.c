@@ -269,6 +269,7 @@ void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_fram
     call->reported_refused = &b->reported_refused;
     call->reported_unoffered = &b->reported_unoffered;
     call->reported_misused = &b->reported_misused;
+    call->reported_non_finite = &b->reported_non_finite;
 }
 
 static void log_call(hx_binding *b, int which, double time, int iflag, int dflag,
@@ -289,33 +290,6 @@ static void fill(double *out, int n, double value)
 {
     for (int k = 0; k < n; ++k)
         out[k] = value;
-}
-
-/* An SFOSUB's value as force and torque in world axes (a Force_Scalar_TwoBody
- * has no reference marker): along the line from J to I, positive pushing I
- * away (none where they meet), or about J's z axis. An unwritten value (NaN
- * in check's probe) is the first output's. */
-static void scalar_output(const hx_binding *b, const hx_frames *s, double value, double out[6])
-{
-    const hx_force *f = &b->model->forces[b->index];
-    fill(out, 6, 0.0);
-    if (isnan(value)) {
-        out[0] = value;
-        return;
-    }
-    hx_frame scratch[2];
-    const hx_frame *I = hx_frames_marker(s, f->i_marker, &scratch[0]);
-    const hx_frame *J = hx_frames_marker(s, f->j_marker, &scratch[1]);
-    if (b->part == HX_OUTPUT_SCALAR_TORQUE) {
-        for (int k = 0; k < 3; ++k)
-            out[3 + k] = value * J->R[3 * k + 2];
-        return;
-    }
-    double r[3] = {I->p[0] - J->p[0], I->p[1] - J->p[1], I->p[2] - J->p[2]};
-    const double length = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
-    if (length > 0.0)
-        for (int k = 0; k < 3; ++k)
-            out[k] = value * r[k] / length;
 }
 
 /* The caller's record (set up with hx_binding_call_init) or a default one. */
@@ -353,8 +327,8 @@ void hx_invoke_coupler(hx_binding *b, int which, const hx_frames *s, const doubl
     hx_host_unbind();
 }
 
-void hx_invoke_gfosub(hx_binding *b, const hx_frames *s, int dflag, int iflag, double result[6],
-                    hx_call *call)
+void hx_invoke_gfosub(hx_binding *b, const hx_frames *s, int dflag, int iflag, double *values,
+                      hx_call *call)
 {
     hx_call local;
     begin(b, 0, s, iflag, call, &local);
@@ -362,22 +336,11 @@ void hx_invoke_gfosub(hx_binding *b, const hx_frames *s, int dflag, int iflag, d
     double t = s->time;
     if (b->log != NULL)
         log_call(b, 0, t, iflag, dflag, NULL, 0);
-    fill(result, 6, b->output_fill);
-    /* an SFOSUB's one value, a VTOSUB's three (the torque) or the others' */
-    double value = b->output_fill;
-    double *into = b->part >= HX_OUTPUT_SCALAR_FORCE ? &value
-                   : b->part == HX_OUTPUT_TORQUE     ? result + 3
-                                                     : result;
+    fill(values, hx_force_routine_values(b->part), b->output_fill);
     if (b->record != NULL)
-        hx_record_values(b, t, dflag, iflag, into);
+        hx_record_values(b, t, dflag, iflag, values);
     else
-        b->gfosub(&id, &t, b->par, &npar, &df, &flag, into);
-    if (b->part >= HX_OUTPUT_SCALAR_FORCE)
-        scalar_output(b, s, value, result);
-    else if (b->part == HX_OUTPUT_TORQUE)
-        fill(result, 3, 0.0);
-    else if (b->part == HX_OUTPUT_FORCE)
-        fill(result + 3, 3, 0.0);
+        b->gfosub(&id, &t, b->par, &npar, &df, &flag, values);
     if (b->log != NULL)
         b->log->returned++;
     hx_host_unbind();

@@ -86,6 +86,7 @@ typedef struct hx_binding {
     /* what the host has reported of this element: each read once */
     hx_noted_queries reported_undeclared, reported_refused;
     unsigned long long reported_unoffered, reported_misused; /* host/utilities.h bits */
+    unsigned long long reported_non_finite; /* noted in a dependency pass (utilities.h) */
     /* what the outputs hold before each call: 0, as a solver zeroes them; check
      * fills them with NaN once, to find an output the entry never writes */
     double output_fill;
@@ -123,10 +124,14 @@ void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_fram
  * record the call is bound with, set up by hx_binding_call_init. */
 void hx_invoke_coupler(hx_binding *b, int which, const hx_frames *s, const double *disp, int ndisp,
                      int iflag, double *out, hx_call *call);
-/* A Force_Vector_TwoBody's routine: result receives force and torque, the
- * part a VFOSUB or VTOSUB does not return zero. */
-void hx_invoke_gfosub(hx_binding *b, const hx_frames *s, int dflag, int iflag, double result[6],
-                    hx_call *call);
+/* A Force_Vector_TwoBody's, Force_Vector_OneBody's or Force_Scalar_TwoBody's
+ * routine: values receives what the routine itself returns, in the layout
+ * its entry type documents (hx_force_routine_values of them: GFOSUB's force
+ * and torque, VFOSUB's force, VTOSUB's torque, SFOSUB's one value). What the
+ * harness makes of them (their axes, the direction of a scalar) is the
+ * dynamics' (sim/dynamics/element_forces.h); check judges these values. */
+void hx_invoke_gfosub(hx_binding *b, const hx_frames *s, int dflag, int iflag, double *values,
+                      hx_call *call);
 void hx_invoke_fiesub(hx_binding *b, const hx_frames *s, const double disp[6], const double velo[6],
                     int dflag, int iflag, double field[6], double dfddis[36], double dfdvel[36],
                     hx_call *call);

@@ -12,8 +12,8 @@ void hx_call_init(hx_call *c, const char *element, int id, const char *routine,
     c->undeclared.count = c->undeclared.distinct = 0;
     c->refused.count = c->refused.distinct = 0;
     c->reported_undeclared = c->reported_refused = NULL;
-    c->unoffered = c->misused = 0;
-    c->reported_unoffered = c->reported_misused = NULL;
+    c->unoffered = c->misused = c->non_finite = 0;
+    c->reported_unoffered = c->reported_misused = c->reported_non_finite = NULL;
     c->host_calls = 0;
     c->used = 0;
     c->next_declared = 0;

@@ -51,6 +51,9 @@ typedef struct hx_call {
      * record of those already reported (NULL: each call reports on its own) */
     unsigned long long unoffered, misused;
     unsigned long long *reported_unoffered, *reported_misused;
+    /* utilities called with a non-finite argument in a dependency pass (a
+     * note, not a fault: hx_utility_non_finite), and those already noted */
+    unsigned long long non_finite, *reported_non_finite;
     unsigned used;             /* bit k: declared query k was asked */
     int next_declared;         /* where the look-up starts: libraries ask in order */
     int perturb_query;         /* -1, or the declared query whose answer is shifted */

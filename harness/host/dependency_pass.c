@@ -40,9 +40,9 @@ int hx_dependency_passes(hx_bindings *bs, const hx_frames *s)
         /* a FIESUB asked without dflag leaves its partials: only its force counts */
         const int counted = b->kind == HX_BIND_FIESUB ? 6 : nout;
         if (b->messages != NULL && !hx_all_finite(out, counted))
-            hx_messages_host(b->messages, "%s %d (%s) returned a non-finite output in its"
-                             " dependency pass (iflag set, where the state queries answer zeros,"
-                             " as in a solver, which discards these outputs): a warning only",
+            hx_messages_host(b->messages, "note: %s %d (%s) returned a non-finite output in"
+                             " its dependency pass (iflag set, where the state queries answer"
+                             " zeros, as in a solver, which discards these outputs): not a fault",
                              b->element, b->id, hx_binding_routine(b, 0));
         if (b->messages != NULL && hx_messages_stopped(b->messages)) {
             free(work);

@@ -25,7 +25,7 @@ int hx_binding_output_count(const hx_binding *b)
         const int n = m->couplers[b->index].njoints;
         return 1 + n + n * n;
     }
-    case HX_BIND_GFOSUB: return 6;
+    case HX_BIND_GFOSUB: return hx_force_routine_values(b->part);
     case HX_BIND_FIESUB: return 6 + 72;
     case HX_BIND_YFOSUB: return m->stateeqns[b->index].nstate + 6;
     case HX_BIND_REQSUB: return 8;
@@ -63,7 +63,7 @@ int hx_binding_evaluate(hx_binding *b, const hx_frames *s, double *in, int iflag
     }
     case HX_BIND_GFOSUB:
         hx_invoke_gfosub(b, s, dflag, iflag, out, NULL);
-        return 6;
+        return hx_force_routine_values(b->part);
     case HX_BIND_FIESUB:
         hx_invoke_fiesub(b, s, in, in + 6, dflag, iflag, out, out + 6, out + 42, NULL);
         return 6 + 72;

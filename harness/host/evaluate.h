@@ -5,7 +5,8 @@
  * which asks the host for the state; a field's deformation and rates (12);
  * a state equation's states, then its inputs; none for the routines that are
  * not forces. Outputs: a coupler's phi, its n first and n*n second
- * derivatives; the six values of force and torque; a field's six, then
+ * derivatives; what a Force_Vector's or Force_Scalar's routine returns (its
+ * force and torque, its force or torque alone, or its one value); a field's six, then
  * dfddis and dfdvel (72); a state equation's rates, then its six outputs;
  * REQSUB's eight values; VARSUB's and DIFSUB's one; MOTSUB's value at iord
  * 0, 1 and 2.

@@ -198,9 +198,12 @@ void c_rcnvrt(const char *sys1, const double *coord1, const char *sys2, double *
     memcpy(in, coord1, sizeof(double) * (size_t)from.size); /* coord2 may be coord1 */
     for (int k = 0; k < from.size; ++k)
         if (!isfinite(in[k])) {
-            hx_utility_refused(HX_UTILITY_RCNVRT, "a non-finite coordinate (%g) in '%s'", in[k],
-                               sys1);
-            *istat = 1;
+            if (hx_utility_non_finite(HX_UTILITY_RCNVRT, "a non-finite coordinate (%g) in '%s'",
+                                      in[k], sys1))
+                for (int i = 0; i < to.size; ++i)
+                    coord2[i] = NAN;
+            else
+                *istat = 1;
             return;
         }
     if (to_matrix(&from, in, A) != 0 || from_matrix(&to, A, coord2) != 0) {

@@ -52,12 +52,17 @@ static void answer(hx_utility u, int akima, double xval, double zval, int id, in
         hx_utility_refused(u, "iord = %d (0, 1 or 2: the value or its derivatives)", iord);
         return;
     }
-    if (!isfinite(xval) || !isfinite(zval)) {
-        hx_utility_refused(u, "a non-finite argument (xval = %g, zval = %g)", xval, zval);
-        return;
-    }
     if (array == NULL) {
         hx_utility_refused(u, "no array to answer in (a null pointer)");
+        return;
+    }
+    if (!isfinite(xval) || !isfinite(zval)) {
+        if (hx_utility_non_finite(u, "a non-finite argument (xval = %g, zval = %g)", xval,
+                                  zval)) {
+            for (int i = 0; i <= iord; ++i)
+                array[i] = NAN;
+            *errflg = 0;
+        }
         return;
     }
     const hx_call *c = hx_host_bound();

@@ -39,6 +39,14 @@ void hx_utility_unoffered(hx_utility u);
  * utility sets its error flag; reported once per element and utility. */
 void hx_utility_refused(hx_utility u, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
+/* The library called an offered utility with a non-finite argument (`fmt`
+ * names it). In a dependency pass, where the state queries answer zeros and a
+ * solver discards what the routine returns, computing with zeros may give
+ * NaN and is no fault: noted once per element, and 1 (the utility answers
+ * NaN with its error flag clear, as a solver computing with it would). At
+ * any other call it is a refusal (hx_utility_refused), and 0. */
+int hx_utility_non_finite(hx_utility u, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
 /* Utilities documented by name only: defined (unoffered_utilities.c) so that
  * a library referring to them loads, called without touching arguments. */
 void c_fitspl(void);

@@ -44,13 +44,19 @@ static void haversine(double u, double s[3])
 }
 
 /* Every argument finite: a NaN would otherwise pass through a comparison
- * as one side of a transition. */
-static int finite_ok(hx_utility u, const double *args, int n, int *errflg)
+ * as one side of a transition. 1 when they are; else 0, with the out
+ * values (iord + 1 of them) NaN and errflg clear in a dependency pass, or
+ * errflg set (hx_utility_non_finite). */
+static int finite_ok(hx_utility u, const double *args, int n, int iord, double *out, int *errflg)
 {
     for (int k = 0; k < n; ++k)
         if (!isfinite(args[k])) {
-            hx_utility_refused(u, "a non-finite argument (argument %d is %g)", k + 1, args[k]);
-            *errflg = 1;
+            if (hx_utility_non_finite(u, "a non-finite argument (argument %d is %g)", k + 1,
+                                      args[k]))
+                for (int i = 0; i <= iord; ++i)
+                    out[i] = NAN;
+            else
+                *errflg = 1;
             return 0;
         }
     return 1;
@@ -60,7 +66,8 @@ static void transition(hx_utility u, shape_fn *shape, double x, double x0, doubl
                        double h1, int iord, double *value, int *errflg)
 {
     *errflg = 0;
-    if (!order_ok(u, iord, errflg) || !finite_ok(u, (const double[]){x, x0, h0, x1, h1}, 5, errflg))
+    if (!order_ok(u, iord, errflg) ||
+        !finite_ok(u, (const double[]){x, x0, h0, x1, h1}, 5, 0, value, errflg))
         return;
     if (!(x1 > x0)) {
         hx_utility_refused(u, "x1 = %g not above x0 = %g", x1, x0);
@@ -151,7 +158,8 @@ void c_impact(double x, double dxdt, double x1, double k, double e, double cmax,
 {
     *errflg = 0;
     if (!order_ok(HX_UTILITY_IMPACT, iord, errflg) ||
-        !finite_ok(HX_UTILITY_IMPACT, (const double[]){x, dxdt, x1, k, e, cmax, d}, 7, errflg) ||
+        !finite_ok(HX_UTILITY_IMPACT, (const double[]){x, dxdt, x1, k, e, cmax, d}, 7, iord, vec,
+                   errflg) ||
         !stop_parameters_ok(HX_UTILITY_IMPACT, k, e, cmax, d, errflg))
         return;
     double f[6];
@@ -164,8 +172,8 @@ void c_bistop(double x, double dxdt, double x1, double x2, double k, double e, d
 {
     *errflg = 0;
     if (!order_ok(HX_UTILITY_BISTOP, iord, errflg) ||
-        !finite_ok(HX_UTILITY_BISTOP, (const double[]){x, dxdt, x1, x2, k, e, cmax, d}, 8,
-                   errflg) ||
+        !finite_ok(HX_UTILITY_BISTOP, (const double[]){x, dxdt, x1, x2, k, e, cmax, d}, 8, iord,
+                   vec, errflg) ||
         !stop_parameters_ok(HX_UTILITY_BISTOP, k, e, cmax, d, errflg))
         return;
     if (!(x2 >= x1)) {

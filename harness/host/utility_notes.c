@@ -82,6 +82,26 @@ void hx_utility_refused(hx_utility u, const char *fmt, ...)
                          hx_utility_name(u), why);
 }
 
+int hx_utility_non_finite(hx_utility u, const char *fmt, ...)
+{
+    char what[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    hx_call *c = hx_host_bound();
+    if (c == NULL || !c->dependency_pass) {
+        hx_utility_refused(u, "%s", what);
+        return 0;
+    }
+    if (note(c, &c->non_finite, c->reported_non_finite, u) && c->messages != NULL)
+        hx_messages_host(c->messages, "note: %s %d (%s) called %s with %s in its dependency pass"
+                         " (iflag set, where the state queries answer zeros and a solver discards"
+                         " what the routine returns): not a fault; it answered NaN", c->element,
+                         c->id, c->routine != NULL ? c->routine : "?", hx_utility_name(u), what);
+    return 1;
+}
+
 const char *hx_utilities_text(unsigned long long mask, char *text, size_t size)
 {
     size_t n = 0;

@@ -73,6 +73,16 @@ int hx_model_find_stateeqn(const hx_model *m, const char *text, int *index, hx_m
     return hx_fail(msg, "the model has no Force_StateEqn %ld", id);
 }
 
+int hx_force_output_axes(const hx_force *f)
+{
+    return f->interface == HX_FORCE_GFOSUB ? f->ref_marker : f->j_marker;
+}
+
+int hx_force_routine_values(enum hx_user_output part)
+{
+    return part == HX_OUTPUT_FORCE_AND_TORQUE ? 6 : part < HX_OUTPUT_SCALAR_FORCE ? 3 : 1;
+}
+
 const char *hx_force_element_name(const hx_force *f)
 {
     if (f->interface == HX_FORCE_FIESUB)

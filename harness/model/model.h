@@ -84,6 +84,9 @@ enum hx_user_output {
     HX_OUTPUT_SCALAR_FORCE, HX_OUTPUT_SCALAR_TORQUE
 };
 
+/* How many values the routine of a force element returns: 6, 3, 3, 1 or 1. */
+int hx_force_routine_values(enum hx_user_output part);
+
 typedef struct hx_force {
     int id;
     enum hx_force_interface interface; /* Force_Vector_TwoBody or Force_Field */
@@ -95,6 +98,11 @@ typedef struct hx_force {
     hx_user_call user;
     int line;
 } hx_force;
+
+/* The marker whose axes a force element's outputs are in: the reference
+ * marker of a routine that asks the host for the state (-1: the world's, as
+ * for a Force_Scalar_TwoBody), J of a Force_Field (docs/interface.md §3.1). */
+int hx_force_output_axes(const hx_force *f);
 
 enum hx_load_kind {
     HX_LOAD_VECTOR,        /* Force_Vector_OneBody: force/torque at a marker */

@@ -14,7 +14,7 @@
 /* A force element's result axes are the world's for good: on ground, unturned. */
 static int world_aligned(const hx_model *m, const hx_force *f)
 {
-    const int axes = f->interface == HX_FORCE_GFOSUB ? f->ref_marker : f->j_marker;
+    const int axes = hx_force_output_axes(f);
     if (axes < 0)
         return 1;
     if (!m->bodies[m->markers[axes].body].is_ground)

@@ -2,12 +2,62 @@
  * called with the dynamics' state bound, its
  * result turned into world axes and applied at I, its reaction on J's body at
  * the same point. */
+#include <math.h>
+
 #include "base/finite.h"
 #include "base/vecmath.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/element_forces.h"
 #include "sim/dynamics/stage_failure.h"
 #include "frames/measures.h"
+
+void hx_force_routine_load(const hx_model *m, const hx_frames *s, int force,
+                           const double *values, double load[6])
+{
+    const hx_force *f = &m->forces[force];
+    for (int k = 0; k < 6; ++k)
+        load[k] = 0.0;
+    switch (f->part) {
+    case HX_OUTPUT_FORCE_AND_TORQUE:
+        for (int k = 0; k < 6; ++k)
+            load[k] = values[k];
+        return;
+    case HX_OUTPUT_FORCE:
+        v3_copy(load, values);
+        return;
+    case HX_OUTPUT_TORQUE:
+        v3_copy(load + 3, values);
+        return;
+    case HX_OUTPUT_SCALAR_FORCE:
+    case HX_OUTPUT_SCALAR_TORQUE:
+        break;
+    }
+    const double value = values[0];
+    if (isnan(value)) {
+        load[0] = value;
+        return;
+    }
+    hx_frame scratch[2];
+    const hx_frame *I = hx_frames_marker(s, f->i_marker, &scratch[0]);
+    const hx_frame *J = hx_frames_marker(s, f->j_marker, &scratch[1]);
+    if (f->part == HX_OUTPUT_SCALAR_TORQUE) {
+        for (int k = 0; k < 3; ++k)
+            load[3 + k] = value * J->R[3 * k + 2];
+        return;
+    }
+    double r[3] = {I->p[0] - J->p[0], I->p[1] - J->p[1], I->p[2] - J->p[2]};
+    const double length = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    if (length > 0.0)
+        for (int k = 0; k < 3; ++k)
+            load[k] = value * r[k] / length;
+}
+
+void hx_force_routine_call(hx_binding *b, const hx_frames *s, int dflag, double load[6])
+{
+    double values[6];
+    hx_invoke_gfosub(b, s, dflag, 0, values, NULL);
+    hx_force_routine_load(b->model, s, b->index, values, load);
+}
 
 int hx_element_forces_apply(hx_dynamics *d, double *power)
 {
@@ -19,13 +69,10 @@ int hx_element_forces_apply(hx_dynamics *d, double *power)
         hx_binding *b = d->force_binding[k];
         const hx_frame *I = &s->markers[f->i_marker], *J = &s->markers[f->j_marker];
         double *out = d->element_outputs + 6 * k;
-        /* the result's axes: the reference marker's (GFOSUB), or J's (FIESUB) */
-        const double *axes = f->interface == HX_FORCE_GFOSUB
-                                 ? (f->ref_marker >= 0 ? s->markers[f->ref_marker].R
-                                                       : hx_world_frame.R)
-                                 : J->R;
+        const int axes_marker = hx_force_output_axes(f);
+        const double *axes = axes_marker >= 0 ? s->markers[axes_marker].R : hx_world_frame.R;
         if (f->interface == HX_FORCE_GFOSUB) {
-            hx_invoke_gfosub(b, s, 0, 0, out, NULL);
+            hx_force_routine_call(b, s, 0, out);
         } else {
             /* the partials come with the force, when asked for (dflag): kept
              * for the Newton matrix */

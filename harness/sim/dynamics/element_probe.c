@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "frames/measures.h"
+#include "sim/dynamics/element_forces.h"
 #include "base/linalg.h"
 #include "base/vecmath.h"
 
@@ -112,7 +113,7 @@ static int gfosub_placed(hx_session *s, hx_binding *b, hx_frames *scratch, doubl
     const hx_force *f = &s->model->forces[b->index];
     scratch->time = t;
     double out[6];
-    hx_invoke_gfosub(b, scratch, 1, 0, out, NULL);
+    hx_force_routine_call(b, scratch, 1, out);
     hx_frame frames[2];
     const hx_frame *J = hx_frames_marker(scratch, f->j_marker, &frames[0]);
     const hx_frame *ref = hx_frames_marker(scratch, f->ref_marker, &frames[1]);

@@ -17,6 +17,7 @@
 
 #include "base/finite.h"
 #include "base/vecmath.h"
+#include "sim/dynamics/element_forces.h"
 #include "sim/dynamics/stage_failure.h"
 #include "sim/newton/newton_parts.h"
 #include "frames/measures.h"
@@ -76,19 +77,13 @@ int hx_element_blocks_init(hx_newton_matrix *nm, hx_message *msg)
     return 0;
 }
 
-/* The marker whose axes element k's outputs are in (-1: the world's). */
-static int outputs_axes(const hx_force *f)
-{
-    return f->interface == HX_FORCE_GFOSUB ? f->ref_marker : f->j_marker;
-}
-
 /* The bodies whose columns move element k's outputs or its load: I's, J's,
  * the outputs' axes' (-1 where none, ground, or one already listed). */
 static void element_bodies(const hx_dynamics *d, int k, int bodies[3])
 {
     const hx_model *m = d->m;
     const hx_force *f = &m->forces[k];
-    const int axes = outputs_axes(f);
+    const int axes = hx_force_output_axes(f);
     bodies[0] = m->markers[f->i_marker].body;
     bodies[1] = m->markers[f->j_marker].body;
     bodies[2] = axes >= 0 ? m->markers[axes].body : -1;
@@ -211,7 +206,7 @@ static int differenced_outputs(hx_newton_matrix *nm, int k, int b, int c, double
     for (int side = 0; side < 2; ++side) {
         nm->y[c] = keep + (side == 0 ? h : -h);
         hx_newton_probe_move(nm, b, nm->y);
-        hx_invoke_gfosub(bind, &nm->probe, 1, 0, out[side], NULL);
+        hx_force_routine_call(bind, &nm->probe, 1, out[side]);
         nm->partial_calls++;
         if (hx_dynamics_check_stop(d, bind) != 0 || !hx_all_finite(out[side], 6)) {
             nm->y[c] = keep;
@@ -413,7 +408,7 @@ static int element_block(hx_newton_matrix *nm, int k, const double *y)
     hx_applied_force a;
     a.bi = m->markers[f->i_marker].body;
     a.bj = m->markers[f->j_marker].body;
-    const int axes = outputs_axes(f);
+    const int axes = hx_force_output_axes(f);
     a.ba = axes >= 0 ? m->markers[axes].body : -1;
     a.R_A = axes >= 0 ? s->markers[axes].R : hx_world_frame.R;
     a.I = &s->markers[f->i_marker];

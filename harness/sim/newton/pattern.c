@@ -144,7 +144,7 @@ int hx_newton_pattern(hx_newton_matrix *nm)
         body_by_body(&p, d, b, b, 1);
     for (int k = 0; k < m->nforces; ++k) {
         const hx_force *f = &m->forces[k];
-        const int axes = f->interface == HX_FORCE_GFOSUB ? f->ref_marker : f->j_marker;
+        const int axes = hx_force_output_axes(f);
         const int rows[2] = {body_of(m, f->i_marker), body_of(m, f->j_marker)};
         const int cols[3] = {rows[0], rows[1], body_of(m, axes)};
         bodies_by_bodies(&p, d, rows, 2, cols, 3);

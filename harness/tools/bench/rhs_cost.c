@@ -16,6 +16,7 @@
  * keeps the ABI's signatures and needs no table of its own. */
 typedef struct standin {
     double out[3][81];  /* per function (a coupler's three; one otherwise) */
+    int values;         /* a force routine's: how many it returns (hx_force_routine_values) */
     double par[];       /* a copy of the binding's USER list */
 } standin;
 
@@ -41,7 +42,8 @@ static void STDCALL standin_gfosub(int *id, double *time, double *par, int *npar
                                    int *iflag, double *result)
 {
     (void)id, (void)time, (void)npar, (void)dflag, (void)iflag;
-    memcpy(result, standin_of(par)->out[0], 6 * sizeof(double));
+    const standin *st = standin_of(par);
+    memcpy(result, st->out[0], sizeof(double) * (size_t)st->values);
 }
 
 static void STDCALL standin_fiesub(int *id, double *time, double *par, int *npar, double *disp,
@@ -116,6 +118,7 @@ static int record_standins(hx_session *s, hx_dynamics *d, const double *y, stand
             for (int which = 0; which < 3; ++which)
                 hx_invoke_coupler(b, which, &d->frames, disp, c->njoints, 0, st->out[which], NULL);
         } else if (b->kind == HX_BIND_GFOSUB) {
+            st->values = hx_force_routine_values(b->part);
             hx_invoke_gfosub(b, &d->frames, 0, 0, st->out[0], NULL);
         } else if (b->kind == HX_BIND_YFOSUB) {
             if (record_stateeqn(d, b, y, st->out[0]) != 0)

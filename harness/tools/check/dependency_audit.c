@@ -80,6 +80,18 @@ typedef struct audit {
     FILE *out;
 } audit;
 
+/* The name of value k a force routine returns, in its entry type's layout. */
+static const char *value_name(const hx_binding *b, int k)
+{
+    static const char *const names[6] = {"Fx", "Fy", "Fz", "Tx", "Ty", "Tz"};
+    switch (b->part) {
+    case HX_OUTPUT_TORQUE: return names[3 + k];
+    case HX_OUTPUT_SCALAR_FORCE: return "its force";
+    case HX_OUTPUT_SCALAR_TORQUE: return "its torque";
+    default: return names[k];
+    }
+}
+
 /* Two calls in a row at one state and time that disagree. */
 static void report_unrepeatable(const audit *a, const double *first, const double *second)
 {
@@ -97,13 +109,12 @@ static void report_unrepeatable(const audit *a, const double *first, const doubl
     }
     double disp[6], velo[6]; /* as the host measures them, J's motion included */
     hx_force_deformation(&a->base, a->b->index, disp, velo);
-    static const char *const names[6] = {"Fx", "Fy", "Fz", "Tx", "Ty", "Tz"};
     fprintf(a->out, "  %s %d: FAIL: two calls in a row at the same state and time t = %.9g"
             " (deformation %.9g %.9g %.9g %.9g %.9g %.9g, rate %.9g %.9g %.9g %.9g %.9g %.9g of"
             " I relative to J) return %s = %.17g, then %.17g: %s\n", a->b->element, a->b->id,
             a->base.time, disp[0], disp[1], disp[2], disp[3], disp[4], disp[5], velo[0],
-            velo[1], velo[2], velo[3], velo[4], velo[5], names[k], first[k], second[k],
-            consequence);
+            velo[1], velo[2], velo[3], velo[4], velo[5], value_name(a->b, k), first[k],
+            second[k], consequence);
 }
 
 /* An output that is not a number at the base state: named, 1; else 0. */
@@ -286,7 +297,9 @@ int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
     audit a;
     memset(&a, 0, sizeof a);
     a.s = s, a.b = b, a.out = out;
-    a.nout = b->kind == HX_BIND_GFOSUB ? 6 : hx_binding_output_count(b);
+    /* the values the routine itself returns, in its entry type's layout: what
+     * the harness makes of them (their axes, a scalar's direction) is its own */
+    a.nout = hx_binding_output_count(b);
     a.what = b->kind == HX_BIND_GFOSUB ? "force" : "output";
     a.capacity = hx_query_capacity(m);
     const size_t capacity = (size_t)a.capacity;
