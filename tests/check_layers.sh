@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
-# The architecture, checked (docs/architecture.md, "Layers"):
-#  - arrows run one way: a file includes only headers of its own layer or a
-#    lower one (library: entries -> readers -> core; harness: cmd -> tools ->
-#    sim/simulation -> sim/newton -> sim/dynamics -> sim/ode -> host -> frames
-#    -> model -> base; the ODE solvers know nothing of the model);
+# The architecture, checked against its document (docs/architecture.md,
+# "Layers"), so that the two cannot part:
+#  - the table of layers between the document's layers markers gives each
+#    layer's folder and the layers it uses; every row's folder exists, every
+#    source file lies in one row's folder, and a file includes only headers of
+#    its own layer or of the layers its layer uses, directly or through them;
+#  - every backticked folder name in the document (`sim/ode/`) exists;
+#  - every harness header's guard is HX_<PATH>_H;
 #  - the harness shares no code with the library it verifies: of the
-#    library's headers it includes only the solver ABI;
+#    library's headers it includes only the solver ABI, and include/ holds
+#    only that one;
 #  - the harness has one global, the ABI's binding (host/abi.c);
 #  - nothing refers to files outside the repository, and every repository
 #    path a source, script or document names exists.
@@ -14,55 +18,104 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 failures=0
 complain() { echo "check_layers: $*"; failures=$((failures + 1)); }
+doc=docs/architecture.md
 
-rank_of() { # layer rank of a path inside a tree, or empty
-  case "$1" in
-    usrsub/core/*|usrsub/core/*) echo 0 ;;
-    usrsub/readers/*) echo 1 ;;
-    usrsub/entries/*) echo 2 ;;
-    harness/base/*) echo 0 ;;
-    harness/model/*) echo 1 ;;
-    harness/frames/*) echo 2 ;;
-    harness/host/*) echo 3 ;;
-    harness/sim/ode/*) echo 4 ;;
-    harness/sim/dynamics/*) echo 5 ;;
-    harness/sim/newton/*) echo 6 ;;
-    harness/sim/simulation/*) echo 7 ;;
-    harness/tools/*) echo 8 ;;
-    harness/cmd/*) echo 9 ;;
-  esac
+# ---- the table: name | `folder/` | uses ----
+declare -A folder_of uses_of
+names=()
+while IFS= read -r row; do
+  IFS='|' read -r _ name folder uses _ <<<"$row"
+  name=$(echo "$name" | xargs)
+  folder=$(echo "$folder" | tr -d '` ' )
+  uses=$(echo "$uses" | tr ',' ' ' | xargs)
+  case "$name" in ""|layer|---) continue ;; esac
+  names+=("$name")
+  folder_of[$name]=$folder
+  uses_of[$name]=$uses
+done < <(sed -n '/<!-- layers/,/<!-- \/layers -->/p' "$doc" | grep '^|' | grep -v '^|---')
+[ "${#names[@]}" -gt 0 ] || complain "$doc has no table of layers between its layers markers"
+for name in "${names[@]}"; do
+  [ -d "${folder_of[$name]}" ] || complain "$doc names layer $name in ${folder_of[$name]}, which does not exist"
+  for used in ${uses_of[$name]}; do
+    [ -n "${folder_of[$used]:-}" ] || complain "$doc: layer $name uses $used, which is no layer of the table"
+  done
+done
+
+# what a layer may include: itself and, transitively, what it uses
+declare -A allowed
+closure() {
+  local seen=" $1 " todo="${uses_of[$1]}" next
+  while [ -n "$todo" ]; do
+    next=""
+    for l in $todo; do
+      case "$seen" in *" $l "*) continue ;; esac
+      seen="$seen$l "
+      next="$next ${uses_of[$l]:-}"
+    done
+    todo=$(echo "$next" | xargs)
+  done
+  echo "$seen"
+}
+for name in "${names[@]}"; do allowed[$name]=$(closure "$name"); done
+
+layer_of() { # the layer whose folder holds a path (the longest folder wins)
+  local best="" len=0
+  for name in "${names[@]}"; do
+    case "$1" in
+      "${folder_of[$name]}"*) [ "${#folder_of[$name]}" -gt "$len" ] && best=$name && len=${#folder_of[$name]} ;;
+    esac
+  done
+  echo "$best"
 }
 
 [ "$(git ls-files include)" = "include/usrsub/solver_abi.h" ] ||
   complain "include/ holds more than the one public header, the solver ABI: $(git ls-files include)"
 
-for f in $(git ls-files 'usrsub/*.c' 'usrsub/*.h'); do
-  mine=$(rank_of "$f")
-  while read -r inc; do
-    case "$inc" in
-      usrsub/solver_abi.h) [ "$mine" -ge 1 ] || complain "$f includes the ABI header (core knows no host)" ;;
-      usrsub/core/*) ;;
-      usrsub/readers/*) [ "$mine" -ge 1 ] || complain "$f (core) includes $inc (a reader)" ;;
-      *.h) [ "$mine" -ge 2 ] || complain "$f includes $inc (an entries header)" ;;
-    esac
-  done < <(grep -oE '^#include "[^"]+"' "$f" | sed 's/#include "//; s/"$//')
-done
+check_includes() { # tree prefix (usrsub or harness), how includes are written
+  local tree=$1
+  for f in $(git ls-files "$tree/*.c" "$tree/*.h"); do
+    local mine
+    mine=$(layer_of "$f")
+    [ -n "$mine" ] || { complain "$f is in no layer's folder ($doc)"; continue; }
+    while read -r inc; do
+      local target theirs
+      case "$inc" in
+        usrsub/solver_abi.h)
+          [ "$tree" = harness ] || [ "$mine" != core ] || complain "$f includes the ABI header (core knows no host)"
+          continue ;;
+        usrsub/*) target=$inc
+          [ "$tree" = usrsub ] || { complain "$f includes $inc: the harness uses no code of the library it verifies"; continue; } ;;
+        *) if [ "$tree" = harness ]; then target=harness/$inc; else target=$(dirname "$f")/$inc; fi ;;
+      esac
+      theirs=$(layer_of "$target")
+      if [ -z "$theirs" ]; then
+        complain "$f includes $inc, which is in no layer's folder"
+      else
+        case "${allowed[$mine]}" in
+          *" $theirs "*) ;;
+          *) complain "$f ($mine) includes $inc ($theirs): $doc does not let $mine use $theirs" ;;
+        esac
+      fi
+    done < <(grep -oE '^#include "[^"]+"' "$f" | sed 's/#include "//; s/"$//')
+  done
+}
+check_includes usrsub
+check_includes harness
 
-for f in $(git ls-files 'harness/*.c' 'harness/*.h'); do
-  mine=$(rank_of "$f")
-  [ -n "$mine" ] || { complain "$f is in no layer folder"; continue; }
-  while read -r inc; do
-    case "$inc" in
-      usrsub/solver_abi.h) continue ;;
-      usrsub/*) complain "$f includes $inc: the harness uses no code of the library it verifies"; continue ;;
-    esac
-    theirs=$(rank_of "harness/$inc")
-    if [ -z "$theirs" ]; then
-      complain "$f includes $inc, which is in no layer folder"
-    elif [ "$theirs" -gt "$mine" ]; then
-      complain "$f includes $inc: an arrow pointing up"
-    fi
-  done < <(grep -oE '^#include "[^"]+"' "$f" | sed 's/#include "//; s/"$//')
+# ---- every backticked folder the document names exists ----
+while read -r name; do
+  found=0
+  for base in . harness usrsub tests; do
+    [ -d "$base/$name" ] && found=1 && break
+  done
+  [ "$found" = 1 ] || complain "$doc names the folder $name, which does not exist"
+done < <(grep -oE '`[a-z_]+(/[a-z_]+)*/`' "$doc" | tr -d '`' | sort -u)
+
+# ---- header guards ----
+for f in $(git ls-files 'harness/*.h'); do
+  want=$(echo "${f#harness/}" | tr 'a-z/.' 'A-Z__')
+  want=HX_$want
+  grep -q "^#ifndef $want\$" "$f" || complain "$f: its guard is not $want"
 done
 
 # file-scope variables that are not constant: only the ABI's binding
@@ -97,9 +150,8 @@ done < <(git grep -oE '(^|[^A-Za-z0-9_./%$*{<-])[A-Za-z0-9_.-]+(/[A-Za-z0-9_.-]+
            -- '*.c' '*.h' '*.sh' '*.md' 'CMakeLists.txt' '*.cmake' '*.xml' '*.f' \
          | sed -E 's/^([^:]+):[^A-Za-z0-9_.-]?/\1:/' | sort -u)
 
-
 if [ "$failures" -ne 0 ]; then
   echo "check_layers: $failures problem(s)"
   exit 1
 fi
-echo "check_layers: the layers, the verifier's independence and the references hold"
+echo "check_layers: the layers as $doc tables them, the verifier's independence and the references hold"

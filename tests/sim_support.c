@@ -1,7 +1,7 @@
 /* Helpers of the simulating tests (sim_support.h). */
 #include "sim_support.h"
 #include "host/dependency_pass.h"
-#include "sim/newton/newton_matrix.h"
+#include "sim/jacobian/jacobian.h"
 
 #include <dlfcn.h>
 #include <math.h>
@@ -24,7 +24,8 @@ static const char *model_path(const char *model)
     return path;
 }
 
-static int observe(void *ctx, hx_dynamics *d, double t, const double *y)
+static int observe(void *ctx, const hx_dynamics *d, hx_dynamics_data *dd, double t,
+                   const double *y)
 {
     trajectory *p = ctx;
     if (p->rows == p->capacity) {
@@ -35,11 +36,11 @@ static int observe(void *ctx, hx_dynamics *d, double t, const double *y)
     }
     /* multipliers belong to the last evaluation; evaluate at this state */
     double *ydot = malloc(sizeof(double) * (size_t)p->n);
-    hx_dynamics_rhs(d, t, y, ydot);
+    hx_dynamics_rhs(d, dd, t, y, ydot);
     free(ydot);
     p->t[p->rows] = t;
     memcpy(p->y + p->rows * p->n, y, sizeof(double) * (size_t)p->n);
-    memcpy(p->lambda + p->rows * p->ncouplers, d->lambda,
+    memcpy(p->lambda + p->rows * p->ncouplers, dd->lambda,
            sizeof(double) * (size_t)p->ncouplers);
     p->rows++;
     return 0;
@@ -52,7 +53,8 @@ void sim_run(sim *s, const char *model, hx_method method, double h, double t_end
     hx_message msg;
     if (hx_session_open(&s->session, model_path(model), stderr, &msg) != 0)
         fail_msg("%s", msg.text);
-    if (hx_dynamics_init(&s->dynamics, &s->session, &msg) != 0)
+    if (hx_dynamics_init(&s->dynamics, &s->session, &msg) != 0 ||
+        hx_dynamics_data_init(&s->data, &s->dynamics, &msg) != 0)
         fail_msg("%s", msg.text);
     s->path.n = s->dynamics.n;
     s->path.ncouplers = s->session.model->ncouplers;
@@ -73,8 +75,18 @@ void sim_run(sim *s, const char *model, hx_method method, double h, double t_end
         fail_msg("simulate %s: %s", model, s->result.message);
 }
 
+void sim_evaluate(sim *s, double t, const double *y)
+{
+    double *ydot = calloc((size_t)s->dynamics.n, sizeof(double));
+    assert_non_null(ydot);
+    if (hx_dynamics_rhs(&s->dynamics, &s->data, t, y, ydot) != 0)
+        fail_msg("%s", s->data.message);
+    free(ydot);
+}
+
 void sim_close(sim *s)
 {
+    hx_dynamics_data_free(&s->data);
     hx_dynamics_free(&s->dynamics);
     hx_session_close(&s->session);
     free(s->path.t);
@@ -263,13 +275,14 @@ void csv_free(csv_table *t)
     memset(t, 0, sizeof *t);
 }
 
-double newton_matrix_against_differences(hx_dynamics *d, double t, const double *y,
-                                         const char *what, long *outside)
+double jacobian_against_differences(const hx_dynamics *d, double t, const double *y,
+                                    const char *what, long *outside)
 {
     const int n = d->n;
-    hx_newton_matrix nm;
+    hx_jacobian nm;
+    hx_dynamics_data dd;
     hx_message msg;
-    if (hx_newton_matrix_init(&nm, d, &msg) != 0)
+    if (hx_jacobian_init(&nm, d, &msg) != 0 || hx_dynamics_data_init(&dd, d, &msg) != 0)
         fail_msg("%s: %s", what, msg.text);
     double *values = calloc((size_t)nm.pattern.nnz + 1, sizeof(double));
     double *A = calloc((size_t)n * (size_t)n, sizeof(double));
@@ -278,22 +291,25 @@ double newton_matrix_against_differences(hx_dynamics *d, double t, const double 
     double *down = malloc(sizeof(double) * (size_t)n);
     unsigned char *in = calloc((size_t)n * (size_t)n, 1);
     assert_non_null(values), assert_non_null(A), assert_non_null(D), assert_non_null(in);
-    if (hx_newton_matrix_build(&nm, t, y, values) != 0)
-        fail_msg("%s: %s", what, d->message);
+    double *fy = calloc((size_t)n, sizeof(double));
+    assert_non_null(fy);
+    if (hx_dynamics_rhs(d, &dd, t, y, fy) != 0 || hx_jacobian_build(&nm, t, y, fy, values) != 0)
+        fail_msg("%s: %s", what, dd.failed ? dd.message : nm.dd.message);
+    free(fy);
     for (int c = 0; c < n; ++c)
         for (int k = nm.pattern.colptr[c]; k < nm.pattern.colptr[c + 1]; ++k) {
             A[(size_t)nm.pattern.rowind[k] + (size_t)n * c] = values[k];
             in[(size_t)nm.pattern.rowind[k] + (size_t)n * c] = 1;
         }
     char described[1024] = "";
-    hx_newton_matrix_describe(&nm, described, sizeof described);
+    hx_jacobian_describe(&nm, described, sizeof described);
     for (int c = 0; c < n; ++c) {
         const double h = 1e-6 * fmax(1.0, fabs(y[c]));
         for (int side = 0; side < 2; ++side) {
             memcpy(shifted, y, sizeof(double) * (size_t)n);
             shifted[c] += side ? -h : h;
-            if (hx_dynamics_rhs(d, t, shifted, side ? down : up) != 0)
-                fail_msg("%s: %s", what, d->message);
+            if (hx_dynamics_rhs(d, &dd, t, shifted, side ? down : up) != 0)
+                fail_msg("%s: %s", what, dd.message);
         }
         for (int r = 0; r < n; ++r)
             D[r + (size_t)n * c] = (up[r] - down[r]) / (2.0 * h);
@@ -323,12 +339,13 @@ double newton_matrix_against_differences(hx_dynamics *d, double t, const double 
                 worst = e, worst_r = r, worst_c = c;
         }
     }
-    printf("  %s: Newton matrix (%d x %d, %d nonzeros) against differences of the whole right-hand"
+    printf("  %s: Jacobian (%d x %d, %d nonzeros) against differences of the whole right-hand"
            " side: largest difference %.2g of its row (row %d, column %d: %.10g against %.10g);"
            " %ld outside the sparsity\n  (%s)\n", what, n, n, nm.pattern.nnz, worst, worst_r,
            worst_c, A[worst_r + (size_t)n * worst_c], D[worst_r + (size_t)n * worst_c], *outside,
            described);
     free(values), free(A), free(D), free(shifted), free(up), free(down), free(in);
-    hx_newton_matrix_free(&nm);
+    hx_jacobian_free(&nm);
+    hx_dynamics_data_free(&dd);
     return worst;
 }

@@ -15,6 +15,7 @@ typedef struct trajectory {
 typedef struct sim {
     hx_session session;
     hx_dynamics dynamics;
+    hx_dynamics_data data;  /* the test's own evaluations (sim_evaluate) */
     hx_simulation_result result;
     trajectory path;
 } sim;
@@ -25,6 +26,9 @@ typedef struct sim {
 void sim_run(sim *s, const char *model, hx_method method, double h, double t_end,
              double output_interval);
 void sim_close(sim *s);
+/* The dynamics evaluated at (t, y) on s->data (its multipliers, loads and
+ * frames then belong to that state); fails the test on an error. */
+void sim_evaluate(sim *s, double t, const double *y);
 /* Value of state component k of a row. */
 double sim_state(const sim *s, int row, int k);
 /* Multiplier of a coupler at a row. */
@@ -32,15 +36,15 @@ double sim_lambda(const sim *s, int row, int coupler);
 /* Offset of a jointed body's coordinate (position) by joint id. */
 int sim_joint_q(const sim *s, int joint_id);
 int sim_joint_u(const sim *s, int joint_id);
-/* The assembled Newton matrix (sim/newton/) at (t, y) against central
+/* The assembled Jacobian (sim/jacobian/) at (t, y) against central
  * differences of the whole right-hand side, entry by entry relative to each
  * row's largest entry (the work accumulators' rows apart: the matrix leaves
  * them out): returns the largest difference; *outside receives the count of
  * entries the differences find nonzero (above 1e-9 of their row) where the
  * sparsity says zero, or that the build itself found outside it. Prints a
  * line naming what. */
-double newton_matrix_against_differences(hx_dynamics *d, double t, const double *y,
-                                         const char *what, long *outside);
+double jacobian_against_differences(const hx_dynamics *d, double t, const double *y,
+                                    const char *what, long *outside);
 
 /* Runs "usrsub-harness check" in-process; returns its exit status. */
 int sim_check(const char *model);

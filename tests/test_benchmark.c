@@ -48,9 +48,10 @@ static void open_dynamics(sim *s, const char *model, double *y)
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", EXAMPLES_DIR, model);
     if (hx_session_open(&s->session, path, stderr, &msg) != 0 ||
-        hx_dynamics_init(&s->dynamics, &s->session, &msg) != 0)
+        hx_dynamics_init(&s->dynamics, &s->session, &msg) != 0 ||
+        hx_dynamics_data_init(&s->data, &s->dynamics, &msg) != 0)
         fail_msg("%s", msg.text);
-    assert_int_equal(hx_dynamics_initial_state(&s->dynamics, y), 0);
+    assert_int_equal(hx_dynamics_initial_state(&s->dynamics, &s->data, y), 0);
 }
 
 static void fastest_mode_of_the_damped_oscillator(void **state)

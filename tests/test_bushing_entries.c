@@ -9,8 +9,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "host/invoke.h"
 #include "host/binding.h"
-#include "host/session.h"
+#include "session/session.h"
 #include "frames/measures.h"
 #include "sim_support.h"
 #include "test_support.h"
@@ -86,11 +87,11 @@ static void default_named_and_field_forms_agree(void **state)
                            FIE(3, "(1, 101)", "FIESUB") FIE(4, "(101)", "ABM_BUSHING_FIELD")));
     double F[4][6];
     for (int k = 0; k < 2; ++k)
-        hx_invoke_gfosub(&s.bindings.items[k], &s.frames, 0, 0, F[k], NULL);
+        hx_invoke_force(&s.bindings.items[k], &s.frames, 0, 0, F[k], NULL);
     double disp[6], velo[6], dfd[36], dfv[36];
     hx_force_deformation(&s.frames, 2, disp, velo);
     for (int k = 2; k < 4; ++k)
-        hx_invoke_fiesub(&s.bindings.items[k], &s.frames, disp, velo, 0, 0, F[k], dfd, dfv, NULL);
+        hx_invoke_field(&s.bindings.items[k], &s.frames, disp, velo, 0, 0, F[k], dfd, dfv, NULL);
     for (int k = 1; k < 4; ++k)
         for (int i = 0; i < 6; ++i)
             assert_close(F[k][i], F[0][i], 1e-12, 1e-12);
@@ -106,10 +107,10 @@ static int deps_of(hx_session *s, int k, char *text, size_t size)
     hx_call call;
     double out[6];
     hx_binding_call_init(b, &call, 0, &s->frames, 1);
-    hx_invoke_gfosub(b, &s->frames, 0, 1, out, &call);
+    hx_invoke_force(b, &s->frames, 0, 1, out, &call);
     const int dependency_calls = call.host_calls;
     hx_binding_call_init(b, &call, 0, &s->frames, 0);
-    hx_invoke_gfosub(b, &s->frames, 0, 0, out, &call);
+    hx_invoke_force(b, &s->frames, 0, 0, out, &call);
     assert_int_equal(call.host_calls, dependency_calls); /* the same queries in both passes */
     assert_int_equal(call.undeclared.count, 0);
     hx_dependencies_text(&b->deps, text, size);
@@ -135,10 +136,10 @@ static void queries_only_what_the_bushing_needs(void **state)
     assert_string_equal(text, "RDISP(20,10) AZ(20,10)");
     /* inactive directions return 0 */
     double out[6];
-    hx_invoke_gfosub(&s.bindings.items[1], &s.frames, 0, 0, out, NULL);
+    hx_invoke_force(&s.bindings.items[1], &s.frames, 0, 0, out, NULL);
     for (int i = 3; i < 6; ++i)
         assert_close(out[i], 0.0, 0, 0);
-    hx_invoke_gfosub(&s.bindings.items[3], &s.frames, 0, 0, out, NULL);
+    hx_invoke_force(&s.bindings.items[3], &s.frames, 0, 0, out, NULL);
     for (int i = 0; i < 5; ++i)
         assert_close(out[i], 0.0, 0, 0);
     assert_true(fabs(out[5]) > 0.0);
@@ -203,7 +204,7 @@ static void non_finite_field_state(void **state)
     double disp[6] = {0, NAN, 0, 0, 0, 0}, velo[6] = {0}, F[6], dfd[36], dfv[36];
     for (int i = 0; i < 36; ++i)
         dfd[i] = dfv[i] = 1.0;
-    hx_invoke_fiesub(&s.bindings.items[0], &s.frames, disp, velo, 0, 0, F, dfd, dfv, NULL);
+    hx_invoke_field(&s.bindings.items[0], &s.frames, disp, velo, 0, 0, F, dfd, dfv, NULL);
     assert_contains(s.messages.last_error, "FIESUB element 3", "disp", "not finite");
     for (int i = 0; i < 6; ++i)
         assert_close(F[i], 0.0, 0, 0);

@@ -80,8 +80,9 @@ static void hydraulic_jack_holds_the_car(void **state)
     double y[16];
     for (int k = 0; k < s.dynamics.n; ++k)
         y[k] = sim_state(&s, 5, k);
-    const double F1 = hx_constraints_coupler_force(&s.dynamics, t, y, 0, 0);
-    const double F2 = hx_constraints_coupler_force(&s.dynamics, t, y, 0, 1);
+    sim_evaluate(&s, t, y);
+    const double F1 = hx_constraints_coupler_force(&s.dynamics, &s.data, t, y, 0, 0);
+    const double F2 = hx_constraints_coupler_force(&s.dynamics, &s.data, t, y, 0, 1);
     assert_close(F2 / F1, A2 / A1, 1e-12, 0);
     assert_close(F2, 1000.0 * 9810.0 / UCF, 1e-9, 0); /* carries the car's weight */
     assert_constraints_held(&s);
@@ -127,10 +128,10 @@ static void differential_splits_torque_equally(void **state)
     double y[16];
     for (int k = 0; k < s.dynamics.n; ++k)
         y[k] = sim_state(&s, last, k);
-    hx_dynamics_rhs(&s.dynamics, 1.0, y, (double[16]){0});
-    const double left = hx_constraints_coupler_force(&s.dynamics, 1.0, y, 0, 0);
-    const double right = hx_constraints_coupler_force(&s.dynamics, 1.0, y, 0, 1);
-    const double carrier = hx_constraints_coupler_force(&s.dynamics, 1.0, y, 0, 2);
+    sim_evaluate(&s, 1.0, y);
+    const double left = hx_constraints_coupler_force(&s.dynamics, &s.data, 1.0, y, 0, 0);
+    const double right = hx_constraints_coupler_force(&s.dynamics, &s.data, 1.0, y, 0, 1);
+    const double carrier = hx_constraints_coupler_force(&s.dynamics, &s.data, 1.0, y, 0, 2);
     assert_close(left, right, 1e-14, 0);
     assert_close(carrier, -2.0 * left, 1e-14, 0);
     assert_constraints_held(&s);

@@ -15,7 +15,7 @@
 
 #include "model/model.h"
 #include "frames/frames.h"
-#include "host/session.h"
+#include "session/session.h"
 #include "frames/measures.h"
 #include "sim_support.h"
 #include "test_support.h"

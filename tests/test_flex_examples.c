@@ -10,8 +10,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "host/invoke.h"
 #include "host/binding.h"
-#include "host/session.h"
+#include "session/session.h"
 #include "frames/measures.h"
 #include "sim_support.h"
 #include "test_support.h"
@@ -81,7 +82,7 @@ static void each_column_of_k_and_d(void **state)
                 disp[j] = 1.0;
             else
                 velo[j - 6] = 1.0;
-            hx_invoke_fiesub(&s.bindings.items[e], &s.frames, disp, velo, 0, 0, F, dfd, dfv, NULL);
+            hx_invoke_field(&s.bindings.items[e], &s.frames, disp, velo, 0, 0, F, dfd, dfv, NULL);
             for (int r = 0; r < 6; ++r) {
                 /* a unit deformation gives minus that column, plus the preload */
                 const double column = j < 6 ? k_entry(r, j) : 0.5 * k_entry(r, j - 6) + 100.0;
@@ -108,17 +109,17 @@ static void gfosub_and_fiesub_forms_agree_and_query_what_they_need(void **state)
         for (int k = 0; k < s.bindings.count; ++k) {
             hx_binding *b = &s.bindings.items[k];
             const int id = m->forces[b->index].id;
-            if (b->kind == HX_BIND_FIESUB && id == 1 + pair)
+            if (b->kind == HX_BIND_FIELD && id == 1 + pair)
                 field = b;
-            if (b->kind == HX_BIND_GFOSUB && id == 11 + pair)
+            if (b->kind == HX_BIND_FORCE && id == 11 + pair)
                 vector = b;
         }
         assert_non_null(field);
         assert_non_null(vector);
         double disp[6], velo[6], F[6], G[6], dfd[36], dfv[36];
         hx_force_deformation(&s.frames, field->index, disp, velo);
-        hx_invoke_fiesub(field, &s.frames, disp, velo, 0, 0, F, dfd, dfv, NULL);
-        hx_invoke_gfosub(vector, &s.frames, 0, 0, G, NULL);
+        hx_invoke_field(field, &s.frames, disp, velo, 0, 0, F, dfd, dfv, NULL);
+        hx_invoke_force(vector, &s.frames, 0, 0, G, NULL);
         for (int i = 0; i < 6; ++i)
             assert_close(G[i], F[i], 1e-12, 1e-9);
         char text[256];

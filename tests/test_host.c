@@ -10,8 +10,9 @@
 #include <string.h>
 #include <sys/wait.h>
 
+#include "host/invoke.h"
 #include "host/binding.h"
-#include "host/session.h"
+#include "session/session.h"
 #include "host/queries.h"
 #include "test_support.h"
 #include "tools/check/checks.h"
@@ -66,9 +67,9 @@ static void evaluate_probe(int probe, int i, int j, double result[6], hx_call *c
     hx_session s;
     open_probe(&s, probe, i, j, stderr);
     hx_binding *b = &s.bindings.items[0];
-    hx_invoke_gfosub(b, &s.frames, 0, 1, result, NULL); /* dependency pass */
+    hx_invoke_force(b, &s.frames, 0, 1, result, NULL); /* dependency pass */
     hx_binding_call_init(b, call, 0, &s.frames, 0);
-    hx_invoke_gfosub(b, &s.frames, 0, 0, result, call);
+    hx_invoke_force(b, &s.frames, 0, 0, result, call);
     hx_session_close(&s);
 }
 
@@ -158,7 +159,7 @@ static void dependency_pass_records_queries(void **state)
     assert_int_equal(hx_session_open(&s, probe_model(1, 21, 11), stderr, &msg), 0);
     hx_binding *b = &s.bindings.items[0];
     double r[6] = {1, 1, 1, 1, 1, 1};
-    hx_invoke_gfosub(b, &s.frames, 0, 1, r, NULL);
+    hx_invoke_force(b, &s.frames, 0, 1, r, NULL);
     assert_int_equal(b->deps.count, 1);
     char text[128];
     assert_string_equal(hx_query_text(&b->deps.query[0], text, sizeof text), "DISP(21,11,11)");

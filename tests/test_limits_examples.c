@@ -10,8 +10,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "host/invoke.h"
 #include "host/binding.h"
-#include "host/session.h"
+#include "session/session.h"
 #include "frames/measures.h"
 #include "sim_support.h"
 #include "test_support.h"
@@ -118,7 +119,7 @@ static void open_session(hx_session *s, const char *path)
 static void field(hx_session *s, int k, const double d[6], const double v[6], double F[6],
                   double dfd[36], double dfv[36])
 {
-    hx_invoke_fiesub(&s->bindings.items[k], &s->frames, d, v, 0, 0, F, dfd, dfv, NULL);
+    hx_invoke_field(&s->bindings.items[k], &s->frames, d, v, 0, 0, F, dfd, dfv, NULL);
     assert_int_equal(s->messages.errors, 0);
 }
 
@@ -177,8 +178,8 @@ static void inactive_limits_change_nothing(void **state)
     assert_memory_equal(dfd1, dfd5, sizeof dfd1);
     assert_memory_equal(dfv1, dfv5, sizeof dfv1);
     double G8[6], G9[6];
-    hx_invoke_gfosub(&s.bindings.items[2], &s.frames, 0, 0, G8, NULL);
-    hx_invoke_gfosub(&s.bindings.items[3], &s.frames, 0, 0, G9, NULL);
+    hx_invoke_force(&s.bindings.items[2], &s.frames, 0, 0, G8, NULL);
+    hx_invoke_force(&s.bindings.items[3], &s.frames, 0, 0, G9, NULL);
     assert_memory_equal(G8, G9, sizeof G8);
     char t8[256], t9[256];
     hx_dependencies_text(&s.bindings.items[2].deps, t8, sizeof t8);
@@ -195,8 +196,8 @@ static void gfosub_and_fiesub_forms_agree_and_query_what_they_need(void **state)
                            GFO(6, "(2, 20, 10, 102)", "GFOSUB") GFO(7, "(20, 10, 102)", "MOUNT_LIMITS")
                            FIE(3, "(2, 102)", "FIESUB") GFO(10, "(2, 20, 10, 104)", "GFOSUB")));
     double G6[6], G7[6], F3[6], dfd[36], dfv[36], disp[6], velo[6];
-    hx_invoke_gfosub(&s.bindings.items[0], &s.frames, 0, 0, G6, NULL);
-    hx_invoke_gfosub(&s.bindings.items[1], &s.frames, 0, 0, G7, NULL);
+    hx_invoke_force(&s.bindings.items[0], &s.frames, 0, 0, G6, NULL);
+    hx_invoke_force(&s.bindings.items[1], &s.frames, 0, 0, G7, NULL);
     hx_force_deformation(&s.frames, 2, disp, velo);
     field(&s, 2, disp, velo, F3, dfd, dfv);
     assert_true(disp[0] > 1.0 && disp[3] > 0.05); /* the model's state is past two gaps */
@@ -211,7 +212,7 @@ static void gfosub_and_fiesub_forms_agree_and_query_what_they_need(void **state)
     hx_dependencies_text(&s.bindings.items[3].deps, text, sizeof text);
     assert_string_equal(text, "TDISP(20,10,10)"); /* undamped translational limits */
     double G10[6];
-    hx_invoke_gfosub(&s.bindings.items[3], &s.frames, 0, 0, G10, NULL);
+    hx_invoke_force(&s.bindings.items[3], &s.frames, 0, 0, G10, NULL);
     assert_close(G10[0], -100.0 * (disp[0] - 1.0) * (disp[0] - 1.0), 1e-12, 0);
     hx_session_close(&s);
 }

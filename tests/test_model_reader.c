@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "host/session.h"
+#include "session/session.h"
 #include "model/model.h"
 #include "sim/dynamics/dynamics.h"
 #include "test_support.h"
@@ -343,13 +343,14 @@ static void first_angular_acceleration(const char *name, const char *cg_orientat
     if (hx_session_open(&s, test_write_file(name, xml), stderr, &msg) != 0)
         fail_msg("%s", msg.text);
     hx_dynamics d;
-    if (hx_dynamics_init(&d, &s, &msg) != 0)
+    hx_dynamics_data dd;
+    if (hx_dynamics_init(&d, &s, &msg) != 0 || hx_dynamics_data_init(&dd, &d, &msg) != 0)
         fail_msg("%s", msg.text);
     double *y = calloc((size_t)d.n, sizeof(double)), *ydot = calloc((size_t)d.n, sizeof(double));
     assert_non_null(y);
     assert_non_null(ydot);
-    assert_int_equal(hx_dynamics_initial_state(&d, y), 0);
-    assert_int_equal(hx_dynamics_rhs(&d, 0.0, y, ydot), 0);
+    assert_int_equal(hx_dynamics_initial_state(&d, &dd, y), 0);
+    assert_int_equal(hx_dynamics_rhs(&d, &dd, 0.0, y, ydot), 0);
     const hx_body_dof *dof = &d.dof[hx_model_body(s.model, 2)];
     assert_int_equal(dof->kind, HX_DOF_FREE);
     const double *udot = ydot + d.nq + dof->u;
@@ -359,6 +360,7 @@ static void first_angular_acceleration(const char *name, const char *cg_orientat
     }
     free(y);
     free(ydot);
+    hx_dynamics_data_free(&dd);
     hx_dynamics_free(&d);
     hx_session_close(&s);
 }

@@ -12,7 +12,7 @@
 #include <string.h>
 
 #include "host/call.h"
-#include "host/session.h"
+#include "session/session.h"
 #include "sim_support.h"
 #include "frames/measures.h"
 #include "test_support.h"
@@ -98,7 +98,7 @@ static void the_counter_counts(void **state)
     int id = b->id + 1000, npar = b->npar, n = s.model->couplers[b->index].njoints, flag = 0;
     double time = 0.0, angles[3] = {0.1, 0.2, 0.3}, out[9];
     start_counting();
-    b->coupler[0](&id, &time, b->par, &npar, angles, &n, &flag, out);
+    b->fn.coupler[0](&id, &time, b->par, &npar, angles, &n, &flag, out);
     counted = stop_counting();
     printf("  a new coupler element's set-up: %ld allocations\n", counted);
     assert_true(counted > 0);
@@ -127,29 +127,29 @@ static long allocations_in_calls(const char *model)
             double q[3] = {0.1, -0.2, 0.3};
             int n = s.model->couplers[b->index].njoints;
             for (int fn = 0; fn < 3; ++fn) {
-                b->coupler[fn](&id, &time, b->par, &npar, q, &n, &flag, out); /* warm */
+                b->fn.coupler[fn](&id, &time, b->par, &npar, q, &n, &flag, out); /* warm */
                 start_counting();
                 for (long c = 0; c < CALLS / 3; ++c) {
                     q[0] = 0.1 + 1e-7 * (double)(c & 1023);
-                    b->coupler[fn](&id, &time, b->par, &npar, q, &n, &flag, out);
+                    b->fn.coupler[fn](&id, &time, b->par, &npar, q, &n, &flag, out);
                 }
                 counted += stop_counting();
             }
-        } else if (b->kind == HX_BIND_GFOSUB) {
+        } else if (b->kind == HX_BIND_FORCE) {
             hx_host_bind(&call);
-            b->gfosub(&id, &time, b->par, &npar, &dflag, &flag, out);
+            b->fn.force(&id, &time, b->par, &npar, &dflag, &flag, out);
             start_counting();
             for (long c = 0; c < CALLS; ++c)
-                b->gfosub(&id, &time, b->par, &npar, &dflag, &flag, out);
+                b->fn.force(&id, &time, b->par, &npar, &dflag, &flag, out);
             counted += stop_counting();
             hx_host_unbind();
         } else {
             hx_force_deformation(&s.frames, b->index, disp, velo);
-            b->fiesub(&id, &time, b->par, &npar, disp, velo, &dflag, &flag, out, dfd, dfv);
+            b->fn.field(&id, &time, b->par, &npar, disp, velo, &dflag, &flag, out, dfd, dfv);
             start_counting();
             for (long c = 0; c < CALLS; ++c) {
                 disp[0] += 1e-9; /* a new state each call */
-                b->fiesub(&id, &time, b->par, &npar, disp, velo, &dflag, &flag, out, dfd, dfv);
+                b->fn.field(&id, &time, b->par, &npar, disp, velo, &dflag, &flag, out, dfd, dfv);
             }
             counted += stop_counting();
         }

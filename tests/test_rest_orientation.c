@@ -10,7 +10,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "host/session.h"
+#include "host/invoke.h"
+#include "session/session.h"
 #include "rest_scenario.h"
 #include "sim_support.h"
 #include "frames/measures.h"
@@ -57,9 +58,9 @@ static void torque_at_rest_with_the_harness(void **state)
             if (hx_session_open(&s, test_write_file("rest.xml", xml), stderr, &msg) != 0)
                 fail_msg("%s", msg.text);
             double T[6], Tref[6], dfd[36], dfv[36];
-            hx_invoke_gfosub(&s.bindings.items[0], &s.frames, 0, 0, T, NULL);
+            hx_invoke_force(&s.bindings.items[0], &s.frames, 0, 0, T, NULL);
             const double disp[6] = {0, 0, 0, exact[0], exact[1], exact[2]}, velo[6] = {0};
-            hx_invoke_fiesub(&s.bindings.items[1], &s.frames, disp, velo, 0, 0, Tref, dfd, dfv, NULL);
+            hx_invoke_field(&s.bindings.items[1], &s.frames, disp, velo, 0, 0, Tref, dfd, dfv, NULL);
             const double size = sqrt(Tref[3] * Tref[3] + Tref[4] * Tref[4] + Tref[5] * Tref[5]);
             for (int i = 3; i < 6; ++i)
                 worst = fmax(worst, fabs(T[i] - Tref[i]) / size);

@@ -14,7 +14,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
-#include "host/session.h"
+#include "session/session.h"
 #include "sim_support.h"
 #include "test_support.h"
 

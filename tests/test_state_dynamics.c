@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sim/newton/newton_matrix.h"
+#include "sim/jacobian/jacobian.h"
 #include "sim/dynamics/stateeqns.h"
 #include "sim_support.h"
 #include "test_support.h"
@@ -115,7 +115,7 @@ static void friction_holds_below_breakaway(void **state)
     const int q = sim_joint_q(&s, 5), u = sim_joint_u(&s, 5), last = s.path.rows - 1;
     /* presliding: the bristles take the torque, sigma0 z r_B N = T, and the
      * body stops after turning by a few z / r_B = 4e-5 rad */
-    const int z3 = s.dynamics.states + 2;
+    const int z3 = s.dynamics.stateeqn_offset + 2;
     printf("  4000 N mm: angle %.6g rad, rate %.3g rad/s, bristle %.8g mm at t = 0.05 s\n",
            sim_state(&s, last, q), sim_state(&s, last, u), sim_state(&s, last, z3));
     assert_true(sim_state(&s, last, q) > 4e-5 && sim_state(&s, last, q) < 4e-4);
@@ -229,17 +229,17 @@ static void rubber_filter_passes_the_sine_with_its_gain(void **state)
 
 /* ---- the Newton matrix ---------------------------------------------------------------------- */
 
-/* The assembled Newton matrix against differences (sim_support.h): no entry
+/* The assembled Jacobian against differences (sim_support.h): no entry
  * outside its sparsity. */
-static double newton_matrix_error(hx_dynamics *d, double t, const double *y, const char *what)
+static double jacobian_error(const hx_dynamics *d, double t, const double *y, const char *what)
 {
     long outside = 0;
-    const double worst = newton_matrix_against_differences(d, t, y, what, &outside);
+    const double worst = jacobian_against_differences(d, t, y, what, &outside);
     assert_int_equal(outside, 0);
     return worst;
 }
 
-static void newton_matrix_with_states_equals_differences(void **state)
+static void jacobian_with_states_equals_differences(void **state)
 {
     (void)state;
     /* presliding under the rising torque, sliding, and the mount taking the
@@ -252,7 +252,7 @@ static void newton_matrix_with_states_equals_differences(void **state)
         char what[64];
         snprintf(what, sizeof what, "suspension_bushing.xml at t = %g s", times[k]);
         const double *y = s.path.y + (s.path.rows - 1) * s.path.n;
-        assert_true(newton_matrix_error(&s.dynamics, times[k], y, what) < 1e-6);
+        assert_true(jacobian_error(&s.dynamics, times[k], y, what) < 1e-6);
         sim_close(&s);
     }
 }
@@ -297,7 +297,7 @@ static void a_non_finite_rate_ends_the_run(void **state)
     so.integration.t_end = 0.01;
     hx_simulation_result r;
     assert_int_equal(hx_simulate(&d, &so, NULL, &r), -1);
-    assert_contains(r.message, "Force_StateEqn 1 returned a non-finite state rate at t = 0");
+    assert_contains(r.message, "Force_StateEqn 1 (", "returned a non-finite state rate at t = 0");
     hx_dynamics_free(&d);
     hx_session_close(&session);
 }
@@ -310,10 +310,10 @@ static void a_library_without_partials_is_differenced(void **state)
     sim a, b, c;
     sim_run(&a, plain, HX_METHOD_DOPRI5, 1e-7, 0.3, 0.3);
     const double *y = a.path.y + (a.path.rows - 1) * a.path.n;
-    assert_true(newton_matrix_error(&a.dynamics, 0.3, y, "scaled_state without partial routines") < 1e-6);
-    hx_binding *bp = hx_binding_of_stateeqn(&a.session.bindings, 0);
+    assert_true(jacobian_error(&a.dynamics, 0.3, y, "scaled_state without partial routines") < 1e-6);
+    hx_binding *bp = hx_bindings_find(&a.session.bindings, HX_FAMILY_STATEEQN, 0);
     for (int r = 0; r < 4; ++r)
-        assert_null(bp->state_partial[r]);
+        assert_null(bp->fn.stateeqn.partial[r]);
     /* BDF on either agrees with DOPRI5 on the end state */
     sim_run(&b, plain, HX_METHOD_BDF, 1e-6, 1.0, 1.0);
     sim_run(&c, with, HX_METHOD_BDF, 1e-6, 1.0, 1.0);
@@ -400,7 +400,7 @@ int main(void)
         cmocka_unit_test(friction_slides_at_mu_d_above_breakaway),
         cmocka_unit_test(a_mount_in_series_with_friction_integrates_smoothly),
         cmocka_unit_test(rubber_filter_passes_the_sine_with_its_gain),
-        cmocka_unit_test(newton_matrix_with_states_equals_differences),
+        cmocka_unit_test(jacobian_with_states_equals_differences),
         cmocka_unit_test(a_library_without_partials_is_differenced),
         cmocka_unit_test(a_non_finite_rate_ends_the_run),
         cmocka_unit_test(energy_balance_closes_at_the_integrators_accuracy),

@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "host/session.h"
+#include "session/session.h"
 #include "host/state_inputs.h"
 #include "model/model.h"
 #include "sim_support.h"

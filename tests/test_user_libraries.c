@@ -11,7 +11,7 @@
 #include <string.h>
 #include <sys/wait.h>
 
-#include "host/session.h"
+#include "session/session.h"
 #include "sim/dynamics/dynamics.h"
 #include "sim_support.h"
 #include "test_support.h"
@@ -479,8 +479,8 @@ static void bad_queries_and_values_of_the_routines_are_named(void **state)
     const char *const to[2] = {"USER(0.2, 50, 30, 12, 0.002)", "USER(99, 0.01, 0)"};
     path = model_variant("routines_bad", "nan_motion.xml", 2, from, to);
     assert_int_not_equal(harness_on("run", path, "--end 0.02 --quiet", output, sizeof output), 0);
-    assert_contains(output, "Motion_Joint 6 (PEEKING_SWING) returned a non-finite value at iord 2,"
-                    " t = 0.002");
+    assert_contains(output, "Motion_Joint 6 (PEEKING_SWING) returned a non-finite acceleration"
+                    " (iord 2) at t = 0.002");
 }
 
 /* What run does not integrate is refused, naming the element. */

@@ -1,6 +1,6 @@
 /* Small dense linear algebra of the harness (row-major matrices). */
-#ifndef HX_LINALG_H
-#define HX_LINALG_H
+#ifndef HX_BASE_LINALG_H
+#define HX_BASE_LINALG_H
 
 /* Solves A x = b in place (b becomes x) by Gaussian elimination with partial
  * pivoting; A is destroyed. Returns 0, or -1 when A is singular. */

@@ -4,8 +4,8 @@
  * of the rotated frame expressed in the reference frame. Quaternions are
  * (w, x, y, z), unit length.
  */
-#ifndef HX_VECMATH_H
-#define HX_VECMATH_H
+#ifndef HX_BASE_VECMATH_H
+#define HX_BASE_VECMATH_H
 
 #include <math.h>
 #include <string.h>

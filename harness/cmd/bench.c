@@ -13,7 +13,7 @@
 #include "cmd/options.h"
 #include "tools/bench/long_run.h"
 #include "tools/bench/rhs_cost.h"
-#include "host/session.h"
+#include "session/session.h"
 #include "tools/bench/stability.h"
 #include "tools/bench/work_precision.h"
 
@@ -135,11 +135,13 @@ static int costs_section(hx_session *s, const bench_options *o)
 
 static int stability_section(hx_session *s, hx_stability *st)
 {
-    hx_message msg;
+    hx_message msg = {.text = ""};
     hx_dynamics d;
     int status = hx_dynamics_init(&d, s, &msg);
     double *y = status == 0 ? calloc((size_t)d.n, sizeof(double)) : NULL;
-    if (status == 0 && (y == NULL || hx_dynamics_initial_state(&d, y) != 0 ||
+    if (status == 0 && y == NULL)
+        status = hx_fail(&msg, "out of memory");
+    if (status == 0 && (hx_dynamics_initial_y(&d, y, &msg) != 0 ||
                         hx_estimate_stability(&d, 0.0, y, st, &msg) != 0))
         status = -1;
     if (status == 0) {
@@ -147,7 +149,7 @@ static int stability_section(hx_session *s, hx_stability *st)
         hx_stability_text(st, text, sizeof text);
         printf("stability at t = 0 (%d right-hand sides): %s\n", st->evaluations, text);
     } else {
-        fprintf(stderr, "usrsub-harness bench: stability: %s\n", msg.text[0] ? msg.text : d.message);
+        fprintf(stderr, "usrsub-harness bench: stability: %s\n", msg.text);
     }
     free(y);
     hx_dynamics_free(&d);

@@ -21,8 +21,8 @@
 #include "base/finite.h"
 #include "cmd/commands.h"
 #include "cmd/options.h"
-#include "host/evaluate.h"
-#include "host/session.h"
+#include "host/element_call.h"
+#include "session/session.h"
 #include "host/state_inputs.h"
 #include "frames/measures.h"
 #include "tools/check/checks.h"
@@ -43,13 +43,13 @@ static void usage(FILE *f)
 }
 
 /* One call of the element at its inputs at the model's initial state
- * (host/evaluate.h): the number of outputs shown (a field's force, without
+ * (host/element_call.h): the number of outputs shown (a field's force, without
  * the partials it is not asked for). */
 static int call_once(hx_session *s, hx_binding *b, double *in, double *out)
 {
-    hx_binding_inputs(b, &s->frames, NULL, in);
-    const int n = hx_binding_evaluate(b, &s->frames, in, 0, 0, out);
-    return b->kind == HX_BIND_FIESUB ? 6 : n;
+    hx_element_call_inputs(b, &s->frames, NULL, in);
+    const int n = hx_element_call(b, &s->frames, in, 0, 0, out);
+    return b->kind == HX_BIND_FIELD ? 6 : n;
 }
 
 /* One evaluation at the model's initial state: its outputs, finite or not
@@ -58,8 +58,8 @@ static int call_once(hx_session *s, hx_binding *b, double *in, double *out)
  * in every other call, so they are noted, not failed. */
 static int evaluate(hx_session *s, hx_binding *b, char *outputs, size_t size)
 {
-    const int nin = hx_binding_input_count(b);
-    double *in = calloc((size_t)(nin + hx_binding_output_count(b)), sizeof(double));
+    const int nin = hx_element_call_input_count(b);
+    double *in = calloc((size_t)(nin + hx_element_call_output_count(b)), sizeof(double));
     if (in == NULL)
         return -1;
     double *out = in + nin;
@@ -88,12 +88,12 @@ static int check_element(hx_session *s, hx_binding *b)
 {
     char deps[512], outputs[1024], lib[512], functions[160];
     snprintf(lib, sizeof lib, "%s", b->library);
-    if (b->kind == HX_BIND_YFOSUB) {
+    if (b->kind == HX_BIND_STATEEQN) {
         int n = snprintf(functions, sizeof functions, "%s", hx_binding_routine(b, 0));
         for (int k = 0; k < 4 && n > 0 && (size_t)n < sizeof functions; ++k)
             n += snprintf(functions + n, sizeof functions - (size_t)n, " %s%s",
                           hx_binding_routine(b, 1 + k),
-                          b->state_partial[k] != NULL ? "" : " (not exported)");
+                          b->fn.stateeqn.partial[k] != NULL ? "" : " (not exported)");
     } else {
         snprintf(functions, sizeof functions, b->kind == HX_BIND_COUPLER ? "%s %s %s" : "%s",
                  hx_binding_routine(b, 0), hx_binding_routine(b, 1), hx_binding_routine(b, 2));
@@ -108,8 +108,8 @@ static int check_element(hx_session *s, hx_binding *b)
         printf("  %s %d: out of memory\n", b->element, b->id);
         return 1;
     }
-    printf("  %s at t = 0: %s\n", b->kind == HX_BIND_YFOSUB   ? "state rates, then outputs"
-                                   : b->kind == HX_BIND_MOTSUB ? "value, rate, acceleration"
+    printf("  %s at t = 0: %s\n", b->kind == HX_BIND_STATEEQN   ? "state rates, then outputs"
+                                   : b->kind == HX_BIND_MOTION ? "value, rate, acceleration"
                                                                : "outputs", outputs);
     if (hx_messages_stopped(&s->messages))
         return 1;
@@ -124,11 +124,11 @@ static int check_element(hx_session *s, hx_binding *b)
         return failures + 1;
     if (b->kind == HX_BIND_COUPLER)
         failures += hx_check_coupler(s, b, stdout);
-    else if (b->kind == HX_BIND_FIESUB)
+    else if (b->kind == HX_BIND_FIELD)
         failures += hx_check_field_partials(s, b, stdout);
-    else if (b->kind == HX_BIND_YFOSUB)
+    else if (b->kind == HX_BIND_STATEEQN)
         failures += hx_check_state_partials(s, b, stdout);
-    else if (b->kind == HX_BIND_MOTSUB)
+    else if (b->kind == HX_BIND_MOTION)
         failures += hx_check_motion(s, b, stdout);
     else
         failures += hx_audit_dependencies(s, b, stdout);
@@ -146,7 +146,7 @@ static void report_call(const hx_binding *b, const hx_call_log *log, const char 
         char values[480];
         hx_format_values(values, sizeof values, log->args, log->nargs, 6);
         snprintf(args, sizeof args, ", %s (%s)",
-                 b->kind == HX_BIND_COUPLER ? "disp" : b->kind == HX_BIND_YFOSUB ? "input"
+                 b->kind == HX_BIND_COUPLER ? "disp" : b->kind == HX_BIND_STATEEQN ? "input"
                                                      : "disp and velo", values);
     }
     printf("  %s %d: FAIL: %s in %s (%s) called with iflag = %d, dflag = %d, time = %g%s\n",

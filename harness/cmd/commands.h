@@ -1,6 +1,6 @@
 /* The harness's commands: usrsub-harness {check|rig|run|bench} MODEL.xml [options]. */
-#ifndef HX_COMMANDS_H
-#define HX_COMMANDS_H
+#ifndef HX_CMD_COMMANDS_H
+#define HX_CMD_COMMANDS_H
 
 /* Each returns the process exit status (0 success). argv[0] is the command. */
 int hx_command_check(int argc, char **argv);

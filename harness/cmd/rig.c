@@ -81,7 +81,7 @@ static int run_state_rig(hx_rig *r, const char *plot, const char *csv_path, cons
         printf("  %d states integrated by bdf (CVODE, rtol 1e-8): %ld steps, %ld Newton"
                " iterations, %ld Jacobians (%s)\n", f->nstate, result.stats.steps,
                result.stats.newton_iterations, result.stats.jacobians,
-               hx_binding_of_stateeqn(&r->s->bindings, r->force)->state_partial[0] != NULL
+               hx_bindings_find(&r->s->bindings, HX_FAMILY_STATEEQN, r->force)->fn.stateeqn.partial[0] != NULL
                    ? "YFOXX" : "differences of YFOSUB");
     printf("  work done on the element over the path (stored or dissipated): %.8g\n", result.work);
     if (status != 0) {

@@ -40,11 +40,11 @@ static void usage(FILE *f)
             "the end time) and recommends bdf then, or an explicit method when it is not.\n");
 }
 
-static int stability_at_start(hx_dynamics *d, hx_stability *st)
+static int stability_at_start(const hx_dynamics *d, hx_stability *st)
 {
     hx_message msg;
     double *y = calloc((size_t)d->n, sizeof(double));
-    const int status = y != NULL && hx_dynamics_initial_state(d, y) == 0 &&
+    const int status = y != NULL && hx_dynamics_initial_y(d, y, &msg) == 0 &&
                                hx_estimate_stability(d, 0.0, y, st, &msg) == 0
                            ? 0
                            : -1;
@@ -131,7 +131,7 @@ static int parse(int argc, char **argv, hx_simulation_options *so, const char **
             }
             break;
         case 'j':
-            if (hx_jacobian_parse(optarg, &io->jacobian) != 0) {
+            if (hx_jacobian_method_parse(optarg, &io->jacobian) != 0) {
                 fprintf(stderr, "usrsub-harness run: --jacobian '%s' is not analytic or fd\n",
                         optarg);
                 bad = 1;

@@ -28,30 +28,30 @@ void hx_marker_frame(const hx_model *m, const hx_frame *b, int marker, hx_frame 
     v3_add(out->v, b->v, wr);
 }
 
-static void all_markers(hx_frames *s)
+static void all_markers(hx_frames *fr)
 {
-    const hx_model *m = s->model;
+    const hx_model *m = fr->model;
     for (int k = 0; k < m->nmarkers; ++k)
-        hx_marker_frame(m, &s->bodies[m->markers[k].body], k, &s->markers[k]);
+        hx_marker_frame(m, &fr->bodies[m->markers[k].body], k, &fr->markers[k]);
 }
 
-int hx_frames_init(hx_frames *s, const hx_model *m)
+int hx_frames_init(hx_frames *fr, const hx_model *m)
 {
-    memset(s, 0, sizeof *s);
-    s->model = m;
-    s->bodies = calloc((size_t)m->nbodies + 1, sizeof *s->bodies);
-    s->markers = calloc((size_t)m->nmarkers + 1, sizeof *s->markers);
-    s->tracked = calloc((size_t)m->nmarkers + 1, sizeof *s->tracked);
-    s->first_tracked = calloc((size_t)m->nbodies + 1, sizeof *s->first_tracked);
-    s->diffs = calloc(2 * (size_t)m->nroutines_of[HX_ROUTINE_DIFF] + 1, sizeof *s->diffs);
-    if (s->bodies == NULL || s->markers == NULL || s->tracked == NULL ||
-        s->first_tracked == NULL || s->diffs == NULL) {
-        hx_frames_free(s);
+    memset(fr, 0, sizeof *fr);
+    fr->model = m;
+    fr->bodies = calloc((size_t)m->nbodies + 1, sizeof *fr->bodies);
+    fr->markers = calloc((size_t)m->nmarkers + 1, sizeof *fr->markers);
+    fr->tracked = calloc((size_t)m->nmarkers + 1, sizeof *fr->tracked);
+    fr->first_tracked = calloc((size_t)m->nbodies + 1, sizeof *fr->first_tracked);
+    fr->diffs = calloc(2 * (size_t)m->nroutines_of[HX_ROUTINE_DIFF] + 1, sizeof *fr->diffs);
+    if (fr->bodies == NULL || fr->markers == NULL || fr->tracked == NULL ||
+        fr->first_tracked == NULL || fr->diffs == NULL) {
+        hx_frames_free(fr);
         return -1;
     }
     for (int k = 0; k < m->nbodies; ++k) {
         const hx_body *b = &m->bodies[k];
-        hx_frame *f = &s->bodies[k];
+        hx_frame *f = &fr->bodies[k];
         v3_copy(f->p, b->p0);
         m3_copy(f->R, b->R0);
         v3_copy(f->v, b->v0);
@@ -61,30 +61,30 @@ int hx_frames_init(hx_frames *s, const hx_model *m)
      * updated alone: count, then place each at its body's next free slot */
     for (int k = 0; k < m->nmarkers; ++k)
         if (m->markers[k].tracked)
-            s->first_tracked[m->markers[k].body + 1]++;
+            fr->first_tracked[m->markers[k].body + 1]++;
     for (int b = 0; b < m->nbodies; ++b)
-        s->first_tracked[b + 1] += s->first_tracked[b];
+        fr->first_tracked[b + 1] += fr->first_tracked[b];
     for (int k = 0; k < m->nmarkers; ++k)
         if (m->markers[k].tracked)
-            s->tracked[s->first_tracked[m->markers[k].body]++] = k;
+            fr->tracked[fr->first_tracked[m->markers[k].body]++] = k;
     for (int b = m->nbodies; b > 0; --b) /* each now holds the next body's start */
-        s->first_tracked[b] = s->first_tracked[b - 1];
-    s->first_tracked[0] = 0;
+        fr->first_tracked[b] = fr->first_tracked[b - 1];
+    fr->first_tracked[0] = 0;
     for (int k = 0; k < m->nroutines; ++k)
         if (m->routines[k].kind == HX_ROUTINE_DIFF)
-            memcpy(&s->diffs[2 * m->routines[k].slot], m->routines[k].ic, sizeof(double[2]));
-    all_markers(s);
+            memcpy(&fr->diffs[2 * m->routines[k].slot], m->routines[k].ic, sizeof(double[2]));
+    all_markers(fr);
     return 0;
 }
 
-void hx_frames_free(hx_frames *s)
+void hx_frames_free(hx_frames *fr)
 {
-    free(s->bodies);
-    free(s->markers);
-    free(s->tracked);
-    free(s->first_tracked);
-    free(s->diffs);
-    memset(s, 0, sizeof *s);
+    free(fr->bodies);
+    free(fr->markers);
+    free(fr->tracked);
+    free(fr->first_tracked);
+    free(fr->diffs);
+    memset(fr, 0, sizeof *fr);
 }
 
 int hx_frames_clone(hx_frames *to, const hx_frames *from)
@@ -104,20 +104,20 @@ void hx_frames_copy(hx_frames *to, const hx_frames *from)
     memcpy(to->diffs, from->diffs, sizeof *to->diffs * 2 * (size_t)m->nroutines_of[HX_ROUTINE_DIFF]);
 }
 
-void hx_frames_update(hx_frames *s)
+void hx_frames_update(hx_frames *fr)
 {
-    const hx_model *m = s->model;
+    const hx_model *m = fr->model;
     for (int b = 0; b < m->nbodies; ++b)
         if (!m->bodies[b].is_ground) /* those on ground never move */
-            hx_frames_update_body(s, b);
+            hx_frames_update_body(fr, b);
 }
 
-void hx_frames_update_body(hx_frames *s, int body)
+void hx_frames_update_body(hx_frames *fr, int body)
 {
-    const hx_model *m = s->model;
-    for (int n = s->first_tracked[body]; n < s->first_tracked[body + 1]; ++n) {
-        const int k = s->tracked[n];
-        hx_marker_frame(m, &s->bodies[body], k, &s->markers[k]);
+    const hx_model *m = fr->model;
+    for (int n = fr->first_tracked[body]; n < fr->first_tracked[body + 1]; ++n) {
+        const int k = fr->tracked[n];
+        hx_marker_frame(m, &fr->bodies[body], k, &fr->markers[k]);
     }
 }
 
@@ -130,13 +130,13 @@ void hx_frames_copy_body(hx_frames *to, const hx_frames *from, int body)
     }
 }
 
-const hx_frame *hx_frames_marker(const hx_frames *s, int index, hx_frame *scratch)
+const hx_frame *hx_frames_marker(const hx_frames *fr, int index, hx_frame *scratch)
 {
     if (index < 0)
         return &hx_world_frame;
-    const hx_model *m = s->model;
+    const hx_model *m = fr->model;
     if (m->markers[index].tracked)
-        return &s->markers[index];
-    hx_marker_frame(m, &s->bodies[m->markers[index].body], index, scratch);
+        return &fr->markers[index];
+    hx_marker_frame(m, &fr->bodies[m->markers[index].body], index, scratch);
     return scratch;
 }

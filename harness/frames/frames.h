@@ -34,8 +34,8 @@ typedef struct hx_frames {
 
 /* Frames at the model's initial pose and velocities, its markers current.
  * Returns 0, or -1 (out of memory). */
-int hx_frames_init(hx_frames *s, const hx_model *m);
-void hx_frames_free(hx_frames *s);
+int hx_frames_init(hx_frames *fr, const hx_model *m);
+void hx_frames_free(hx_frames *fr);
 /* A second set equal to from (scratch frames for a probe); 0 or -1. */
 int hx_frames_clone(hx_frames *to, const hx_frames *from);
 /* Copies time, frames and Control_Diff values between two sets of the same model. */
@@ -43,17 +43,17 @@ void hx_frames_copy(hx_frames *to, const hx_frames *from);
 
 /* The kinematics stage: world frames of the tracked markers of moving bodies
  * from the bodies' frames (those on ground never move). */
-void hx_frames_update(hx_frames *s);
+void hx_frames_update(hx_frames *fr);
 
 /* The same for one body's tracked markers alone, on ground too (a probe
  * that moved one body, ground included). */
-void hx_frames_update_body(hx_frames *s, int body);
+void hx_frames_update_body(hx_frames *fr, int body);
 /* Copies one body's frame and its tracked markers' (undoing such a move). */
 void hx_frames_copy_body(hx_frames *to, const hx_frames *from, int body);
 
 /* World frame of marker index (-1: the world frame) in these frames: the kept
  * one when the marker is tracked, else computed into scratch. */
-const hx_frame *hx_frames_marker(const hx_frames *s, int index, hx_frame *scratch);
+const hx_frame *hx_frames_marker(const hx_frames *fr, int index, hx_frame *scratch);
 
 /* World frame of a marker from its body's frame. */
 void hx_marker_frame(const hx_model *m, const hx_frame *body, int marker, hx_frame *out);

@@ -107,20 +107,20 @@ void hx_field_state(const hx_frame *I, const hx_frame *J, double disp[6], double
     hx_relative_angular_velocity(I, J, J, velo + 3);
 }
 
-void hx_force_deformation(const hx_frames *s, int force, double disp[6], double velo[6])
+void hx_force_deformation(const hx_frames *fr, int force, double disp[6], double velo[6])
 {
-    const hx_force *f = &s->model->forces[force];
+    const hx_force *f = &fr->model->forces[force];
     hx_frame scratch[2];
-    hx_field_state(hx_frames_marker(s, f->i_marker, &scratch[0]),
-                   hx_frames_marker(s, f->j_marker, &scratch[1]), disp, velo);
+    hx_field_state(hx_frames_marker(fr, f->i_marker, &scratch[0]),
+                   hx_frames_marker(fr, f->j_marker, &scratch[1]), disp, velo);
 }
 
-double hx_joint_coordinate(const hx_frames *s, int joint)
+double hx_joint_coordinate(const hx_frames *fr, int joint)
 {
-    const hx_joint *j = &s->model->joints[joint];
+    const hx_joint *j = &fr->model->joints[joint];
     hx_frame scratch[2];
-    const hx_frame *I = hx_frames_marker(s, j->i_marker, &scratch[0]);
-    const hx_frame *J = hx_frames_marker(s, j->j_marker, &scratch[1]);
+    const hx_frame *I = hx_frames_marker(fr, j->i_marker, &scratch[0]);
+    const hx_frame *J = hx_frames_marker(fr, j->j_marker, &scratch[1]);
     if (j->type == HX_JOINT_REVOLUTE) {
         double R[9], a[3];
         hx_relative_rotation(I, J, R);

@@ -37,10 +37,10 @@ void hx_relative_angular_velocity(const hx_frame *I, const hx_frame *J, const hx
 void hx_field_state(const hx_frame *I, const hx_frame *J, double disp[6], double velo[6]);
 
 /* The deformation of a force element of the model at a state. */
-void hx_force_deformation(const hx_frames *s, int force, double disp[6], double velo[6]);
+void hx_force_deformation(const hx_frames *fr, int force, double disp[6], double velo[6]);
 
 /* Joint coordinate at a state: AZ(I,J) of a revolute or DZ(I,J,J) of a
  * translational joint. */
-double hx_joint_coordinate(const hx_frames *s, int joint);
+double hx_joint_coordinate(const hx_frames *fr, int joint);
 
 #endif

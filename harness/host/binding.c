@@ -1,16 +1,12 @@
-/* Binding user elements to library functions and calling them (binding.h). */
+/* Binding user elements to the functions of their libraries (binding.h). */
 #include "host/binding.h"
 
 #include <limits.h>
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "base/finite.h"
 #include "host/records.h"
-#include "host/state_inputs.h"
-#include "frames/measures.h"
 
 /* A state equation's partial routines: one the model names (usrsub_derN_name)
  * must exist; a default name the library does not export is left NULL, and
@@ -26,7 +22,7 @@ static int bind_state_partials(void *handle, const char *path, hx_binding *b,
                                    sizeof b->symbols[1 + k], report);
         if (fn == NULL && named[k] != NULL)
             return -1;
-        b->state_partial[k] = (usrsub_state_partial_fn *)fn;
+        b->fn.stateeqn.partial[k] = (usrsub_state_partial_fn *)fn;
     }
     return 0;
 }
@@ -42,7 +38,7 @@ static int bind_functions(hx_binding *b, void *handle, const char *path, const h
     for (int k = 0; k < nfun; ++k)
         if ((fn[k] = hx_loader_entry(handle, path, b->names[k], b->symbols[k],
                                      sizeof b->symbols[k], msg)) == NULL) {
-            if (u->fnc_name != NULL || b->kind == HX_BIND_YFOSUB)
+            if (u->fnc_name != NULL || b->kind == HX_BIND_STATEEQN)
                 return -1;
             hx_message classic = *msg;
             if (hx_record_bind(b, handle, path, msg) == 0)
@@ -53,15 +49,15 @@ static int bind_functions(hx_binding *b, void *handle, const char *path, const h
     switch (b->kind) {
     case HX_BIND_COUPLER:
         for (int k = 0; k < 3; ++k)
-            b->coupler[k] = (usrsub_coupler_fn *)fn[k];
+            b->fn.coupler[k] = (usrsub_coupler_fn *)fn[k];
         return 0;
-    case HX_BIND_GFOSUB: b->gfosub = (usrsub_gfosub_fn *)fn[0]; return 0;
-    case HX_BIND_FIESUB: b->fiesub = (usrsub_fiesub_fn *)fn[0]; return 0;
-    case HX_BIND_YFOSUB:
-        b->yfosub = (usrsub_yfosub_fn *)fn[0];
+    case HX_BIND_FORCE: b->fn.force = (usrsub_gfosub_fn *)fn[0]; return 0;
+    case HX_BIND_FIELD: b->fn.field = (usrsub_fiesub_fn *)fn[0]; return 0;
+    case HX_BIND_STATEEQN:
+        b->fn.stateeqn.rates = (usrsub_yfosub_fn *)fn[0];
         return bind_state_partials(handle, path, b, u, msg);
-    case HX_BIND_REQSUB: b->reqsub = (hx_reqsub_fn *)fn[0]; return 0;
-    default: b->value = (hx_value_fn *)fn[0]; return 0;
+    case HX_BIND_REQUEST: b->fn.request = (hx_reqsub_fn *)fn[0]; return 0;
+    default: b->fn.value = (hx_value_fn *)fn[0]; return 0;
     }
 }
 
@@ -154,7 +150,7 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
         hx_binding *b = &bs->items[bs->count++];
         b->messages = messages;
         const int gfo = f->interface == HX_FORCE_GFOSUB;
-        b->kind = gfo ? HX_BIND_GFOSUB : HX_BIND_FIESUB;
+        b->kind = gfo ? HX_BIND_FORCE : HX_BIND_FIELD;
         b->index = k;
         b->id = f->id;
         b->element = hx_force_element_name(f);
@@ -177,7 +173,7 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
         const char *named[5] = {f->user.fnc_name, f->user.der1_name, f->user.der2_name,
                                 f->user.der3_name, f->user.der4_name};
         b->messages = messages;
-        b->kind = HX_BIND_YFOSUB;
+        b->kind = HX_BIND_STATEEQN;
         b->index = k;
         b->id = f->id;
         b->element = "Force_StateEqn";
@@ -188,8 +184,8 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
     }
     for (int k = 0; k < m->nroutines; ++k) {
         const hx_routine *r = &m->routines[k];
-        static const hx_binding_kind kinds[HX_ROUTINE_KINDS] = {HX_BIND_REQSUB, HX_BIND_VARSUB,
-                                                                HX_BIND_DIFSUB, HX_BIND_MOTSUB};
+        static const hx_binding_kind kinds[HX_ROUTINE_KINDS] = {HX_BIND_REQUEST, HX_BIND_VARIABLE,
+                                                                HX_BIND_DIFF, HX_BIND_MOTION};
         static const char *const defaults[HX_ROUTINE_KINDS] = {"REQSUB", "VARSUB", "DIFSUB",
                                                                "MOTSUB"};
         hx_binding *b = &bs->items[bs->count++];
@@ -219,35 +215,21 @@ void hx_bindings_free(hx_bindings *bs)
     memset(bs, 0, sizeof *bs);
 }
 
-hx_binding *hx_binding_of_coupler(hx_bindings *bs, int coupler_index)
+hx_binding_family hx_binding_family_of(hx_binding_kind kind)
 {
-    for (int k = 0; k < bs->count; ++k)
-        if (bs->items[k].kind == HX_BIND_COUPLER && bs->items[k].index == coupler_index)
-            return &bs->items[k];
-    return NULL;
+    switch (kind) {
+    case HX_BIND_COUPLER: return HX_FAMILY_COUPLER;
+    case HX_BIND_FORCE:
+    case HX_BIND_FIELD: return HX_FAMILY_FORCE;
+    case HX_BIND_STATEEQN: return HX_FAMILY_STATEEQN;
+    default: return HX_FAMILY_ROUTINE;
+    }
 }
 
-hx_binding *hx_binding_of_force(hx_bindings *bs, int force_index)
+hx_binding *hx_bindings_find(hx_bindings *bs, hx_binding_family family, int index)
 {
     for (int k = 0; k < bs->count; ++k)
-        if ((bs->items[k].kind == HX_BIND_GFOSUB || bs->items[k].kind == HX_BIND_FIESUB) &&
-            bs->items[k].index == force_index)
-            return &bs->items[k];
-    return NULL;
-}
-
-hx_binding *hx_binding_of_stateeqn(hx_bindings *bs, int element_index)
-{
-    for (int k = 0; k < bs->count; ++k)
-        if (bs->items[k].kind == HX_BIND_YFOSUB && bs->items[k].index == element_index)
-            return &bs->items[k];
-    return NULL;
-}
-
-hx_binding *hx_binding_of_routine(hx_bindings *bs, int routine_index)
-{
-    for (int k = 0; k < bs->count; ++k)
-        if (bs->items[k].kind >= HX_BIND_REQSUB && bs->items[k].index == routine_index)
+        if (bs->items[k].index == index && hx_binding_family_of(bs->items[k].kind) == family)
             return &bs->items[k];
     return NULL;
 }
@@ -257,14 +239,14 @@ const char *hx_binding_routine(const hx_binding *b, int which)
     return b->symbols[which][0] != '\0' ? b->symbols[which] : b->names[which];
 }
 
-void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_frames *s, int iflag)
+void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_frames *fr, int iflag)
 {
-    hx_call_init(call, b->element, b->id, hx_binding_routine(b, which), b->model, s, b->messages,
+    hx_call_init(call, b->element, b->id, hx_binding_routine(b, which), b->model, fr, b->messages,
                  iflag != 0, &b->deps);
     /* couplers, FIESUB, YFOSUB and MOTSUB get their state in their arguments or
      * from time alone (docs/interface.md §1, §5.1) */
-    call->may_query = b->kind == HX_BIND_GFOSUB || b->kind == HX_BIND_REQSUB ||
-                      b->kind == HX_BIND_VARSUB || b->kind == HX_BIND_DIFSUB;
+    call->may_query = b->kind == HX_BIND_FORCE || b->kind == HX_BIND_REQUEST ||
+                      b->kind == HX_BIND_VARIABLE || b->kind == HX_BIND_DIFF;
     call->reported_undeclared = &b->reported_undeclared;
     call->reported_refused = &b->reported_refused;
     call->reported_unoffered = &b->reported_unoffered;
@@ -272,184 +254,3 @@ void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_fram
     call->reported_non_finite = &b->reported_non_finite;
 }
 
-static void log_call(hx_binding *b, int which, double time, int iflag, int dflag,
-                     const double *args, int nargs)
-{
-    hx_call_log *log = b->log;
-    log->routine = hx_binding_routine(b, which);
-    log->iflag = iflag, log->dflag = dflag;
-    log->time = time;
-    log->nargs = nargs;
-    for (int k = 0; k < nargs && k < 12; ++k)
-        log->args[k] = args[k];
-    log->begun++;
-}
-
-/* What an entry's outputs hold before it is called. */
-static void fill(double *out, int n, double value)
-{
-    for (int k = 0; k < n; ++k)
-        out[k] = value;
-}
-
-/* The caller's record (set up with hx_binding_call_init) or a default one. */
-static void begin(hx_binding *b, int which, const hx_frames *s, int iflag, hx_call *call,
-                  hx_call *local)
-{
-    if (call == NULL) {
-        hx_binding_call_init(b, local, which, s, iflag);
-        call = local;
-    }
-    if (s->time > b->latest_time)
-        b->latest_time = s->time;
-    hx_host_bind(call);
-}
-
-void hx_invoke_coupler(hx_binding *b, int which, const hx_frames *s, const double *disp, int ndisp,
-                     int iflag, double *out, hx_call *call)
-{
-    hx_call local;
-    begin(b, which, s, iflag, call, &local);
-    int id = b->id, npar = b->npar, n = ndisp, flag = iflag;
-    double t = s->time, d[3] = {0, 0, 0};
-    for (int k = 0; k < ndisp && k < 3; ++k)
-        d[k] = disp[k];
-    /* a solver zeroes what an entry returns: outputs it never writes read 0 */
-    fill(out, which == 0 ? 1 : which == 1 ? ndisp : ndisp * ndisp, b->output_fill);
-    if (b->log != NULL)
-        log_call(b, which, t, iflag, 0, d, ndisp);
-    if (b->record != NULL)
-        hx_record_coupler(b, which, t, d, iflag, out);
-    else
-        b->coupler[which](&id, &t, b->par, &npar, d, &n, &flag, out);
-    if (b->log != NULL)
-        b->log->returned++;
-    hx_host_unbind();
-}
-
-void hx_invoke_gfosub(hx_binding *b, const hx_frames *s, int dflag, int iflag, double *values,
-                      hx_call *call)
-{
-    hx_call local;
-    begin(b, 0, s, iflag, call, &local);
-    int id = b->id, npar = b->npar, df = dflag, flag = iflag;
-    double t = s->time;
-    if (b->log != NULL)
-        log_call(b, 0, t, iflag, dflag, NULL, 0);
-    fill(values, hx_force_routine_values(b->part), b->output_fill);
-    if (b->record != NULL)
-        hx_record_values(b, t, dflag, iflag, values);
-    else
-        b->gfosub(&id, &t, b->par, &npar, &df, &flag, values);
-    if (b->log != NULL)
-        b->log->returned++;
-    hx_host_unbind();
-}
-
-void hx_invoke_fiesub(hx_binding *b, const hx_frames *s, const double disp[6], const double velo[6],
-                    int dflag, int iflag, double field[6], double dfddis[36], double dfdvel[36],
-                    hx_call *call)
-{
-    hx_call local;
-    begin(b, 0, s, iflag, call, &local);
-    int id = b->id, npar = b->npar, df = dflag, flag = iflag;
-    double t = s->time, d[6], v[6];
-    memcpy(d, disp, sizeof d);
-    memcpy(v, velo, sizeof v);
-    if (b->log != NULL) {
-        double args[12];
-        memcpy(args, d, sizeof d);
-        memcpy(args + 6, v, sizeof v);
-        log_call(b, 0, t, iflag, dflag, args, 12);
-    }
-    fill(field, 6, b->output_fill);
-    memset(dfddis, 0, 36 * sizeof(double));
-    memset(dfdvel, 0, 36 * sizeof(double)); /* some FIESUBs never write it */
-    if (b->record != NULL)
-        hx_record_fiesub(b, t, d, v, dflag, iflag, field, dfddis, dfdvel);
-    else
-        b->fiesub(&id, &t, b->par, &npar, d, v, &df, &flag, field, dfddis, dfdvel);
-    if (b->log != NULL)
-        b->log->returned++;
-    hx_host_unbind();
-}
-
-void hx_invoke_routine(hx_binding *b, const hx_frames *s, int flag, int iflag, double *values,
-                     hx_call *call)
-{
-    hx_call local;
-    begin(b, 0, s, iflag, call, &local);
-    int id = b->id, npar = b->npar, f = flag, fl = iflag;
-    double t = s->time;
-    if (b->log != NULL)
-        log_call(b, 0, t, iflag, flag, NULL, 0);
-    fill(values, b->kind == HX_BIND_REQSUB ? 8 : 1, b->output_fill);
-    if (b->record != NULL)
-        hx_record_values(b, t, flag, iflag, values);
-    else if (b->kind == HX_BIND_REQSUB)
-        b->reqsub(&id, &t, b->par, &npar, &fl, values);
-    else
-        b->value(&id, &t, b->par, &npar, &f, &fl, values);
-    if (b->log != NULL)
-        b->log->returned++;
-    hx_host_unbind();
-}
-
-void hx_invoke_yfosub(hx_binding *b, const hx_frames *s, double *states, double *input, int dflag,
-                    int iflag, double *stated, double output[6], hx_call *call)
-{
-    const hx_stateeqn *f = &b->model->stateeqns[b->index];
-    hx_call local;
-    begin(b, 0, s, iflag, call, &local);
-    int id = b->id, npar = b->npar, df = dflag, flag = iflag;
-    int nstate = f->nstate, ninput = f->ninput, noutpt = 6;
-    double t = s->time;
-    if (b->log != NULL)
-        log_call(b, 0, t, iflag, dflag, input, ninput);
-    fill(stated, nstate, b->output_fill);
-    fill(output, 6, b->output_fill);
-    b->yfosub(&id, &t, b->par, &npar, &df, &flag, &nstate, states, &ninput, input, &noutpt,
-              stated, output);
-    if (b->log != NULL)
-        b->log->returned++;
-    hx_host_unbind();
-}
-
-void hx_invoke_yfosub_partial(hx_binding *b, int which, const hx_frames *s, double *states,
-                           double *input, double *matrix, hx_call *call)
-{
-    const hx_stateeqn *f = &b->model->stateeqns[b->index];
-    hx_call local;
-    begin(b, 1 + which, s, 0, call, &local);
-    int id = b->id, npar = b->npar, flag = 0;
-    int nstate = f->nstate, ninput = f->ninput, noutpt = 6;
-    double t = s->time;
-    if (b->log != NULL)
-        log_call(b, 1 + which, t, 0, 0, input, ninput);
-    /* YFOXX n x n, YFOXU n x ninput, YFOYX 6 x n, YFOYU 6 x ninput */
-    memset(matrix, 0, sizeof(double) * (size_t)((which < 2 ? nstate : 6) *
-                                                 (which % 2 == 0 ? nstate : ninput)));
-    b->state_partial[which](&id, &t, b->par, &npar, &flag, &nstate, states, &ninput, input,
-                            &noutpt, matrix);
-    if (b->log != NULL)
-        b->log->returned++;
-    hx_host_unbind();
-}
-
-void hx_invoke_twin(hx_binding *b, const hx_frames *s, const double disp[6], const double velo[6],
-                  double field[6], double dfddis[36], double dfdvel[36], hx_messages *messages)
-{
-    hx_call call;
-    hx_call_init(&call, b->element, b->id, b->twin_name, b->model, s, messages, 0, NULL);
-    call.may_query = 0; /* a FIESUB entry (docs/interface.md §1) */
-    hx_host_bind(&call);
-    int id = b->id, npar = b->twin_npar, df = 1, flag = 0; /* dflag: its partials are wanted */
-    double t = s->time, d[6], v[6];
-    memcpy(d, disp, sizeof d);
-    memcpy(v, velo, sizeof v);
-    memset(field, 0, 6 * sizeof(double));
-    memset(dfddis, 0, 36 * sizeof(double));
-    memset(dfdvel, 0, 36 * sizeof(double));
-    b->twin(&id, &t, b->twin_par, &npar, d, v, &df, &flag, field, dfddis, dfdvel);
-    hx_host_unbind();
-}

@@ -1,7 +1,8 @@
 /*
  * A user-subroutine element of the model bound to the functions of its
- * library, and the calls of those functions: each call is bound to the host
- * (host/call.h) with the state its queries are answered from.
+ * library: the symbols found (binding.c), the element's declared
+ * dependencies and what the host has reported of it, and the log of its last
+ * call. Calling the functions is host/invoke.h's.
  */
 #ifndef HX_HOST_BINDING_H
 #define HX_HOST_BINDING_H
@@ -11,16 +12,28 @@
 #include "model/model.h"
 #include "usrsub/solver_abi.h"
 
+/* What a bound element is, by the model element it stands for; each kind has
+ * its calling convention (host/invoke.h). */
 typedef enum hx_binding_kind {
-    HX_BIND_COUPLER, /* Constraint_Coupler: COUSUB, COUXX, COUXX2 */
-    HX_BIND_GFOSUB,  /* Force_Vector_TwoBody, Force_Vector_OneBody, Force_Scalar_TwoBody */
-    HX_BIND_FIESUB,  /* Force_Field */
-    HX_BIND_YFOSUB,  /* Force_StateEqn: YFOSUB, YFOXX, YFOXU, YFOYX, YFOYU */
-    HX_BIND_REQSUB,  /* Post_Request: eight values */
-    HX_BIND_VARSUB,  /* Reference_Variable of type USERSUB: one value */
-    HX_BIND_DIFSUB,  /* Control_Diff: its state's rate */
-    HX_BIND_MOTSUB   /* Motion_Joint: the joint's motion, its rate and acceleration */
+    HX_BIND_COUPLER,  /* Constraint_Coupler: COUSUB, COUXX, COUXX2 */
+    HX_BIND_FORCE,    /* Force_Vector_TwoBody, Force_Vector_OneBody, Force_Scalar_TwoBody: a
+                       * routine that asks the host for the state (GFOSUB, VFOSUB, VTOSUB,
+                       * SFOSUB) */
+    HX_BIND_FIELD,    /* Force_Field: FIESUB, handed the deformation */
+    HX_BIND_STATEEQN, /* Force_StateEqn: YFOSUB, YFOXX, YFOXU, YFOYX, YFOYU */
+    HX_BIND_REQUEST,  /* Post_Request: REQSUB, eight values */
+    HX_BIND_VARIABLE, /* Reference_Variable of type USERSUB: VARSUB, one value */
+    HX_BIND_DIFF,     /* Control_Diff: DIFSUB, its state's rate */
+    HX_BIND_MOTION    /* Motion_Joint: MOTSUB, the joint's motion, rate and acceleration */
 } hx_binding_kind;
+
+/* Which of the model's arrays a binding's index refers to. */
+typedef enum hx_binding_family {
+    HX_FAMILY_COUPLER,  /* couplers[] */
+    HX_FAMILY_FORCE,    /* forces[]: HX_BIND_FORCE and HX_BIND_FIELD */
+    HX_FAMILY_STATEEQN, /* stateeqns[] */
+    HX_FAMILY_ROUTINE   /* routines[]: request, variable, diff, motion */
+} hx_binding_family;
 
 /* The routines that are not forces, in the classic form: every argument by
  * address (docs/interface.md §7.12). REQSUB(id, time, par, npar, iflag,
@@ -44,9 +57,25 @@ typedef struct hx_call_log {
                                       * first inputs of YFOSUB */
 } hx_call_log;
 
+/* The functions a binding calls, by kind. */
+typedef union hx_binding_functions {
+    usrsub_coupler_fn *coupler[3]; /* COUPLER: phi, dphi/dM, d2phi/dM2 */
+    usrsub_gfosub_fn *force;       /* FORCE: GFOSUB, VFOSUB, VTOSUB or SFOSUB (part) */
+    usrsub_fiesub_fn *field;       /* FIELD */
+    struct {
+        usrsub_yfosub_fn *rates;   /* YFOSUB */
+        /* YFOXX, YFOXU, YFOYX, YFOYU (names[1..4]); NULL when the library does
+         * not export the default name: the harness then takes differences of
+         * YFOSUB */
+        usrsub_state_partial_fn *partial[4];
+    } stateeqn;
+    hx_reqsub_fn *request;         /* REQUEST */
+    hx_value_fn *value;            /* VARIABLE, DIFF, MOTION */
+} hx_binding_functions;
+
 typedef struct hx_binding {
     hx_binding_kind kind;
-    int index;           /* in the model's couplers[], forces[], stateeqns[] or routines[] */
+    int index;           /* in the model's array of the binding's family */
     int id;
     const char *element; /* "Constraint_Coupler", "Force_Vector_TwoBody", "Force_Field",
                           * "Force_StateEqn", "Post_Request", ... */
@@ -54,22 +83,14 @@ typedef struct hx_binding {
     const char *names[5]; /* as the model names them, or the default names */
     /* the symbols bound for them: NAME, name_ or name (hx_loader_entry) */
     char symbols[5][HX_ENTRY_NAME_MAX];
-    usrsub_coupler_fn *coupler[3]; /* phi, dphi/dM, d2phi/dM2 */
-    usrsub_gfosub_fn *gfosub; /* GFOSUB, or VFOSUB / VTOSUB (part): three values */
-    enum hx_user_output part;
-    usrsub_fiesub_fn *fiesub;
-    usrsub_yfosub_fn *yfosub;
-    /* YFOXX, YFOXU, YFOYX, YFOYU (names[1..4]); NULL when the library does not
-     * export the default name: the harness then takes differences of YFOSUB */
-    usrsub_state_partial_fn *state_partial[4];
-    hx_reqsub_fn *reqsub;
-    hx_value_fn *value; /* VARSUB, DIFSUB, MOTSUB */
+    hx_binding_functions fn; /* the classic form's (all NULL for the C-style form) */
+    enum hx_user_output part; /* FORCE: what its routine returns (model.h) */
     /* the Adams C-style form (host/records.h): the element's record and the
      * functions bound; NULL for the classic form */
     struct hx_record *record;
     double *par;         /* the USER list handed to the entries */
     int npar;
-    /* GFOSUB elements: the library's FIESUB twin of the element, when it
+    /* FORCE elements: the library's FIESUB twin of the element, when it
      * exports one (docs/interface.md §3.0: NAME_FIELD for a named entry NAME,
      * FIESUB for GFOSUB), with the USER list less the I and J marker ids; the
      * implicit integrator takes its partials from it. NULL: none. */
@@ -105,55 +126,19 @@ typedef struct hx_bindings {
 int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *b, hx_message *msg);
 void hx_bindings_free(hx_bindings *b);
 
-/* The binding of a coupler or force element, or NULL (built-in element). */
-hx_binding *hx_binding_of_coupler(hx_bindings *b, int coupler_index);
-hx_binding *hx_binding_of_force(hx_bindings *b, int force_index);
-hx_binding *hx_binding_of_stateeqn(hx_bindings *b, int element_index);
-hx_binding *hx_binding_of_routine(hx_bindings *b, int routine_index);
+/* The binding of element `index` of the model's array `family`, or NULL (a
+ * built-in coupler; no other element of those arrays is built in). */
+hx_binding *hx_bindings_find(hx_bindings *bs, hx_binding_family family, int index);
+
+/* The family of a kind. */
+hx_binding_family hx_binding_family_of(hx_binding_kind kind);
 
 /* The name of function `which` of b as the library exports it (the symbol
  * bound), or as the model names it when it is not exported. */
 const char *hx_binding_routine(const hx_binding *b, int which);
 
-/* A call record of function `which` of b at state s, recording into (iflag)
- * or checking against b->deps. */
-void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_frames *s, int iflag);
-
-
-/* Calls at state s (its time is the call's time); call (may be NULL) is the
- * record the call is bound with, set up by hx_binding_call_init. */
-void hx_invoke_coupler(hx_binding *b, int which, const hx_frames *s, const double *disp, int ndisp,
-                     int iflag, double *out, hx_call *call);
-/* A Force_Vector_TwoBody's, Force_Vector_OneBody's or Force_Scalar_TwoBody's
- * routine: values receives what the routine itself returns, in the layout
- * its entry type documents (hx_force_routine_values of them: GFOSUB's force
- * and torque, VFOSUB's force, VTOSUB's torque, SFOSUB's one value). What the
- * harness makes of them (their axes, the direction of a scalar) is the
- * dynamics' (sim/dynamics/element_forces.h); check judges these values. */
-void hx_invoke_gfosub(hx_binding *b, const hx_frames *s, int dflag, int iflag, double *values,
-                      hx_call *call);
-void hx_invoke_fiesub(hx_binding *b, const hx_frames *s, const double disp[6], const double velo[6],
-                    int dflag, int iflag, double field[6], double dfddis[36], double dfdvel[36],
-                    hx_call *call);
-/* A routine that is not a force at state s: REQSUB's eight values, or the
- * one value of VARSUB, DIFSUB (flag: dflag) or MOTSUB (flag: iord). */
-void hx_invoke_routine(hx_binding *b, const hx_frames *s, int flag, int iflag, double *values,
-                     hx_call *call);
-/* YFOSUB of a Force_StateEqn at state s (its time): states (nstate) and
- * input (ninput), the caller's copies, which a library may write into;
- * stated (nstate) and output (6) receive its results. */
-void hx_invoke_yfosub(hx_binding *b, const hx_frames *s, double *states, double *input, int dflag,
-                    int iflag, double *stated, double output[6], hx_call *call);
-/* Partial routine `which` (0 YFOXX, 1 YFOXU, 2 YFOYX, 3 YFOYU; it must be
- * exported) at states and input, into matrix (column-major, its rows first). */
-void hx_invoke_yfosub_partial(hx_binding *b, int which, const hx_frames *s, double *states,
-                           double *input, double *matrix, hx_call *call);
-
-/* The FIESUB twin of a GFOSUB element (b->twin must be set), at the
- * deformation of its I marker relative to its J marker; it may not query.
- * Its messages go to `messages` (the caller's, kept apart from the session's:
- * a twin that refuses the list disqualifies itself, it does not stop the run). */
-void hx_invoke_twin(hx_binding *b, const hx_frames *s, const double disp[6], const double velo[6],
-                  double field[6], double dfddis[36], double dfdvel[36], hx_messages *messages);
+/* A call record of function `which` of b at frames fr, recording into
+ * (iflag) or checking against b->deps. */
+void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_frames *fr, int iflag);
 
 #endif

@@ -4,7 +4,7 @@
 #include <string.h>
 
 void hx_call_init(hx_call *c, const char *element, int id, const char *routine,
-                  const hx_model *model, const hx_frames *state, hx_messages *messages,
+                  const hx_model *model, const hx_frames *fr, hx_messages *messages,
                   int dependency_pass, hx_dependencies *declared)
 {
     /* field by field: the noted queries' arrays are read only up to their
@@ -23,7 +23,7 @@ void hx_call_init(hx_call *c, const char *element, int id, const char *routine,
     c->id = id;
     c->routine = routine;
     c->model = model;
-    c->frames = state;
+    c->frames = fr;
     c->messages = messages;
     c->may_query = 1;
     c->dependency_pass = dependency_pass;

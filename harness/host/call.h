@@ -62,7 +62,7 @@ typedef struct hx_call {
 } hx_call;
 
 void hx_call_init(hx_call *c, const char *element, int id, const char *routine,
-                  const hx_model *model, const hx_frames *state, hx_messages *messages,
+                  const hx_model *model, const hx_frames *fr, hx_messages *messages,
                   int dependency_pass, hx_dependencies *declared);
 
 /* The ABI's binding: the utilities answer for this call until unbound. */

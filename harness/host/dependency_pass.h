@@ -8,9 +8,9 @@
 
 #include "host/binding.h"
 
-/* Every element's pass at state s; what the library kept allocated across an
+/* Every element's pass at frames fr; what the library kept allocated across an
  * element's pass goes to its setup_bytes; a non-finite output is a warning.
  * Returns -1 when an element stopped the run (or memory ran out). */
-int hx_dependency_passes(hx_bindings *b, const hx_frames *s);
+int hx_dependency_passes(hx_bindings *b, const hx_frames *fr);
 
 #endif

@@ -6,8 +6,8 @@
  *   missing or "NULL", the library named by MS_USERSUBDLL (same search).
  * A library is opened once per resolved path and stays open until closed.
  */
-#ifndef HX_LOADER_H
-#define HX_LOADER_H
+#ifndef HX_HOST_LOADER_H
+#define HX_HOST_LOADER_H
 
 #include <stddef.h>
 

@@ -112,12 +112,12 @@ const char *hx_query_text(const hx_query *q, char *text, size_t size)
 }
 
 /* The world frame of a marker id (0: the world). */
-static const hx_frame *marker_world(const hx_frames *s, int id, hx_frame *scratch)
+static const hx_frame *marker_world(const hx_frames *fr, int id, hx_frame *scratch)
 {
     if (id == 0)
         return &hx_world_frame;
-    const int index = hx_model_marker(s->model, id);
-    return index < 0 ? NULL : hx_frames_marker(s, index, scratch);
+    const int index = hx_model_marker(fr->model, id);
+    return index < 0 ? NULL : hx_frames_marker(fr, index, scratch);
 }
 
 /* The numbers of the Reference_Array of type IC with id: its count, or -1. */
@@ -147,20 +147,20 @@ static void angles321(const double R[9], double a[3])
     a[2] = atan2(R[7], R[8]);
 }
 
-int hx_answer(const hx_frames *s, const hx_query *q, const int *ipar, double *values)
+int hx_answer(const hx_frames *fr, const hx_query *q, const int *ipar, double *values)
 {
     const int code = q->function, nsize = q->nsize;
     const int array_function = code >= F_DISP && code <= F_ARRAY;
-    if (s == NULL || code < 0 || array_function != q->is_array || nsize < 1 ||
+    if (fr == NULL || code < 0 || array_function != q->is_array || nsize < 1 ||
         nsize > max_nsize[code] || ipar == NULL || ipar[0] == 0)
         return -1;
     if (code == F_ARRAY)
-        return array_numbers(s->model, ipar[0], values);
+        return array_numbers(fr->model, ipar[0], values);
     if (code == F_DIF || code == F_DIF1) {
-        const int k = hx_model_routine(s->model, HX_ROUTINE_DIFF, ipar[0]);
+        const int k = hx_model_routine(fr->model, HX_ROUTINE_DIFF, ipar[0]);
         if (k < 0)
             return -1;
-        values[0] = s->diffs[2 * s->model->routines[k].slot + (code == F_DIF1)];
+        values[0] = fr->diffs[2 * fr->model->routines[k].slot + (code == F_DIF1)];
         return 1;
     }
     hx_frame scratch[4];
@@ -169,7 +169,7 @@ int hx_answer(const hx_frames *s, const hx_query *q, const int *ipar, double *va
         const int id = k < nsize ? ipar[k] : 0;
         /* repeated ids (J, J, J) share one frame */
         f[k] = k > 0 && id == (k - 1 < nsize ? ipar[k - 1] : 0) ? f[k - 1]
-                                                                 : marker_world(s, id, &scratch[k]);
+                                                                 : marker_world(fr, id, &scratch[k]);
         if (f[k] == NULL)
             return -1;
     }
@@ -227,12 +227,12 @@ int hx_answer(const hx_frames *s, const hx_query *q, const int *ipar, double *va
     return 1;
 }
 
-int hx_answer_family(const hx_frames *s, char family, const int ipar[4], double v[3])
+int hx_answer_family(const hx_frames *fr, char family, const int ipar[4], double v[3])
 {
     hx_frame scratch[4];
     const hx_frame *f[4];
     for (int k = 0; k < 4; ++k)
-        if ((f[k] = marker_world(s, ipar[k], &scratch[k])) == NULL)
+        if ((f[k] = marker_world(fr, ipar[k], &scratch[k])) == NULL)
             return -1;
     double R[9];
     switch (family) {
@@ -247,10 +247,10 @@ int hx_answer_family(const hx_frames *s, char family, const int ipar[4], double 
     }
 }
 
-int hx_answer_query(const hx_frames *s, const char *fnc, const int *ipar, int nsize,
+int hx_answer_query(const hx_frames *fr, const char *fnc, const int *ipar, int nsize,
                     int is_array, double *values)
 {
     hx_query q;
     hx_query_make(&q, fnc, ipar, nsize, is_array);
-    return hx_answer(s, &q, ipar, values);
+    return hx_answer(fr, &q, ipar, values);
 }

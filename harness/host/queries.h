@@ -29,19 +29,19 @@ int hx_query_reads(const hx_query *q);
 /* "DISP(11,21,21)" */
 const char *hx_query_text(const hx_query *q, char *text, size_t size);
 
-/* Answers a query at state s: the number of values written, or -1 for a
+/* Answers a query at frames fr: the number of values written, or -1 for a
  * function the host does not answer (unknown, or asked through the wrong
  * utility), a bad nsize or an unknown marker. */
-int hx_answer(const hx_frames *s, const hx_query *q, const int *ipar, double *values);
+int hx_answer(const hx_frames *fr, const hx_query *q, const int *ipar, double *values);
 /* The three components of a measure family at once: 'D' (DX DY DZ, markers
  * I J K), 'A' (AX AY AZ, I J), 'V' (VX VY VZ, I J K L), 'W' (WX WY WZ, I J K),
  * with ipar's four ids (0: the world); 0, or -1 for an unknown marker. */
-int hx_answer_family(const hx_frames *s, char family, const int ipar[4], double v[3]);
+int hx_answer_family(const hx_frames *fr, char family, const int ipar[4], double v[3]);
 /* The most values any query on model m can write: 6 (DISP, VEL), or the
  * count of its largest IC Reference_Array (ARRAY). */
 int hx_query_capacity(const hx_model *m);
 /* The same from its text and arguments. */
-int hx_answer_query(const hx_frames *s, const char *fnc, const int *ipar, int nsize,
+int hx_answer_query(const hx_frames *fr, const char *fnc, const int *ipar, int nsize,
                     int is_array, double *values);
 
 #endif

@@ -87,11 +87,11 @@ static void build(hx_record *r, const hx_binding *b)
         }
         return;
     }
-    if (b->kind == HX_BIND_GFOSUB || b->kind == HX_BIND_FIESUB) {
+    if (b->kind == HX_BIND_FORCE || b->kind == HX_BIND_FIELD) {
         const hx_force *f = &m->forces[b->index];
         const int i = m->markers[f->i_marker].id, j = m->markers[f->j_marker].id;
         const int rm = f->ref_marker >= 0 ? m->markers[f->ref_marker].id : 0;
-        if (b->kind == HX_BIND_FIESUB)
+        if (b->kind == HX_BIND_FIELD)
             r->u.field = (field_record){id, npar, par, i, j};
         else if (f->part == HX_OUTPUT_FORCE_AND_TORQUE)
             r->u.gforce = (gforce_record){id, npar, par, i, rm, j};
@@ -105,12 +105,12 @@ static void build(hx_record *r, const hx_binding *b)
     }
     const hx_routine *rt = &m->routines[b->index];
     switch (b->kind) {
-    case HX_BIND_REQSUB:
+    case HX_BIND_REQUEST:
         r->u.request = (request_record){id, npar, par, "", {0}};
         memcpy(r->u.request.title, empty_titles, sizeof empty_titles);
         break;
-    case HX_BIND_VARSUB: r->u.variable = (variable_record){id, npar, par, rt->ic[0]}; break;
-    case HX_BIND_DIFSUB:
+    case HX_BIND_VARIABLE: r->u.variable = (variable_record){id, npar, par, rt->ic[0]}; break;
+    case HX_BIND_DIFF:
         r->u.diff = (diff_record){id, npar, par, rt->static_hold, rt->implicit, rt->ic[0], rt->ic[1]};
         break;
     default: {
@@ -169,7 +169,7 @@ void hx_record_coupler(hx_binding *b, int which, double time, double *disp, int 
 
 void hx_record_values(hx_binding *b, double time, int flag, int iflag, double *result)
 {
-    if (b->kind == HX_BIND_REQSUB)
+    if (b->kind == HX_BIND_REQUEST)
         ((request_fn *)b->record->fn[0])(&b->record->u, time, iflag, result);
     else
         ((value_fn *)b->record->fn[0])(&b->record->u, time, flag, iflag, result);

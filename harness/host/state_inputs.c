@@ -3,14 +3,14 @@
 
 #include "host/queries.h"
 
-int hx_variable_value(const hx_frames *s, const hx_variable *v, double *value)
+int hx_variable_value(const hx_frames *fr, const hx_variable *v, double *value)
 {
     if (v->function[0] == '\0') {
         *value = v->number;
         return 0;
     }
     double answer;
-    if (hx_answer_query(s, v->function, v->marker_ids, v->nmarkers, 0, &answer) != 1)
+    if (hx_answer_query(fr, v->function, v->marker_ids, v->nmarkers, 0, &answer) != 1)
         return -1;
     *value = v->sign * answer;
     return 0;
@@ -30,9 +30,9 @@ static int component(const hx_variable *v)
     return v->function[1] == 'X' ? 0 : v->function[1] == 'Y' ? 1 : v->function[1] == 'Z' ? 2 : -1;
 }
 
-int hx_stateeqn_inputs(const hx_frames *s, int element, double *u)
+int hx_stateeqn_inputs(const hx_frames *fr, int element, double *u)
 {
-    const hx_model *m = s->model;
+    const hx_model *m = fr->model;
     const hx_stateeqn *f = &m->stateeqns[element];
     family_values known[8];
     int nknown = 0;
@@ -40,7 +40,7 @@ int hx_stateeqn_inputs(const hx_frames *s, int element, double *u)
         const hx_variable *v = &m->variables[f->inputs[i]];
         const int axis = v->function[0] != '\0' ? component(v) : -1;
         if (axis < 0) { /* a number, or DM */
-            if (hx_variable_value(s, v, &u[i]) != 0)
+            if (hx_variable_value(fr, v, &u[i]) != 0)
                 return -1;
             continue;
         }
@@ -57,7 +57,7 @@ int hx_stateeqn_inputs(const hx_frames *s, int element, double *u)
             known[k].family = v->function[0];
             for (int j = 0; j < 4; ++j)
                 known[k].ids[j] = v->marker_ids[j];
-            if (hx_answer_family(s, v->function[0], v->marker_ids, known[k].v) != 0)
+            if (hx_answer_family(fr, v->function[0], v->marker_ids, known[k].v) != 0)
                 return -1;
         }
         u[i] = v->sign * known[k].v[axis];

@@ -8,12 +8,12 @@
 
 #include "frames/frames.h"
 
-/* The value of variable v at state s; 0, or -1 when a marker it names is
+/* The value of variable v at frames fr; 0, or -1 when a marker it names is
  * unknown (the model's resolve pass has ruled that out). */
-int hx_variable_value(const hx_frames *s, const hx_variable *v, double *value);
+int hx_variable_value(const hx_frames *fr, const hx_variable *v, double *value);
 
-/* The ninput inputs of Force_StateEqn `element` at state s; 0 or -1. */
-int hx_stateeqn_inputs(const hx_frames *s, int element, double *u);
+/* The ninput inputs of Force_StateEqn `element` at frames fr; 0 or -1. */
+int hx_stateeqn_inputs(const hx_frames *fr, int element, double *u);
 
 /* 1 when variable v is an angle (AX, AY, AZ): differences of it wrap. */
 int hx_variable_is_angle(const hx_variable *v);

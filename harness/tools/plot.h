@@ -1,6 +1,6 @@
 /* PNG plots through gnuplot (the field's plotting tool), when it is installed. */
-#ifndef HX_PLOT_H
-#define HX_PLOT_H
+#ifndef HX_TOOLS_PLOT_H
+#define HX_TOOLS_PLOT_H
 
 /* Writes script into path and runs gnuplot on it. Returns 0 when gnuplot
  * ran, 1 when it is not installed, -1 when it failed. */

@@ -1,5 +1,5 @@
 /*
- * scaled_field.c -- a test library for the implicit integrator (test_implicit).
+ * scaled_field.c -- a test library for the implicit integrator (test_jacobian, test_bdf).
  *
  * FIESUB: a linear spring and damper, exact in its field, whose reported
  * partials are scaled on purpose:

@@ -5,7 +5,7 @@
  *   field = -K disp, K = (1e5, 2e5, 3e5 N/mm, 500, 600, 700 N mm/rad);
  *   dfddis = -diag(K) when *dflag.
  * Expected verdict: PASS; and the Newton matrix takes its partials (asked with
- * dflag set): tests/test_implicit.c.
+ * dflag set): tests/test_jacobian.c.
  */
 #include "usrsub/solver_abi.h"
 

@@ -100,10 +100,10 @@ void hx_bodies_frame(const hx_dynamics *d, int k, const double *y, hx_frame *f)
     }
 }
 
-void hx_bodies_set_frames(hx_dynamics *d, const double *y)
+void hx_bodies_set_frames(const hx_dynamics *d, hx_dynamics_data *dd, const double *y)
 {
     for (int k = 0; k < d->m->nbodies; ++k)
-        hx_bodies_frame(d, k, y, &d->frames.bodies[k]);
+        hx_bodies_frame(d, k, y, &dd->frames.bodies[k]);
 }
 
 void hx_bodies_initial_state(const hx_dynamics *d, double *y)
@@ -134,12 +134,13 @@ void hx_bodies_initial_state(const hx_dynamics *d, double *y)
     }
 }
 
-double hx_bodies_apply_load(hx_dynamics *d, int body, const double point[3], const double F[3],
-                     const double T[3], double sign)
+double hx_bodies_apply_load(const hx_dynamics *d, hx_dynamics_data *dd, int body,
+                            const double point[3], const double F[3], const double T[3],
+                            double sign)
 {
     if (d->dof[body].kind == HX_DOF_GROUND)
         return 0.0;
-    const hx_frame *f = &d->frames.bodies[body];
+    const hx_frame *f = &dd->frames.bodies[body];
     double r[3], moment[3], vp[3];
     v3_sub(r, point, f->p);
     v3_cross(moment, r, F);
@@ -148,21 +149,22 @@ double hx_bodies_apply_load(hx_dynamics *d, int body, const double point[3], con
         v3_add(moment, moment, T); /* one update of the torque, not two */
         power = v3_dot(T, f->w);
     }
-    v3_axpy(d->force + 3 * body, sign, F);
-    v3_axpy(d->torque + 3 * body, sign, moment);
+    v3_axpy(dd->force + 3 * body, sign, F);
+    v3_axpy(dd->torque + 3 * body, sign, moment);
     v3_cross(vp, f->w, r);
     v3_add(vp, vp, f->v);
     return sign * (v3_dot(F, vp) + power);
 }
 
-void hx_bodies_accelerations(hx_dynamics *d, const double *y, double *ydot)
+void hx_bodies_accelerations(const hx_dynamics *d, const hx_dynamics_data *dd, const double *y,
+                             double *ydot)
 {
     const double *u = y + d->nq;
     double *qdot = ydot, *udot = ydot + d->nq;
     for (int k = 0; k < d->m->nbodies; ++k) {
         const hx_body_dof *dof = &d->dof[k];
-        const hx_frame *f = &d->frames.bodies[k];
-        const double *F = d->force + 3 * k, *T = d->torque + 3 * k;
+        const hx_frame *f = &dd->frames.bodies[k];
+        const double *F = dd->force + 3 * k, *T = dd->torque + 3 * k;
         switch (dof->kind) {
         case HX_DOF_GROUND:
             break;
@@ -209,7 +211,7 @@ double hx_bodies_inverse_mass(const hx_dynamics *d, int u_index)
     return 0.0; /* free-body velocities are not coupled */
 }
 
-void hx_bodies_advance_positions(hx_dynamics *d, double *y, double h)
+void hx_bodies_advance_positions(const hx_dynamics *d, double *y, double h)
 {
     const double *u = y + d->nq;
     for (int k = 0; k < d->m->nbodies; ++k) {

@@ -7,12 +7,12 @@
 #include <math.h>
 #include <string.h>
 
-#include "base/finite.h"
+#include "host/invoke.h"
 #include "base/linalg.h"
 #include "base/vecmath.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraints.h"
-#include "sim/dynamics/stage_failure.h"
+#include "sim/dynamics/failure.h"
 
 #define PROJECTION_ITERATIONS 25
 #define PHI_TOLERANCE 1e-13
@@ -29,8 +29,8 @@ static int coupler_joints(const hx_dynamics *d, int k, int u_index[3])
 }
 
 /* phi, dphi/dM and the velocity term qdot^T H qdot of coupler k. */
-static int coupler_terms(hx_dynamics *d, int k, double t, const double *y, double *phi,
-                         double grad[3], double *gamma)
+static int coupler_terms(const hx_dynamics *d, hx_dynamics_data *dd, int k, double t,
+                         const double *y, double *phi, double grad[3], double *gamma)
 {
     const hx_coupler *c = &d->m->couplers[k];
     int ui[3];
@@ -52,18 +52,15 @@ static int coupler_terms(hx_dynamics *d, int k, double t, const double *y, doubl
         return n;
     }
     double hess[9] = {0};
-    if (d->frames.time != t) { /* couplers get their state in disp: only the time is bound */
-        d->frames.time = t;
-        d->evaluated = 0;
-    }
-    hx_invoke_coupler(b, 0, &d->frames, disp, n, 0, phi, NULL);
-    hx_invoke_coupler(b, 1, &d->frames, disp, n, 0, grad, NULL);
+    dd->frames.time = t; /* couplers get their state in disp: only the time is bound */
+    hx_invoke_coupler(b, 0, &dd->frames, disp, n, 0, phi, NULL);
+    hx_invoke_coupler(b, 1, &dd->frames, disp, n, 0, grad, NULL);
     if (gamma != NULL)
-        hx_invoke_coupler(b, 2, &d->frames, disp, n, 0, hess, NULL);
-    if (hx_dynamics_check_stop(d, b) != 0)
+        hx_invoke_coupler(b, 2, &dd->frames, disp, n, 0, hess, NULL);
+    if (hx_dynamics_check_call(d, dd, b, phi, 1, "value", t) != 0 ||
+        hx_dynamics_check_call(d, dd, b, grad, n, "value", t) != 0 ||
+        hx_dynamics_check_call(d, dd, b, hess, n * n, "value", t) != 0)
         return -1;
-    if (!isfinite(*phi) || !hx_all_finite(grad, n) || !hx_all_finite(hess, n * n))
-        return hx_dynamics_fail(d, "%s %d returned a non-finite value at t = %g", b->element, b->id, t);
     if (gamma != NULL) {
         *gamma = 0.0;
         for (int i = 0; i < n; ++i)
@@ -74,15 +71,15 @@ static int coupler_terms(hx_dynamics *d, int k, double t, const double *y, doubl
 }
 
 /* Builds G (nc x nu) and, when gamma is not NULL, the velocity terms. */
-static int constraint_jacobian(hx_dynamics *d, double t, const double *y, double *G,
-                               double *phi, double *gamma)
+static int constraint_jacobian(const hx_dynamics *d, hx_dynamics_data *dd, double t,
+                               const double *y, double *G, double *phi, double *gamma)
 {
     const int nc = d->m->ncouplers, nu = d->nu;
     memset(G, 0, sizeof(double) * (size_t)(nc * nu));
     for (int k = 0; k < nc; ++k) {
         double grad[3];
         int ui[3];
-        if (coupler_terms(d, k, t, y, &phi[k], grad, gamma ? &gamma[k] : NULL) < 0)
+        if (coupler_terms(d, dd, k, t, y, &phi[k], grad, gamma ? &gamma[k] : NULL) < 0)
             return -1;
         const int n = coupler_joints(d, k, ui);
         for (int i = 0; i < n; ++i)
@@ -104,16 +101,17 @@ static void weighted_gram(const hx_dynamics *d, const double *G, const double *m
         }
 }
 
-int hx_constraints_apply(hx_dynamics *d, double t, const double *y, double *udot)
+int hx_constraints_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                         double *udot)
 {
     const int nc = d->m->ncouplers;
     if (nc == 0)
         return 0;
     /* M qdd = ucf (Q + G^T lambda), G qdd = -gamma:
      * (G M^-1 G^T) lambda = -gamma/ucf - G qdd_free/ucf with qdd_free = ucf M^-1 Q. */
-    double *G = d->scratch, *A = G + nc * d->nu, *minv = A + nc * nc, *phi = minv + d->nu,
+    double *G = dd->constraint_work, *A = G + nc * d->nu, *minv = A + nc * nc, *phi = minv + d->nu,
            *gamma = phi + nc;
-    if (constraint_jacobian(d, t, y, G, phi, gamma) != 0)
+    if (constraint_jacobian(d, dd, t, y, G, phi, gamma) != 0)
         return -1;
     for (int k = 0; k < d->nu; ++k)
         minv[k] = hx_bodies_inverse_mass(d, k);
@@ -122,18 +120,18 @@ int hx_constraints_apply(hx_dynamics *d, double t, const double *y, double *udot
         double s = gamma[i];
         for (int k = 0; k < d->nu; ++k)
             s += G[i * d->nu + k] * udot[k];
-        d->lambda[i] = -s / d->ucf;
+        dd->lambda[i] = -s / d->ucf;
     }
-    if (hx_solve(nc, A, d->lambda) != 0)
-        return hx_dynamics_fail(d, "the couplers' constraint Jacobian is singular at t = %g (redundant"
+    if (hx_solve(nc, A, dd->lambda) != 0)
+        return hx_dynamics_fail(dd, "the couplers' constraint Jacobian is singular at t = %g (redundant"
                         " or degenerate couplers)", t);
     for (int i = 0; i < nc; ++i)
         for (int k = 0; k < d->nu; ++k)
-            udot[k] += d->ucf * minv[k] * G[i * d->nu + k] * d->lambda[i];
+            udot[k] += d->ucf * minv[k] * G[i * d->nu + k] * dd->lambda[i];
     return 0;
 }
 
-int hx_constraints_project(hx_dynamics *d, double t, double *y)
+int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t, double *y)
 {
     for (int k = 0; k < d->m->nbodies; ++k)
         if (d->dof[k].kind == HX_DOF_FREE)
@@ -141,13 +139,13 @@ int hx_constraints_project(hx_dynamics *d, double t, double *y)
     const int nc = d->m->ncouplers, nu = d->nu;
     if (nc == 0)
         return 0;
-    double *G = d->scratch, *A = G + nc * nu, *minv = A + nc * nc, *phi = minv + nu,
+    double *G = dd->constraint_work, *A = G + nc * nu, *minv = A + nc * nc, *phi = minv + nu,
            *step = phi + nc;
     for (int k = 0; k < nu; ++k)
         minv[k] = hx_bodies_inverse_mass(d, k);
     /* positions: Newton on phi(q) = 0 with the mass-weighted least-change step */
     for (int it = 0;; ++it) {
-        if (constraint_jacobian(d, t, y, G, phi, NULL) != 0)
+        if (constraint_jacobian(d, dd, t, y, G, phi, NULL) != 0)
             return -1;
         const double err = hx_max_abs(phi, nc);
         if (err <= PHI_TOLERANCE || it == PROJECTION_ITERATIONS)
@@ -155,7 +153,7 @@ int hx_constraints_project(hx_dynamics *d, double t, double *y)
         weighted_gram(d, G, minv, A);
         memcpy(step, phi, sizeof(double) * (size_t)nc);
         if (hx_solve(nc, A, step) != 0)
-            return hx_dynamics_fail(d, "the couplers' constraint Jacobian is singular at t = %g", t);
+            return hx_dynamics_fail(dd, "the couplers' constraint Jacobian is singular at t = %g", t);
         for (int b = 0; b < d->m->nbodies; ++b) {
             const hx_body_dof *dof = &d->dof[b];
             if (dof->kind != HX_DOF_REVOLUTE && dof->kind != HX_DOF_SLIDER)
@@ -175,7 +173,7 @@ int hx_constraints_project(hx_dynamics *d, double t, double *y)
         step[i] = s;
     }
     if (hx_solve(nc, A, step) != 0)
-        return hx_dynamics_fail(d, "the couplers' constraint Jacobian is singular at t = %g", t);
+        return hx_dynamics_fail(dd, "the couplers' constraint Jacobian is singular at t = %g", t);
     for (int k = 0; k < nu; ++k) {
         double s = 0.0;
         for (int i = 0; i < nc; ++i)
@@ -183,22 +181,22 @@ int hx_constraints_project(hx_dynamics *d, double t, double *y)
         y[d->nq + k] -= minv[k] * s;
     }
     double phi_max, phidot_max;
-    if (hx_constraints_residuals(d, t, y, &phi_max, &phidot_max) != 0)
+    if (hx_constraints_residuals(d, dd, t, y, &phi_max, &phidot_max) != 0)
         return -1;
-    d->max_phi = fmax(d->max_phi, phi_max);
-    d->max_phidot = fmax(d->max_phidot, phidot_max);
+    dd->max_phi = fmax(dd->max_phi, phi_max);
+    dd->max_phidot = fmax(dd->max_phidot, phidot_max);
     return 0;
 }
 
-int hx_constraints_residuals(hx_dynamics *d, double t, const double *y, double *phi_max,
-                          double *phidot_max)
+int hx_constraints_residuals(const hx_dynamics *d, hx_dynamics_data *dd, double t,
+                             const double *y, double *phi_max, double *phidot_max)
 {
     *phi_max = *phidot_max = 0.0;
     const int nc = d->m->ncouplers, nu = d->nu;
     if (nc == 0)
         return 0;
-    double *G = d->scratch, *phi = G + nc * nu + nc * nc + nu;
-    if (constraint_jacobian(d, t, y, G, phi, NULL) != 0)
+    double *G = dd->constraint_work, *phi = G + nc * nu + nc * nc + nu;
+    if (constraint_jacobian(d, dd, t, y, G, phi, NULL) != 0)
         return -1;
     *phi_max = hx_max_abs(phi, nc);
     for (int i = 0; i < nc; ++i) {
@@ -210,13 +208,13 @@ int hx_constraints_residuals(hx_dynamics *d, double t, const double *y, double *
     return 0;
 }
 
-double hx_constraints_coupler_force(hx_dynamics *d, double t, const double *y, int coupler,
-                                 int joint)
+double hx_constraints_coupler_force(const hx_dynamics *d, hx_dynamics_data *dd, double t,
+                                    const double *y, int coupler, int joint)
 {
     double phi, grad[3];
-    if (coupler_terms(d, coupler, t, y, &phi, grad, NULL) < 0)
+    if (coupler_terms(d, dd, coupler, t, y, &phi, grad, NULL) < 0)
         return NAN;
-    return grad[joint] * d->lambda[coupler];
+    return grad[joint] * dd->lambda[coupler];
 }
 
 
@@ -237,13 +235,14 @@ int hx_constraints_coupled(const hx_dynamics *d, int *index)
     return count;
 }
 
-int hx_constraints_projector(hx_dynamics *d, double t, const double *y, const int *index,
-                             int count, double *work, double *P)
+int hx_constraints_projector(const hx_dynamics *d, hx_dynamics_data *dd, double t,
+                             const double *y, const int *index, int count, double *work,
+                             double *P)
 {
     const int nc = d->m->ncouplers, nu = d->nu;
-    double *G = d->scratch, *minv = G + nc * nu + nc * nc, *phi = minv + nu;
+    double *G = dd->constraint_work, *minv = G + nc * nu + nc * nc, *phi = minv + nu;
     double *A = work, *z = work + nc * nc;
-    if (constraint_jacobian(d, t, y, G, phi, NULL) != 0)
+    if (constraint_jacobian(d, dd, t, y, G, phi, NULL) != 0)
         return -1;
     for (int k = 0; k < nu; ++k)
         minv[k] = hx_bodies_inverse_mass(d, k);
@@ -252,7 +251,7 @@ int hx_constraints_projector(hx_dynamics *d, double t, const double *y, const in
         for (int k = 0; k < nc; ++k)
             z[k] = G[k * nu + index[j]];
         if (hx_solve(nc, A, z) != 0)
-            return hx_dynamics_fail(d, "the couplers' constraint Jacobian is singular at t = %g", t);
+            return hx_dynamics_fail(dd, "the couplers' constraint Jacobian is singular at t = %g", t);
         for (int i = 0; i < count; ++i) {
             double s = 0.0;
             for (int k = 0; k < nc; ++k)

@@ -1,4 +1,4 @@
-/* The right-hand side and its set-up (dynamics.h). */
+/* The dynamics' model and data, and one evaluation (dynamics.h). */
 #include "sim/dynamics/dynamics.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraints.h"
@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A force element's result axes are the world's for good: on ground, unturned. */
+/* A force element's output axes are the world's for good: on ground, unturned. */
 static int world_aligned(const hx_model *m, const hx_force *f)
 {
     const int axes = hx_force_output_axes(f);
@@ -44,36 +44,19 @@ static int init_parts(hx_dynamics *d, hx_session *s, hx_message *msg)
     d->dof = calloc((size_t)nb + 1, sizeof *d->dof);
     d->coupler_binding = calloc((size_t)nc + 1, sizeof *d->coupler_binding);
     d->force_binding = calloc((size_t)nf + 1, sizeof *d->force_binding);
-    d->lambda = calloc((size_t)nc + 1, sizeof *d->lambda);
-    d->element_load = calloc(6 * (size_t)nf + 1, sizeof *d->element_load);
     d->world_aligned = calloc((size_t)nf + 1, 1);
-    d->force = calloc(3 * (size_t)nb + 1, sizeof *d->force);
-    d->torque = calloc(3 * (size_t)nb + 1, sizeof *d->torque);
-    d->element_outputs = calloc(6 * (size_t)nf + 1, sizeof(double));
-    d->element_partials = calloc(72 * (size_t)nf + 1, sizeof(double));
-    if (!d->dof || !d->coupler_binding || !d->force_binding || !d->lambda || !d->element_load ||
-        !d->world_aligned || !d->force || !d->torque || !d->element_outputs ||
-        !d->element_partials || hx_frames_clone(&d->frames, &s->frames) != 0 ||
-        hx_frames_clone(&d->probe, &s->frames) != 0)
+    if (!d->dof || !d->coupler_binding || !d->force_binding || !d->world_aligned)
         return hx_fail(msg, "out of memory");
     if (hx_bodies_init(d, msg) != 0 || hx_stateeqns_init(d, msg) != 0 ||
         hx_routines_init(d, msg) != 0)
         return -1;
-    d->load_work = d->diffs + d->ndiffs;
+    d->load_work = d->diff_offset + d->ndiffs;
     d->element_work = d->load_work + 1;
     d->n = d->element_work + 1;
-    d->free_accelerations = calloc((size_t)d->nu + 1, sizeof(double));
-    d->evaluated_y = calloc((size_t)d->n, sizeof(double));
-    if (d->free_accelerations == NULL || d->evaluated_y == NULL)
-        return hx_fail(msg, "out of memory");
-    /* scratch: G (nc x nu), A (nc x nc), several vectors of nu and nc */
-    d->scratch = calloc((size_t)(nc * d->nu + nc * nc + 6 * (d->nu + nc) + 16), sizeof(double));
-    if (d->scratch == NULL)
-        return hx_fail(msg, "out of memory");
     for (int k = 0; k < nc; ++k)
-        d->coupler_binding[k] = hx_binding_of_coupler(&s->bindings, k);
+        d->coupler_binding[k] = hx_bindings_find(&s->bindings, HX_FAMILY_COUPLER, k);
     for (int k = 0; k < nf; ++k) {
-        d->force_binding[k] = hx_binding_of_force(&s->bindings, k);
+        d->force_binding[k] = hx_bindings_find(&s->bindings, HX_FAMILY_FORCE, k);
         d->world_aligned[k] = (unsigned char)world_aligned(m, &m->forces[k]);
     }
     return 0;
@@ -93,63 +76,114 @@ void hx_dynamics_free(hx_dynamics *d)
     free(d->dof);
     free(d->coupler_binding);
     free(d->force_binding);
-    free(d->lambda);
-    free(d->element_load);
     free(d->world_aligned);
-    free(d->force);
-    free(d->torque);
-    free(d->scratch);
-    free(d->element_outputs);
-    free(d->element_partials);
-    free(d->free_accelerations);
-    free(d->evaluated_y);
     hx_stateeqns_free(d);
     hx_routines_free(d);
-    hx_frames_free(&d->frames);
-    hx_frames_free(&d->probe);
     memset(d, 0, sizeof *d);
 }
 
-void hx_dynamics_set_state(hx_dynamics *d, double t, const double *y)
+int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message *msg)
 {
-    d->evaluated = 0;
-    d->frames.time = t;
-    hx_bodies_set_frames(d, y);
-    hx_routines_set_state(d, y);
-    hx_frames_update(&d->frames);
-}
-
-int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot)
-{
-    const int nb = d->m->nbodies;
-    hx_dynamics_set_state(d, t, y);
-    memset(d->force, 0, sizeof(double) * 3 * (size_t)nb);
-    memset(d->torque, 0, sizeof(double) * 3 * (size_t)nb);
-    ydot[d->load_work] = hx_loads_apply(d, t);
-    if (hx_element_forces_apply(d, &ydot[d->element_work]) != 0 ||
-        hx_stateeqns_apply(d, y, ydot) != 0)
-        return -1;
-    hx_bodies_accelerations(d, y, ydot);
-    if (d->m->ncouplers > 0) {
-        memcpy(d->free_accelerations, ydot + d->nq, sizeof(double) * (size_t)d->nu);
-        if (hx_constraints_apply(d, t, y, ydot + d->nq) != 0)
-            return -1;
+    memset(dd, 0, sizeof *dd);
+    const hx_model *m = d->m;
+    const size_t nb = (size_t)m->nbodies, nc = (size_t)m->ncouplers, nf = (size_t)m->nforces;
+    const size_t nu = (size_t)d->nu;
+    dd->force = calloc(3 * nb + 1, sizeof(double));
+    dd->torque = calloc(3 * nb + 1, sizeof(double));
+    dd->element_outputs = calloc(6 * nf + 1, sizeof(double));
+    dd->element_load = calloc(6 * nf + 1, sizeof(double));
+    dd->element_partials = calloc(72 * nf + 1, sizeof(double));
+    dd->stateeqn_outputs = calloc(6 * (size_t)m->nstateeqns + 1, sizeof(double));
+    dd->free_accelerations = calloc(nu + 1, sizeof(double));
+    dd->lambda = calloc(nc + 1, sizeof(double));
+    /* G (nc x nu), A (nc x nc), several vectors of nu and nc */
+    dd->constraint_work = calloc(nc * nu + nc * nc + 6 * (nu + nc) + 16, sizeof(double));
+    dd->stateeqn_work = malloc(sizeof(double) * (size_t)hx_stateeqns_work_size(d));
+    if (!dd->force || !dd->torque || !dd->element_outputs || !dd->element_load ||
+        !dd->element_partials || !dd->stateeqn_outputs || !dd->free_accelerations ||
+        !dd->lambda || !dd->constraint_work || !dd->stateeqn_work ||
+        hx_frames_clone(&dd->frames, &d->s->frames) != 0 ||
+        hx_frames_clone(&dd->moved, &d->s->frames) != 0) {
+        hx_dynamics_data_free(dd);
+        return hx_fail(msg, "out of memory");
     }
-    if (d->m->nroutines > 0 && hx_routines_apply(d, y, ydot) != 0)
-        return -1;
-    memcpy(d->evaluated_y, y, sizeof(double) * (size_t)d->n);
-    d->evaluated_t = t;
-    d->evaluated = 1;
     return 0;
 }
 
-int hx_dynamics_initial_state(hx_dynamics *d, double *y)
+void hx_dynamics_data_free(hx_dynamics_data *dd)
+{
+    free(dd->force);
+    free(dd->torque);
+    free(dd->element_outputs);
+    free(dd->element_load);
+    free(dd->element_partials);
+    free(dd->stateeqn_outputs);
+    free(dd->free_accelerations);
+    free(dd->lambda);
+    free(dd->constraint_work);
+    free(dd->stateeqn_work);
+    hx_frames_free(&dd->frames);
+    hx_frames_free(&dd->moved);
+    memset(dd, 0, sizeof *dd);
+}
+
+void hx_dynamics_kinematics(const hx_dynamics *d, hx_dynamics_data *dd, double t,
+                            const double *y)
+{
+    dd->frames.time = t;
+    hx_bodies_set_frames(d, dd, y);
+    hx_routines_set_state(d, dd, y);
+    hx_frames_update(&dd->frames);
+}
+
+int hx_dynamics_evaluate(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                         double *ydot, unsigned ask)
+{
+    const int nb = d->m->nbodies;
+    hx_dynamics_kinematics(d, dd, t, y);
+    memset(dd->force, 0, sizeof(double) * 3 * (size_t)nb);
+    memset(dd->torque, 0, sizeof(double) * 3 * (size_t)nb);
+    ydot[d->load_work] = hx_loads_apply(d, dd, t);
+    if (hx_element_forces_apply(d, dd, (ask & HX_EVALUATE_PARTIALS) != 0,
+                                &ydot[d->element_work]) != 0 ||
+        hx_stateeqns_apply(d, dd, y, ydot) != 0)
+        return -1;
+    hx_bodies_accelerations(d, dd, y, ydot);
+    if (d->m->ncouplers > 0) {
+        memcpy(dd->free_accelerations, ydot + d->nq, sizeof(double) * (size_t)d->nu);
+        if (hx_constraints_apply(d, dd, t, y, ydot + d->nq) != 0)
+            return -1;
+    }
+    if (d->m->nroutines > 0 && hx_routines_apply(d, dd, y, ydot) != 0)
+        return -1;
+    return 0;
+}
+
+int hx_dynamics_rhs(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                    double *ydot)
+{
+    return hx_dynamics_evaluate(d, dd, t, y, ydot, 0);
+}
+
+int hx_dynamics_initial_state(const hx_dynamics *d, hx_dynamics_data *dd, double *y)
 {
     memset(y, 0, sizeof(double) * (size_t)d->n);
     hx_bodies_initial_state(d, y);
     hx_stateeqns_initial(d, y);
-    if (hx_routines_initial(d, y) != 0)
+    if (hx_routines_initial(d, dd, y) != 0)
         return -1;
-    d->max_phi = d->max_phidot = 0.0;
-    return hx_constraints_project(d, 0.0, y);
+    dd->max_phi = dd->max_phidot = 0.0;
+    return hx_constraints_project(d, dd, 0.0, y);
+}
+
+int hx_dynamics_initial_y(const hx_dynamics *d, double *y, hx_message *msg)
+{
+    hx_dynamics_data dd;
+    if (hx_dynamics_data_init(&dd, d, msg) != 0)
+        return -1;
+    const int status = hx_dynamics_initial_state(d, &dd, y);
+    if (status != 0)
+        hx_fail(msg, "%s", dd.message);
+    hx_dynamics_data_free(&dd);
+    return status;
 }

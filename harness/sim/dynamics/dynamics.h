@@ -1,31 +1,40 @@
 /*
  * The harness's equations of motion, as one right-hand side for the
- * integrators. The dynamics owns its state (frames/frames.h): each evaluation
- * fills the bodies' frames from y, runs the kinematics stage, and calls the
- * elements with that state bound.
+ * integrators, kept as MuJoCo keeps its model and data apart:
+ *   - hx_dynamics, the dynamics' model: what hx_dynamics_init sets up from the
+ *     session (the layout of y, each body's degrees of freedom, the elements'
+ *     bindings) and nothing changes after;
+ *   - hx_dynamics_data, what an evaluation computes, grouped by the stage that
+ *     computes it. Whoever evaluates owns a data: the run one, the Jacobian
+ *     its own (sim/jacobian/), each tool its own; nothing is shared between
+ *     them and no evaluation reads what an earlier one left.
+ * One evaluation runs the stages in order, each given what it reads:
+ *   kinematics   the bodies' and markers' frames at (t, y)      bodies.c
+ *   forces       gravity and loads, the user force elements, the
+ *                Force_StateEqn elements (their state rates too)  loads.c,
+ *                                                    element_forces.c, stateeqns.c
+ *   accelerations  the bodies' Newton-Euler accelerations        bodies.c
+ *   constraints  the couplers' multipliers                        constraints.c
+ *   routines     Control_Diff rates, driven joints                routines.c
  *
  * Bodies are free (position, unit quaternion, velocity, body-axis angular
  * velocity) or hinged/slid to ground by one joint (the joint coordinate
- * AZ(I,J) or DZ(I,J,J), unwrapped, and its rate) (bodies.c). Forces: gravity
- * and loads (loads.c), the user force elements (element_forces.c) and the
- * Force_StateEqn elements, whose internal states are integrated with the
- * bodies' (stateeqns.c). Couplers relate joint coordinates through one
- * Lagrange multiplier each, with projection onto the constraints after a
- * step (constraints.c).
+ * AZ(I,J) or DZ(I,J,J), unwrapped, and its rate). Couplers relate joint
+ * coordinates through one Lagrange multiplier each, with projection onto the
+ * constraints after a step.
  *
  * State layout y: [positions (nq) | velocities (nu) | the Force_StateEqn
  * elements' states (nstates, element by element in the model's order) | the
  * Control_Diff states (ndiffs, routines.h) | work done by the loads | work
- * done by the force elements, Force_StateEqn ones included]. A Motion_Joint
- * drives its joint's coordinate (routines.h). Units follow the model; mass *
- * acceleration = ucf * force, as in a solver with an inconsistent unit set
- * (mm, kg, s, N has ucf = 1000).
+ * done by the force elements, Force_StateEqn ones included]. Units follow the
+ * model; mass * acceleration = ucf * force, as in a solver with an
+ * inconsistent unit set (mm, kg, s, N has ucf = 1000).
  */
-#ifndef HX_SIM_DYNAMICS_H
-#define HX_SIM_DYNAMICS_H
+#ifndef HX_SIM_DYNAMICS_DYNAMICS_H
+#define HX_SIM_DYNAMICS_DYNAMICS_H
 
-#include "host/session.h"
 #include "frames/frames.h"
+#include "session/session.h"
 
 typedef enum hx_dof_kind { HX_DOF_GROUND, HX_DOF_FREE, HX_DOF_REVOLUTE, HX_DOF_SLIDER } hx_dof_kind;
 
@@ -38,43 +47,56 @@ typedef struct hx_body_dof {
     double inertia[9], inertia_inv[9]; /* free bodies: about the cm, body axes */
 } hx_body_dof;
 
+/* The dynamics' model: set up once, read only afterwards. */
 typedef struct hx_dynamics {
     hx_session *s;
     const hx_model *m;
-    hx_frames frames;           /* the frames of the last evaluation */
-    hx_frames probe;             /* scratch state for elements at prescribed deformations */
-    double ucf;                 /* acceleration = ucf * force / mass */
-    hx_body_dof *dof;
-    int nq, nu, n;
-    int states, nstates;        /* y offset and count of the Force_StateEqn elements' states */
-    int diffs, ndiffs;          /* y offset and count of the Control_Diff states (routines.h) */
-    hx_binding **routine_binding; /* per routine of the model (model.h) */
-    int *driver;                /* per body: the Motion_Joint routine driving it, or -1 */
-    int load_work, element_work; /* y indices of the work done by loads and by force elements */
-    struct hx_stateeqns *stateeqns; /* the Force_StateEqn elements (stateeqns.h) */
+    double ucf;                   /* acceleration = ucf * force / mass */
+    hx_body_dof *dof;             /* per body */
+    int nq, nu, n;                /* positions, velocities, the whole of y */
+    int stateeqn_offset, nstates; /* y offset and count of the Force_StateEqn states */
+    int diff_offset, ndiffs;      /* y offset and count of the Control_Diff states */
+    int load_work, element_work;  /* y indices of the work done by loads and by elements */
     hx_binding **coupler_binding; /* per coupler; NULL for the built-in form */
     hx_binding **force_binding;   /* per force element */
-    double *lambda;             /* multipliers of the last evaluation */
-    double *element_load;       /* 6 per force element: F, T on I, world axes */
-    unsigned char *world_aligned; /* per force element: its result axes are the world's
-                                   * for good (on ground, unturned) */
-    double *force, *torque;     /* per body, world, torque about the cm */
-    double *scratch;
-    /* What the last evaluation found, for the Newton matrix (sim/newton/),
-     * which takes them instead of calling the elements again: */
-    double *element_outputs;    /* 6 per force element, in its own result axes */
-    double *element_partials;   /* 72 per FIESUB element: dfddis, then dfdvel */
-    int field_partials;         /* 1: FIESUB is called with dflag set, as a solver
-                                 * asks for partials (the Newton matrix wants them) */
-    double *free_accelerations; /* nu: the bodies' udot before the couplers act */
-    double *evaluated_y;        /* the y of that evaluation */
-    double evaluated_t;
-    int evaluated;              /* 1: d->frames and the above belong to (evaluated_t,
-                                 * evaluated_y); any other setting of d->frames clears it */
+    hx_binding **routine_binding; /* per routine of the model (model.h) */
+    int *driver;                  /* per body: the Motion_Joint routine driving it, or -1 */
+    unsigned char *world_aligned; /* per force element: its output axes are the world's for
+                                   * good (on ground, unturned) */
+    struct hx_stateeqns *stateeqns; /* the Force_StateEqn elements (stateeqns.h) */
+} hx_dynamics;
+
+/* What the evaluations ask beyond the right-hand side. */
+enum {
+    HX_EVALUATE_PARTIALS = 1 /* Force_Field elements called with dflag set, their dfddis and
+                              * dfdvel kept (a solver asks for partials so) */
+};
+
+/* What an evaluation computes, by stage; allocated for one dynamics. */
+typedef struct hx_dynamics_data {
+    /* kinematics: the frames at the evaluation's (t, y) */
+    hx_frames frames;
+    /* forces */
+    double *force, *torque;       /* per body, world, the torque about its cm */
+    double *element_outputs;      /* 6 per force element, in its output axes */
+    double *element_load;         /* 6 per force element: F, T on I, world axes */
+    double *element_partials;     /* 72 per Force_Field: dfddis, then dfdvel; written only by
+                                   * an evaluation asked for HX_EVALUATE_PARTIALS */
+    double *stateeqn_outputs;     /* 6 per Force_StateEqn, in its reference marker's axes */
+    /* accelerations */
+    double *free_accelerations;   /* nu: the bodies' udot before the couplers act */
+    /* constraints */
+    double *lambda;               /* per coupler */
+    /* the stages' scratch */
+    double *constraint_work;      /* G (nc x nu), G M^-1 G^T (nc x nc), vectors */
+    double *stateeqn_work;        /* one Force_StateEqn's inputs and its call's copies */
+    hx_frames moved;              /* frames with bodies placed elsewhere (element_at.h) */
+    /* the first failure (failure.h) */
     int failed;
     char message[1024];
-    double max_phi, max_phidot; /* largest constraint residuals after projections */
-} hx_dynamics;
+    /* the largest constraint residuals projections have left (constraints.h) */
+    double max_phi, max_phidot;
+} hx_dynamics_data;
 
 /* Refuses models with elements the harness does not model (model.h). On
  * failure it has freed what it took (d is zeroed: hx_dynamics_free may still
@@ -82,16 +104,28 @@ typedef struct hx_dynamics {
 int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg);
 void hx_dynamics_free(hx_dynamics *d);
 
-/* Initial state from the model, projected onto the couplers. */
-int hx_dynamics_initial_state(hx_dynamics *d, double *y);
+/* The same for a data of d. */
+int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message *msg);
+void hx_dynamics_data_free(hx_dynamics_data *dd);
 
-/* ydot = f(t, y). Returns 0, or -1 (d->message) when an element stopped the
- * run or returned a non-finite value, or the constraints are singular. */
-int hx_dynamics_rhs(hx_dynamics *d, double t, const double *y, double *ydot);
+/* Initial state from the model, projected onto the couplers; 0, or -1
+ * (dd->message). */
+int hx_dynamics_initial_state(const hx_dynamics *d, hx_dynamics_data *dd, double *y);
+/* The same on a data of its own, for callers that need the state alone; 0,
+ * or -1 with msg. */
+int hx_dynamics_initial_y(const hx_dynamics *d, double *y, hx_message *msg);
 
-/* The kinematics of y into d->frames: bodies' frames, then markers. */
-void hx_dynamics_set_state(hx_dynamics *d, double t, const double *y);
+/* ydot = f(t, y), the stages' results in dd; `ask`: HX_EVALUATE_* flags.
+ * Returns 0, or -1 (dd->message) when an element stopped the run or returned
+ * a non-finite value, or the constraints are singular. */
+int hx_dynamics_evaluate(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                         double *ydot, unsigned ask);
+/* The right-hand side alone: hx_dynamics_evaluate asking nothing more. */
+int hx_dynamics_rhs(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                    double *ydot);
 
-/* How the stages of an evaluation fail: sim/dynamics/stage_failure.h. */
+/* The kinematics stage: the bodies' frames, then the markers', at (t, y). */
+void hx_dynamics_kinematics(const hx_dynamics *d, hx_dynamics_data *dd, double t,
+                            const double *y);
 
 #endif

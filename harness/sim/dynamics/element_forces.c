@@ -4,14 +4,14 @@
  * the same point. */
 #include <math.h>
 
-#include "base/finite.h"
+#include "host/invoke.h"
 #include "base/vecmath.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/element_forces.h"
-#include "sim/dynamics/stage_failure.h"
+#include "sim/dynamics/failure.h"
 #include "frames/measures.h"
 
-void hx_force_routine_load(const hx_model *m, const hx_frames *s, int force,
+void hx_force_routine_load(const hx_model *m, const hx_frames *fr, int force,
                            const double *values, double load[6])
 {
     const hx_force *f = &m->forces[force];
@@ -38,8 +38,8 @@ void hx_force_routine_load(const hx_model *m, const hx_frames *s, int force,
         return;
     }
     hx_frame scratch[2];
-    const hx_frame *I = hx_frames_marker(s, f->i_marker, &scratch[0]);
-    const hx_frame *J = hx_frames_marker(s, f->j_marker, &scratch[1]);
+    const hx_frame *I = hx_frames_marker(fr, f->i_marker, &scratch[0]);
+    const hx_frame *J = hx_frames_marker(fr, f->j_marker, &scratch[1]);
     if (f->part == HX_OUTPUT_SCALAR_TORQUE) {
         for (int k = 0; k < 3; ++k)
             load[3 + k] = value * J->R[3 * k + 2];
@@ -52,40 +52,36 @@ void hx_force_routine_load(const hx_model *m, const hx_frames *s, int force,
             load[k] = value * r[k] / length;
 }
 
-void hx_force_routine_call(hx_binding *b, const hx_frames *s, int dflag, double load[6])
+void hx_force_routine_call(hx_binding *b, const hx_frames *fr, int dflag, double load[6])
 {
     double values[6];
-    hx_invoke_gfosub(b, s, dflag, 0, values, NULL);
-    hx_force_routine_load(b->model, s, b->index, values, load);
+    hx_invoke_force(b, fr, dflag, 0, values, NULL);
+    hx_force_routine_load(b->model, fr, b->index, values, load);
 }
 
-int hx_element_forces_apply(hx_dynamics *d, double *power)
+int hx_element_forces_apply(const hx_dynamics *d, hx_dynamics_data *dd, int partials,
+                            double *power)
 {
     const hx_model *m = d->m;
-    const hx_frames *s = &d->frames;
+    const hx_frames *fr = &dd->frames;
     *power = 0.0;
     for (int k = 0; k < m->nforces; ++k) {
         const hx_force *f = &m->forces[k];
         hx_binding *b = d->force_binding[k];
-        const hx_frame *I = &s->markers[f->i_marker], *J = &s->markers[f->j_marker];
-        double *out = d->element_outputs + 6 * k;
+        const hx_frame *I = &fr->markers[f->i_marker], *J = &fr->markers[f->j_marker];
+        double *out = dd->element_outputs + 6 * k;
         const int axes_marker = hx_force_output_axes(f);
-        const double *axes = axes_marker >= 0 ? s->markers[axes_marker].R : hx_world_frame.R;
+        const double *axes = axes_marker >= 0 ? fr->markers[axes_marker].R : hx_world_frame.R;
         if (f->interface == HX_FORCE_GFOSUB) {
-            hx_force_routine_call(b, s, 0, out);
+            hx_force_routine_call(b, fr, 0, out);
         } else {
-            /* the partials come with the force, when asked for (dflag): kept
-             * for the Newton matrix */
-            double disp[6], velo[6], *dfd = d->element_partials + 72 * k;
+            double disp[6], velo[6], *dfd = dd->element_partials + 72 * k;
             hx_field_state(I, J, disp, velo);
-            hx_invoke_fiesub(b, s, disp, velo, d->field_partials, 0, out, dfd, dfd + 36, NULL);
+            hx_invoke_field(b, fr, disp, velo, partials, 0, out, dfd, dfd + 36, NULL);
         }
-        if (hx_dynamics_check_stop(d, b) != 0)
+        if (hx_dynamics_check_call(d, dd, b, out, 6, "force", fr->time) != 0)
             return -1;
-        if (!hx_all_finite(out, 6))
-            return hx_dynamics_fail(d, "%s %d returned a non-finite force at t = %g", b->element,
-                                    b->id, s->time);
-        double *F = d->element_load + 6 * k, *T = F + 3;
+        double *F = dd->element_load + 6 * k, *T = F + 3;
         if (d->world_aligned[k]) {
             v3_copy(F, out);
             v3_copy(T, out + 3);
@@ -93,8 +89,8 @@ int hx_element_forces_apply(hx_dynamics *d, double *power)
             m3_apply(F, axes, out);
             m3_apply(T, axes, out + 3);
         }
-        *power += hx_bodies_apply_load(d, m->markers[f->i_marker].body, I->p, F, T, 1.0);
-        *power += hx_bodies_apply_load(d, m->markers[f->j_marker].body, I->p, F, T, -1.0);
+        *power += hx_bodies_apply_load(d, dd, m->markers[f->i_marker].body, I->p, F, T, 1.0);
+        *power += hx_bodies_apply_load(d, dd, m->markers[f->j_marker].body, I->p, F, T, -1.0);
     }
     return 0;
 }

@@ -8,7 +8,7 @@
 
 #include "sim/dynamics/dynamics.h"
 
-/* What the harness makes of a force routine's own values (hx_invoke_gfosub,
+/* What the harness makes of a force routine's own values (hx_invoke_force,
  * hx_force_routine_values of them): the force and torque on I in the
  * element's output axes (hx_force_output_axes). A GFOSUB's six as they are;
  * a VFOSUB's force or a VTOSUB's torque, the other part zero; an SFOSUB's
@@ -16,14 +16,18 @@
  * meet), or about J's z axis, in world axes (a Force_Scalar_TwoBody has no
  * reference marker). A value left unwritten (NaN in check's probe) stays NaN.
  * The dependency and history audits judge the values, never this load. */
-void hx_force_routine_load(const hx_model *m, const hx_frames *s, int force,
+void hx_force_routine_load(const hx_model *m, const hx_frames *fr, int force,
                            const double *values, double load[6]);
 
 /* Force element `force`'s routine called at s (dflag as given, iflag 0) and
  * its values made a load in its output axes (hx_force_routine_load). */
-void hx_force_routine_call(hx_binding *b, const hx_frames *s, int dflag, double load[6]);
+void hx_force_routine_call(hx_binding *b, const hx_frames *fr, int dflag, double load[6]);
 
-/* The force elements at d->frames; *power receives the power of their forces. */
-int hx_element_forces_apply(hx_dynamics *d, double *power);
+/* The forces stage's user force elements at dd->frames: their outputs and
+ * loads into dd, the loads onto the bodies; with partials set a Force_Field
+ * is asked for its partials too (dflag), kept in dd->element_partials. *power
+ * receives the power of their forces. 0, or -1 (dd->message). */
+int hx_element_forces_apply(const hx_dynamics *d, hx_dynamics_data *dd, int partials,
+                            double *power);
 
 #endif

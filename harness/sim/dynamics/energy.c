@@ -1,17 +1,17 @@
 /* The energy of a state and its balance (dynamics.h). */
 #include "base/vecmath.h"
 #include "sim/dynamics/energy.h"
-#include "sim/dynamics/element_probe.h"
+#include "sim/dynamics/element_at.h"
 #include "frames/measures.h"
 
-hx_energy hx_energy_of(hx_dynamics *d, double t, const double *y)
+hx_energy hx_energy_of(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y)
 {
     const hx_model *m = d->m;
-    hx_dynamics_set_state(d, t, y);
+    hx_dynamics_kinematics(d, dd, t, y);
     double kinetic = 0.0, potential = 0.0;
     for (int k = 0; k < m->nbodies; ++k) {
         const hx_body_dof *dof = &d->dof[k];
-        const hx_frame *f = &d->frames.bodies[k];
+        const hx_frame *f = &dd->frames.bodies[k];
         const double *u = y + d->nq + dof->u;
         if (dof->kind == HX_DOF_GROUND)
             continue;
@@ -25,9 +25,9 @@ hx_energy hx_energy_of(hx_dynamics *d, double t, const double *y)
         potential -= m->bodies[k].mass * v3_dot(m->gravity, f->p);
     }
     double elastic = 0.0;
-    hx_frames_copy(&d->probe, &d->frames);
+    hx_frames_copy(&dd->moved, &dd->frames);
     for (int k = 0; k < m->nforces; ++k)
-        elastic += hx_element_potential(d->s, &d->probe, &d->frames, k, t);
+        elastic += hx_element_potential(d->s, &dd->moved, &dd->frames, k, t);
     hx_energy e;
     e.kinetic = kinetic / d->ucf;
     e.elastic = elastic;

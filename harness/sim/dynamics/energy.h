@@ -14,7 +14,8 @@ typedef struct hx_energy {
                        * so its drift is the integrator's alone */
 } hx_energy;
 
-hx_energy hx_energy_of(hx_dynamics *d, double t, const double *y);
+/* The energy at (t, y); dd's kinematics are set to it. */
+hx_energy hx_energy_of(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y);
 
 /* Energy the force elements took out between two energies of a run: the work
  * they did not store as elastic energy (total - balance is elastic + their

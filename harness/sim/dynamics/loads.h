@@ -13,11 +13,12 @@ typedef struct hx_load_share {
     double point[2][3], F[2][3], T[2][3];
 } hx_load_share;
 
-/* Load k at state s and time t. */
-void hx_load_share_at(const hx_dynamics *d, const hx_frames *s, double t, int k,
+/* Load k at frames fr and time t. */
+void hx_load_share_at(const hx_model *m, const hx_frames *fr, double t, int k,
                       hx_load_share *share);
 
-/* Gravity and the model's loads at time t at d->frames; returns their power. */
-double hx_loads_apply(hx_dynamics *d, double t);
+/* The forces stage's gravity and loads at time t at dd->frames, onto the
+ * bodies; returns their power. */
+double hx_loads_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t);
 
 #endif

@@ -1,8 +1,8 @@
 /* The user routines that are not forces in the equations of motion (routines.h). */
+#include "host/invoke.h"
 #include "sim/dynamics/routines.h"
-#include "sim/dynamics/stage_failure.h"
+#include "sim/dynamics/failure.h"
 
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -10,7 +10,7 @@ int hx_routines_init(hx_dynamics *d, hx_message *msg)
 {
     const hx_model *m = d->m;
     d->ndiffs = m->nroutines_of[HX_ROUTINE_DIFF];
-    d->diffs = d->states + d->nstates;
+    d->diff_offset = d->stateeqn_offset + d->nstates;
     d->routine_binding = calloc((size_t)m->nroutines + 1, sizeof *d->routine_binding);
     d->driver = calloc((size_t)m->nbodies + 1, sizeof *d->driver);
     if (d->routine_binding == NULL || d->driver == NULL)
@@ -19,7 +19,7 @@ int hx_routines_init(hx_dynamics *d, hx_message *msg)
         d->driver[k] = -1;
     for (int k = 0; k < m->nroutines; ++k) {
         const hx_routine *r = &m->routines[k];
-        d->routine_binding[k] = hx_binding_of_routine(&d->s->bindings, k);
+        d->routine_binding[k] = hx_bindings_find(&d->s->bindings, HX_FAMILY_ROUTINE, k);
         if (r->kind == HX_ROUTINE_DIFF && r->implicit)
             return hx_fail(msg, "%s:%d: Control_Diff %d: is_implicit=\"TRUE\": the harness"
                            " integrates explicit Control_Diff elements only (check verifies"
@@ -46,40 +46,36 @@ void hx_routines_free(hx_dynamics *d)
     free(d->driver);
 }
 
-void hx_routines_set_state(hx_dynamics *d, const double *y)
+void hx_routines_set_state(const hx_dynamics *d, hx_dynamics_data *dd, const double *y)
 {
     for (int k = 0; k < d->ndiffs; ++k)
-        d->frames.diffs[2 * k] = y[d->diffs + k];
+        dd->frames.diffs[2 * k] = y[d->diff_offset + k];
 }
 
-/* MOTSUB of routine k at iord, at d->frames's time; 0 or -1 (d->message). */
-static int motion(hx_dynamics *d, int k, int iord, double *value)
+/* MOTSUB of routine k at iord, at dd->frames's time; 0 or -1 (dd->message). */
+static int motion(const hx_dynamics *d, hx_dynamics_data *dd, int k, int iord, double *value)
 {
+    static const char *const what[3] = {"value (iord 0)", "rate (iord 1)",
+                                         "acceleration (iord 2)"};
     hx_binding *b = d->routine_binding[k];
-    hx_invoke_routine(b, &d->frames, iord, 0, value, NULL);
-    if (hx_dynamics_check_stop(d, b) != 0)
-        return -1;
-    if (!isfinite(*value))
-        return hx_dynamics_fail(d, "%s %d (%s) returned a non-finite value at iord %d, t = %g",
-                                b->element, b->id, hx_binding_routine(b, 0), iord,
-                                d->frames.time);
-    return 0;
+    hx_invoke_routine(b, &dd->frames, iord, 0, value, NULL);
+    return hx_dynamics_check_call(d, dd, b, value, 1, what[iord], dd->frames.time);
 }
 
-int hx_routines_initial(hx_dynamics *d, double *y)
+int hx_routines_initial(const hx_dynamics *d, hx_dynamics_data *dd, double *y)
 {
     const hx_model *m = d->m;
     for (int k = 0; k < m->nroutines; ++k) {
         const hx_routine *r = &m->routines[k];
         if (r->kind != HX_ROUTINE_DIFF)
             continue;
-        y[d->diffs + r->slot] = r->ic[0];
+        y[d->diff_offset + r->slot] = r->ic[0];
         /* what DIF and DIF1 answer a MOTSUB called below, and any call before
          * the first right-hand side */
-        d->frames.diffs[2 * r->slot] = r->ic[0];
-        d->frames.diffs[2 * r->slot + 1] = r->ic[1];
+        dd->frames.diffs[2 * r->slot] = r->ic[0];
+        dd->frames.diffs[2 * r->slot + 1] = r->ic[1];
     }
-    d->frames.time = 0.0;
+    dd->frames.time = 0.0;
     for (int body = 0; body < m->nbodies; ++body) {
         const int k = d->driver[body];
         if (k < 0)
@@ -91,14 +87,14 @@ int hx_routines_initial(hx_dynamics *d, double *y)
             *q = r->ic[0];
         if (r->ic_given[1])
             *u = r->ic[1];
-        if ((r->val_type == 'D' && (motion(d, k, 0, q) != 0 || motion(d, k, 1, u) != 0)) ||
-            (r->val_type == 'V' && motion(d, k, 0, u) != 0))
+        if ((r->val_type == 'D' && (motion(d, dd, k, 0, q) != 0 || motion(d, dd, k, 1, u) != 0)) ||
+            (r->val_type == 'V' && motion(d, dd, k, 0, u) != 0))
             return -1;
     }
     return 0;
 }
 
-int hx_routines_apply(hx_dynamics *d, const double *y, double *ydot)
+int hx_routines_apply(const hx_dynamics *d, hx_dynamics_data *dd, const double *y, double *ydot)
 {
     const hx_model *m = d->m;
     for (int k = 0; k < m->nroutines; ++k) {
@@ -107,14 +103,11 @@ int hx_routines_apply(hx_dynamics *d, const double *y, double *ydot)
             continue;
         hx_binding *b = d->routine_binding[k];
         double rate;
-        hx_invoke_routine(b, &d->frames, 0, 0, &rate, NULL);
-        if (hx_dynamics_check_stop(d, b) != 0)
+        hx_invoke_routine(b, &dd->frames, 0, 0, &rate, NULL);
+        if (hx_dynamics_check_call(d, dd, b, &rate, 1, "value", dd->frames.time) != 0)
             return -1;
-        if (!isfinite(rate))
-            return hx_dynamics_fail(d, "%s %d (%s) returned a non-finite value at t = %g",
-                                    b->element, b->id, hx_binding_routine(b, 0), d->frames.time);
-        ydot[d->diffs + r->slot] = rate;
-        d->frames.diffs[2 * r->slot + 1] = rate;
+        ydot[d->diff_offset + r->slot] = rate;
+        dd->frames.diffs[2 * r->slot + 1] = rate;
     }
     for (int body = 0; body < m->nbodies; ++body) {
         const int k = d->driver[body];
@@ -123,9 +116,11 @@ int hx_routines_apply(hx_dynamics *d, const double *y, double *ydot)
         const char val_type = m->routines[k].val_type;
         double *qdot = &ydot[d->dof[body].q], *udot = &ydot[d->nq + d->dof[body].u];
         *qdot = y[d->nq + d->dof[body].u];
-        if ((val_type == 'D' && (motion(d, k, 1, qdot) != 0 || motion(d, k, 2, udot) != 0)) ||
-            (val_type == 'V' && (motion(d, k, 0, qdot) != 0 || motion(d, k, 1, udot) != 0)) ||
-            (val_type == 'A' && motion(d, k, 0, udot) != 0))
+        if ((val_type == 'D' &&
+             (motion(d, dd, k, 1, qdot) != 0 || motion(d, dd, k, 2, udot) != 0)) ||
+            (val_type == 'V' &&
+             (motion(d, dd, k, 0, qdot) != 0 || motion(d, dd, k, 1, udot) != 0)) ||
+            (val_type == 'A' && motion(d, dd, k, 0, udot) != 0))
             return -1;
     }
     return 0;
@@ -165,7 +160,7 @@ void hx_routines_csv_header(FILE *f, const hx_dynamics *d)
     }
 }
 
-int hx_routines_csv_row(FILE *f, hx_dynamics *d, const double *y)
+int hx_routines_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, const double *y)
 {
     const hx_model *m = d->m;
     for (int k = 0; k < m->nroutines; ++k) {
@@ -173,18 +168,18 @@ int hx_routines_csv_row(FILE *f, hx_dynamics *d, const double *y)
         hx_binding *b = d->routine_binding[k];
         double values[8];
         if (r->kind == HX_ROUTINE_DIFF) {
-            fprintf(f, ",%.15g", y[d->diffs + r->slot]);
+            fprintf(f, ",%.15g", y[d->diff_offset + r->slot]);
         } else if (r->kind == HX_ROUTINE_MOTION) {
             if (r->val_type == 'A')
                 continue;
             const int body = m->markers[m->joints[r->joint].i_marker].body;
             const int driven = r->val_type == 'D' ? d->dof[body].q : d->nq + d->dof[body].u;
-            if (motion(d, k, 0, &values[0]) != 0)
+            if (motion(d, dd, k, 0, &values[0]) != 0)
                 return -1;
             fprintf(f, ",%.6g", y[driven] - values[0]);
         } else {
-            hx_invoke_routine(b, &d->frames, 0, 0, values, NULL);
-            if (hx_dynamics_check_stop(d, b) != 0)
+            hx_invoke_routine(b, &dd->frames, 0, 0, values, NULL);
+            if (hx_dynamics_check_call(d, dd, b, NULL, 0, "", dd->frames.time) != 0)
                 return -1;
             const int n = r->kind == HX_ROUTINE_REQUEST ? 8 : 1;
             for (int j = 0; j < n; ++j)

@@ -20,22 +20,24 @@
 
 #include "sim/dynamics/dynamics.h"
 
-/* Sets d->diffs and d->ndiffs (after the Force_StateEqn states) and the
+/* Sets d->diff_offset and d->ndiffs (after the Force_StateEqn states) and the
  * driven bodies; refuses an implicit Control_Diff and a motion on a coupled
  * joint. 0, or -1 with msg. */
 int hx_routines_init(hx_dynamics *d, hx_message *msg);
 void hx_routines_free(hx_dynamics *d);
 
-/* The Control_Diff states of y into d->frames (DIF answers them). */
-void hx_routines_set_state(hx_dynamics *d, const double *y);
+/* The kinematics stage's share: the Control_Diff states of y into
+ * dd->frames (DIF answers them). */
+void hx_routines_set_state(const hx_dynamics *d, hx_dynamics_data *dd, const double *y);
 
 /* Initial values: ic of each Control_Diff, the driven joints' coordinates
- * and rates; 0 or -1 (d->message). */
-int hx_routines_initial(hx_dynamics *d, double *y);
+ * and rates; 0 or -1 (dd->message). */
+int hx_routines_initial(const hx_dynamics *d, hx_dynamics_data *dd, double *y);
 
-/* At d->frames: the Control_Diff rates into ydot (and d->frames's DIF1), the
- * driven joints' rates and accelerations over the bodies'. 0 or -1. */
-int hx_routines_apply(hx_dynamics *d, const double *y, double *ydot);
+/* The routines stage, at dd->frames: the Control_Diff rates into ydot (and
+ * dd->frames's DIF1), the driven joints' rates and accelerations over the
+ * bodies'. 0 or -1. */
+int hx_routines_apply(const hx_dynamics *d, hx_dynamics_data *dd, const double *y, double *ydot);
 
 /* The y rows whose rate is a function of time alone (driven joints):
  * their indices into rows (at most 2 per driven joint); their count. */
@@ -44,6 +46,6 @@ int hx_routines_driven_rows(const hx_dynamics *d, int *rows);
 /* The CSV's columns: diffID, motionID.error (coordinate less MOTSUB's
  * value; for V, rate less it), requestID.1 .. 8, variableID. */
 void hx_routines_csv_header(FILE *f, const hx_dynamics *d);
-int hx_routines_csv_row(FILE *f, hx_dynamics *d, const double *y);
+int hx_routines_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, const double *y);
 
 #endif

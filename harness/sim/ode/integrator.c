@@ -46,7 +46,7 @@ int hx_method_adaptive(hx_method method)
            method == HX_METHOD_DOPRI5_ARKODE;
 }
 
-int hx_jacobian_parse(const char *name, hx_jacobian *jacobian)
+int hx_jacobian_method_parse(const char *name, hx_jacobian_method *jacobian)
 {
     if (strcmp(name, "analytic") == 0)
         *jacobian = HX_JACOBIAN_ANALYTIC;

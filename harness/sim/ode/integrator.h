@@ -11,8 +11,8 @@
  * symplectic Euler needs advance() to move positions with the new velocities.
  * project() (optional) runs after every accepted step.
  */
-#ifndef HX_INTEGRATOR_H
-#define HX_INTEGRATOR_H
+#ifndef HX_SIM_ODE_INTEGRATOR_H
+#define HX_SIM_ODE_INTEGRATOR_H
 
 #include "sim/ode/sparsity.h"
 
@@ -56,7 +56,7 @@ typedef enum hx_method {
  * partials), or differences of the right-hand side (what a user gets without
  * partials): by column groups on the ode's sparsity (column_groups.h), or
  * CVODE's own column by column when there is none. */
-typedef enum hx_jacobian { HX_JACOBIAN_ANALYTIC, HX_JACOBIAN_FD } hx_jacobian;
+typedef enum hx_jacobian_method { HX_JACOBIAN_ANALYTIC, HX_JACOBIAN_FD } hx_jacobian_method;
 
 /* BDF's linear solver for the Newton systems: dense LU (SUNDIALS), or sparse
  * LU (SuiteSparse KLU through SUNDIALS) on the ode's sparsity; auto takes KLU
@@ -71,7 +71,7 @@ typedef struct hx_integrator_options {
     double max_step;        /* adaptive methods: largest step (0: no limit) */
     double min_step;        /* BDF: smallest step (0: none; = max_step: fixed steps) */
     int max_order;          /* BDF: highest order, 1 to 5 (0: 5) */
-    hx_jacobian jacobian;   /* BDF's Newton matrix */
+    hx_jacobian_method jacobian;   /* BDF's Newton matrix */
     hx_linear_solver linear_solver;
     long max_steps;         /* 0: no limit */
     double output_interval; /* 0: output after every step */
@@ -117,7 +117,7 @@ int hx_method_parse(const char *name, hx_method *method);
 const char *hx_status_text(hx_status status);
 /* Chooses its own steps (tolerances) rather than taking fixed ones. */
 int hx_method_adaptive(hx_method method);
-int hx_jacobian_parse(const char *name, hx_jacobian *jacobian);
+int hx_jacobian_method_parse(const char *name, hx_jacobian_method *jacobian);
 int hx_linear_solver_parse(const char *name, hx_linear_solver *solver);
 const char *hx_linear_solver_name(hx_linear_solver solver);
 

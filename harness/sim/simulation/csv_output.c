@@ -43,25 +43,25 @@ void hx_csv_header(FILE *f, const hx_dynamics *d)
     fprintf(f, ",energy,dissipated,phi,phidot\n");
 }
 
-int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, const hx_energy *energy,
-               const hx_energy *energy0)
+int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+               const hx_energy *energy, const hx_energy *energy0)
 {
     const hx_model *m = d->m;
     double *ydot = malloc(sizeof(double) * (size_t)d->n);
-    if (ydot == NULL || hx_dynamics_rhs(d, t, y, ydot) != 0) {
+    if (ydot == NULL || hx_dynamics_rhs(d, dd, t, y, ydot) != 0) {
         free(ydot);
         return -1;
     }
     free(ydot);
     double phi, phidot;
-    if (hx_constraints_residuals(d, t, y, &phi, &phidot) != 0)
+    if (hx_constraints_residuals(d, dd, t, y, &phi, &phidot) != 0)
         return -1;
     fprintf(f, "%.10g", t);
     for (int k = 0; k < m->nbodies; ++k) {
         const hx_body_dof *dof = &d->dof[k];
         const double *u = y + d->nq + dof->u;
         if (dof->kind == HX_DOF_FREE) {
-            const hx_frame *fr = &d->frames.bodies[k];
+            const hx_frame *fr = &dd->frames.bodies[k];
             for (int j = 0; j < 7; ++j)
                 fprintf(f, ",%.12g", y[dof->q + j]);
             fprintf(f, ",%.12g,%.12g,%.12g,%.12g,%.12g,%.12g", u[0], u[1], u[2], fr->w[0],
@@ -72,21 +72,21 @@ int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, const hx_ener
     }
     for (int k = 0; k < m->ncouplers; ++k) {
         const hx_coupler *c = &m->couplers[k];
-        const double lambda = d->lambda[k];
+        const double lambda = dd->lambda[k];
         fprintf(f, ",%.15g", lambda);
         for (int j = 0; j < c->njoints; ++j)
-            fprintf(f, ",%.15g", hx_constraints_coupler_force(d, t, y, k, j));
+            fprintf(f, ",%.15g", hx_constraints_coupler_force(d, dd, t, y, k, j));
     }
     for (int k = 0; k < m->nforces; ++k) {
         double disp[6], velo[6];
-        hx_force_deformation(&d->frames, k, disp, velo);
+        hx_force_deformation(&dd->frames, k, disp, velo);
         for (int j = 0; j < 6; ++j)
             fprintf(f, ",%.12g", disp[j]);
         for (int j = 0; j < 6; ++j)
-            fprintf(f, ",%.12g", d->element_load[6 * k + j]);
+            fprintf(f, ",%.12g", dd->element_load[6 * k + j]);
     }
-    hx_stateeqns_csv_row(f, d, y);
-    if (hx_routines_csv_row(f, d, y) != 0)
+    hx_stateeqns_csv_row(f, d, dd, y);
+    if (hx_routines_csv_row(f, d, dd, y) != 0)
         return -1;
     fprintf(f, ",%.15g,%.15g,%.3g,%.3g\n", energy->total, hx_dissipated(energy, energy0), phi,
             phidot);

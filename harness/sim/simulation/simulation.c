@@ -9,27 +9,29 @@
 #include "base/clock.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraints.h"
-#include "sim/newton/newton_matrix.h"
+#include "sim/jacobian/jacobian.h"
 
 typedef struct run_context {
-    hx_dynamics *d;
+    const hx_dynamics *d;
+    hx_dynamics_data *dd;     /* the run's evaluations */
     const hx_simulation_options *opt;
     hx_simulation_result *result;
     double started, last_progress;
-    hx_newton_matrix *newton; /* BDF: its sparsity, and with analytic partials J */
+    hx_jacobian *jacobian;    /* BDF: its sparsity, and with analytic partials J */
 } run_context;
 
 static int rhs(void *ctx, double t, const double *y, double *ydot)
 {
-    return hx_dynamics_rhs(((run_context *)ctx)->d, t, y, ydot);
+    run_context *rc = ctx;
+    return hx_dynamics_rhs(rc->d, rc->dd, t, y, ydot);
 }
 
 static int project(void *ctx, double t, double *y)
 {
-    hx_dynamics *d = ((run_context *)ctx)->d;
-    if (hx_constraints_project(d, t, y) != 0)
+    run_context *rc = ctx;
+    if (hx_constraints_project(rc->d, rc->dd, t, y) != 0)
         return -1;
-    return d->m->ncouplers > 0 ? 1 : 0;
+    return rc->d->m->ncouplers > 0 ? 1 : 0;
 }
 
 static void advance(void *ctx, double *y, double h)
@@ -39,8 +41,7 @@ static void advance(void *ctx, double *y, double h)
 
 static int jacobian(void *ctx, double t, const double *y, const double *fy, double *values)
 {
-    (void)fy; /* the dynamics kept what it found at (t, y) */
-    return hx_newton_matrix_build(((run_context *)ctx)->newton, t, y, values);
+    return hx_jacobian_build(((run_context *)ctx)->jacobian, t, y, fy, values);
 }
 
 static int output_work(run_context *rc, double t, const double *y);
@@ -58,17 +59,18 @@ static int output(void *ctx, double t, const double *y)
 
 static int output_work(run_context *rc, double t, const double *y)
 {
-    hx_dynamics *d = rc->d;
+    const hx_dynamics *d = rc->d;
+    hx_dynamics_data *dd = rc->dd;
     hx_simulation_result *r = rc->result;
     if (!rc->opt->skip_energy || rc->opt->csv != NULL) {
-        const hx_energy e = hx_energy_of(d, t, y);
+        const hx_energy e = hx_energy_of(d, dd, t, y);
         r->energy_scale = fmax(r->energy_scale, fabs(e.kinetic));
         r->energy_error_max = fmax(r->energy_error_max, fabs(e.total - r->energy0.total));
         r->balance_error_max = fmax(r->balance_error_max, fabs(e.balance - r->energy0.balance));
-        if (rc->opt->csv != NULL && hx_csv_row(rc->opt->csv, d, t, y, &e, &r->energy0) != 0)
+        if (rc->opt->csv != NULL && hx_csv_row(rc->opt->csv, d, dd, t, y, &e, &r->energy0) != 0)
             return 1;
     }
-    if (rc->opt->observer != NULL && rc->opt->observer(rc->opt->observer_ctx, d, t, y) != 0)
+    if (rc->opt->observer != NULL && rc->opt->observer(rc->opt->observer_ctx, d, dd, t, y) != 0)
         return 1;
     if (rc->opt->progress) {
         const double wall = hx_seconds();
@@ -83,76 +85,89 @@ static int output_work(run_context *rc, double t, const double *y)
     return 0;
 }
 
-int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
-                hx_simulation_result *result)
+/* The run's work once its data is set up; the caller frees both. */
+static int simulate(run_context *rc, double *y, double *y_end)
 {
-    memset(result, 0, sizeof *result);
-    result->n = d->n;
-    double *y = malloc(sizeof(double) * (size_t)d->n);
-    if (y == NULL) {
-        snprintf(result->message, sizeof result->message, "out of memory");
-        return -1;
-    }
-    d->failed = 0;
-    if (hx_dynamics_initial_state(d, y) != 0) {
-        snprintf(result->message, sizeof result->message, "%s", d->message);
+    const hx_dynamics *d = rc->d;
+    hx_dynamics_data *dd = rc->dd;
+    const hx_simulation_options *opt = rc->opt;
+    hx_simulation_result *result = rc->result;
+    if (hx_dynamics_initial_state(d, dd, y) != 0) {
+        snprintf(result->message, sizeof result->message, "%s", dd->message);
         result->status = HX_INTEGRATION_FAILED;
-        free(y);
         return -1;
     }
-    result->energy0 = hx_energy_of(d, 0.0, y);
+    result->energy0 = hx_energy_of(d, dd, 0.0, y);
     result->energy_scale = fmax(fabs(result->energy0.total), fabs(result->energy0.kinetic));
-    run_context rc = {d, opt, result, hx_seconds(), hx_seconds(), NULL};
-    hx_newton_matrix newton;
     const int bdf = opt->integration.method == HX_METHOD_BDF;
     const int analytic = bdf && opt->integration.jacobian == HX_JACOBIAN_ANALYTIC;
-    if (bdf) {
-        hx_message msg;
-        if (hx_newton_matrix_init(&newton, d, &msg) != 0) {
-            snprintf(result->message, sizeof result->message, "%s", msg.text);
-            result->status = HX_INTEGRATION_FAILED;
-            free(y);
-            return -1;
-        }
-        rc.newton = &newton;
-    }
     if (opt->csv != NULL) {
         hx_csv_header(opt->csv, d);
-        hx_csv_row(opt->csv, d, 0.0, y, &result->energy0, &result->energy0);
+        hx_csv_row(opt->csv, d, dd, 0.0, y, &result->energy0, &result->energy0);
     }
     if (opt->observer != NULL)
-        opt->observer(opt->observer_ctx, d, 0.0, y);
-    hx_ode ode = {d->n, d->nq, d->nu, 2 /* the work accumulators */, rhs, project, advance, &rc, analytic ? jacobian : NULL,
-                  bdf ? &newton.pattern : NULL};
+        opt->observer(opt->observer_ctx, d, dd, 0.0, y);
+    hx_ode ode = {d->n, d->nq, d->nu, 2 /* the work accumulators */, rhs, project, advance, rc,
+                  analytic ? jacobian : NULL, bdf ? &rc->jacobian->pattern : NULL};
     hx_integrator_options io = opt->integration;
     io.output = output;
     const double start = hx_seconds();
     result->status = hx_integrate(&ode, 0.0, y, &io, &result->stats);
     result->seconds = hx_seconds() - start;
     if (bdf) {
-        result->stats.partial_calls = newton.partial_calls;
-        result->stats.evaluations += newton.evaluations;
-        result->newton_outside = newton.outside;
+        result->stats.partial_calls = rc->jacobian->partial_calls;
+        result->stats.evaluations += rc->jacobian->evaluations;
+        result->jacobian_outside = rc->jacobian->outside;
         if (analytic)
-            hx_newton_matrix_describe(&newton, result->newton_matrix,
-                                      sizeof result->newton_matrix);
-        hx_newton_matrix_free(&newton);
+            hx_jacobian_describe(rc->jacobian, result->jacobian, sizeof result->jacobian);
     }
     if (opt->progress && result->seconds >= 1.0)
         fprintf(stderr, "\n");
-    result->energy_end = hx_energy_of(d, result->stats.t_reached, y);
-    result->dissipated = hx_dissipated(&result->energy_end, &result->energy0);
-    result->max_phi = d->max_phi;
-    result->max_phidot = d->max_phidot;
-    if (d->failed)
-        snprintf(result->message, sizeof result->message, "%s", d->message);
+    /* a failure's reason: the run's evaluation's, or the Jacobian's */
+    const hx_dynamics_data *failed = dd->failed ? dd
+                                     : bdf && rc->jacobian->dd.failed ? &rc->jacobian->dd
+                                                                      : NULL;
+    if (failed != NULL)
+        snprintf(result->message, sizeof result->message, "%s", failed->message);
     else if (result->status != HX_INTEGRATION_OK)
         snprintf(result->message, sizeof result->message, "integration %s at t = %.6g",
                  hx_status_text(result->status), result->stats.t_reached);
+    result->energy_end = hx_energy_of(d, dd, result->stats.t_reached, y);
+    result->dissipated = hx_dissipated(&result->energy_end, &result->energy0);
+    result->max_phi = dd->max_phi;
+    result->max_phidot = dd->max_phidot;
     if (y_end != NULL)
         memcpy(y_end, y, sizeof(double) * (size_t)d->n);
-    free(y);
     return result->status == HX_INTEGRATION_OK ? 0 : -1;
+}
+
+int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
+                hx_simulation_result *result)
+{
+    memset(result, 0, sizeof *result);
+    result->n = d->n;
+    hx_dynamics_data dd;
+    hx_jacobian jac;
+    hx_message msg;
+    memset(&jac, 0, sizeof jac);
+    double *y = malloc(sizeof(double) * (size_t)d->n);
+    int status = -1;
+    if (y == NULL) {
+        snprintf(result->message, sizeof result->message, "out of memory");
+        return -1;
+    }
+    if (hx_dynamics_data_init(&dd, d, &msg) != 0 ||
+        (opt->integration.method == HX_METHOD_BDF && hx_jacobian_init(&jac, d, &msg) != 0)) {
+        snprintf(result->message, sizeof result->message, "%s", msg.text);
+        result->status = HX_INTEGRATION_FAILED;
+    } else {
+        run_context rc = {d, &dd, opt, result, hx_seconds(), hx_seconds(), &jac};
+        status = simulate(&rc, y, y_end);
+    }
+    hx_jacobian_free(&jac);
+    hx_dynamics_data_free(&dd);
+    free(y);
+    return status;
 }
 
 /* Newton iterations and Jacobians per step, and what the Newton matrix cost. */
@@ -173,11 +188,11 @@ static void bdf_summary(FILE *f, const hx_simulation_options *opt, const hx_simu
                                                  : "auto: a model this small",
             st->nonzeros, r->n, r->n, st->jacobian_seconds);
     if (opt->integration.jacobian == HX_JACOBIAN_FD)
-        fprintf(f, "  Newton matrix by differences of the right-hand side in %d column groups: %ld"
+        fprintf(f, "  Jacobian by differences of the right-hand side in %d column groups: %ld"
                 " of the %ld right-hand sides\n", st->column_groups, st->fd_jacobian_evaluations,
                 st->evaluations);
     else
-        fprintf(f, "  %s\n  its cost: %ld element calls for partials\n", r->newton_matrix,
+        fprintf(f, "  %s\n  its cost: %ld element calls for partials\n", r->jacobian,
                 st->partial_calls);
 }
 

@@ -1,12 +1,13 @@
 /*
  * One simulation of a session's model: the dynamics integrated by the chosen
- * method (BDF with its Newton matrix from the elements' partials,
- * newton_matrix.h, unless differences are asked for), CSV rows at the output
- * times, and a summary (steps, evaluations, Newton iterations, run time,
- * constraint residuals, energy error and the elements' dissipation).
+ * method (BDF with its Jacobian from the elements' partials,
+ * sim/jacobian/jacobian.h, unless differences are asked for), CSV rows at the
+ * output times, and a summary (steps, evaluations, Newton iterations, run
+ * time, constraint residuals, energy error and the elements' dissipation).
+ * The run evaluates the dynamics on a data of its own.
  */
-#ifndef HX_SIMULATION_H
-#define HX_SIMULATION_H
+#ifndef HX_SIM_SIMULATION_SIMULATION_H
+#define HX_SIM_SIMULATION_SIMULATION_H
 
 #include <stdio.h>
 
@@ -14,8 +15,10 @@
 #include "sim/dynamics/energy.h"
 #include "sim/ode/integrator.h"
 
-/* Called at each output time after the CSV row; non-zero stops the run. */
-typedef int hx_observer_fn(void *ctx, hx_dynamics *d, double t, const double *y);
+/* Called at each output time after the CSV row, with the run's data (its
+ * kinematics at (t, y)); non-zero stops the run. */
+typedef int hx_observer_fn(void *ctx, const hx_dynamics *d, hx_dynamics_data *dd, double t,
+                           const double *y);
 
 typedef struct hx_simulation_options {
     hx_integrator_options integration;
@@ -38,25 +41,25 @@ typedef struct hx_simulation_result {
     double energy_scale;      /* max(|E(0)|, largest kinetic energy): relative errors use it */
     double dissipated;        /* energy the force elements took out by the end */
     double max_phi, max_phidot;
-    char newton_matrix[1024]; /* BDF with analytic partials: where they came from */
-    long newton_outside;      /* entries the Newton matrix found outside its sparsity (0) */
+    char jacobian[1024];      /* BDF with analytic partials: where they came from */
+    long jacobian_outside;    /* entries the Jacobian found outside its sparsity (0) */
     int n;                    /* the state's size */
     char message[1024];
 } hx_simulation_result;
 
 /* Integrates from the model's initial state; y_end (may be NULL) receives
  * the final state (d->n values). */
-int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
+int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
                 hx_simulation_result *result);
 
 /* Prints the summary lines of a result. */
 void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_options *opt,
                            const hx_simulation_result *result);
 
-/* The CSV header and one row of a state (re-evaluating the right-hand side at
- * that state, so that multipliers and element loads belong to it). */
+/* The CSV header and one row of a state (evaluating the dynamics there on
+ * dd, so that multipliers and element loads belong to it). */
 void hx_csv_header(FILE *f, const hx_dynamics *d);
-int hx_csv_row(FILE *f, hx_dynamics *d, double t, const double *y, const hx_energy *energy,
-               const hx_energy *energy0);
+int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+               const hx_energy *energy, const hx_energy *energy0);
 
 #endif

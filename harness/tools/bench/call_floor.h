@@ -6,8 +6,8 @@
  * for its state). An entry's ratio to its floor says how much of its cost is
  * its own arithmetic.
  */
-#ifndef HX_CALL_FLOOR_H
-#define HX_CALL_FLOOR_H
+#ifndef HX_TOOLS_BENCH_CALL_FLOOR_H
+#define HX_TOOLS_BENCH_CALL_FLOOR_H
 
 #include "base/message.h"
 #include "host/call.h"

@@ -8,6 +8,7 @@
 #include <string.h>
 #include "base/clock.h"
 
+#include "host/invoke.h"
 #include "host/state_inputs.h"
 #include "frames/measures.h"
 #include "tools/bench/call_floor.h"
@@ -141,8 +142,8 @@ static state_bench *state_points(hx_session *s, hx_binding *b, int which)
     state_bench *sb = calloc(1, sizeof *sb + sizeof(double) * size);
     if (sb == NULL)
         return NULL;
-    *sb = (state_bench){which == 0 ? b->yfosub : NULL,
-                        which > 0 ? b->state_partial[which - 1] : NULL, b->id, b->npar, ns, ni,
+    *sb = (state_bench){which == 0 ? b->fn.stateeqn.rates : NULL,
+                        which > 0 ? b->fn.stateeqn.partial[which - 1] : NULL, b->id, b->npar, ns, ni,
                         b->par, 0.0};
     double *input = sb->data + SAMPLE_POINTS * ns;
     hx_stateeqn_inputs(&s->frames, b->index, input);
@@ -271,7 +272,7 @@ int hx_measure_entry_costs_with(hx_session *s, int repeats, hx_entry_cost *costs
     pin_to_this_cpu();
     for (int k = 0; k < s->bindings.count; ++k) {
         hx_binding *b = &s->bindings.items[k];
-        if (b->kind >= HX_BIND_REQSUB || b->record != NULL)
+        if (b->kind >= HX_BIND_REQUEST || b->record != NULL)
             continue; /* timed through their classic forms' calls only */
         if (b->kind == HX_BIND_COUPLER) {
             const hx_coupler *c = &s->model->couplers[b->index];
@@ -280,7 +281,7 @@ int hx_measure_entry_costs_with(hx_session *s, int repeats, hx_entry_cost *costs
                 if (cb == NULL)
                     goto out_of_memory;
                 cb->id = b->id, cb->npar = b->npar, cb->ndisp = c->njoints, cb->par = b->par;
-                cb->fn = b->coupler[fn];
+                cb->fn = b->fn.coupler[fn];
                 coupler_points(s, b, c->njoints, cb);
                 contexts[ncontexts++] = cb;
                 replay_of[rows] = -1;
@@ -292,20 +293,20 @@ int hx_measure_entry_costs_with(hx_session *s, int repeats, hx_entry_cost *costs
                 r->force_index = -1;
                 r->in_rhs = 1;
             }
-        } else if (b->kind == HX_BIND_GFOSUB && rows < capacity) {
+        } else if (b->kind == HX_BIND_FORCE && rows < capacity) {
             hx_call dep, *eval = calloc(1, sizeof *eval);
             if (eval == NULL)
                 goto out_of_memory;
             contexts[ncontexts++] = eval;
             double out[6];
             hx_binding_call_init(b, &dep, 0, &s->frames, 1);
-            hx_invoke_gfosub(b, &s->frames, 0, 1, out, &dep);
+            hx_invoke_force(b, &s->frames, 0, 1, out, &dep);
             hx_binding_call_init(b, eval, 0, &s->frames, 0);
-            hx_invoke_gfosub(b, &s->frames, 0, 0, out, eval);
+            hx_invoke_force(b, &s->frames, 0, 0, out, eval);
             gfosub_bench *gb = calloc(1, sizeof *gb);
             if (gb == NULL)
                 goto out_of_memory;
-            *gb = (gfosub_bench){b->gfosub, eval, b->id, b->npar, b->par, {0}, 0.0};
+            *gb = (gfosub_bench){b->fn.force, eval, b->id, b->npar, b->par, {0}, 0.0};
             contexts[ncontexts++] = gb;
             if (replays != NULL) {
                 hx_host_replay_init(&replays[nreplays], eval);
@@ -321,11 +322,11 @@ int hx_measure_entry_costs_with(hx_session *s, int repeats, hx_entry_cost *costs
             r->host_calls = eval->host_calls;
             r->force_index = b->index;
             r->in_rhs = 1;
-        } else if (b->kind == HX_BIND_FIESUB && rows < capacity) {
+        } else if (b->kind == HX_BIND_FIELD && rows < capacity) {
             fiesub_bench *fb = calloc(1, sizeof *fb);
             if (fb == NULL)
                 goto out_of_memory;
-            fb->fn = b->fiesub, fb->id = b->id, fb->npar = b->npar, fb->par = b->par;
+            fb->fn = b->fn.field, fb->id = b->id, fb->npar = b->npar, fb->par = b->par;
             field_points(s, b, fb);
             contexts[ncontexts++] = fb;
             replay_of[rows] = -1;
@@ -336,11 +337,11 @@ int hx_measure_entry_costs_with(hx_session *s, int repeats, hx_entry_cost *costs
             r->host_calls = r->dependency_calls = 0;
             r->force_index = b->index;
             r->in_rhs = 1;
-        } else if (b->kind == HX_BIND_YFOSUB) {
+        } else if (b->kind == HX_BIND_STATEEQN) {
             for (int which = 0; which < 5 && rows < capacity; ++which) {
-                state_bench *sb = which == 0 || b->state_partial[which - 1] != NULL
+                state_bench *sb = which == 0 || b->fn.stateeqn.partial[which - 1] != NULL
                                       ? state_points(s, b, which) : NULL;
-                if (sb == NULL && (which == 0 || b->state_partial[which - 1] != NULL))
+                if (sb == NULL && (which == 0 || b->fn.stateeqn.partial[which - 1] != NULL))
                     goto out_of_memory;
                 if (sb == NULL)
                     continue; /* a partial routine the library does not export */

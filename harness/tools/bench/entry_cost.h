@@ -4,12 +4,12 @@
  * median over rounds of timed batches (one batch per entry per round), with
  * the host calls one evaluation makes.
  */
-#ifndef HX_CALL_COST_H
-#define HX_CALL_COST_H
+#ifndef HX_TOOLS_BENCH_ENTRY_COST_H
+#define HX_TOOLS_BENCH_ENTRY_COST_H
 
 #include <stdio.h>
 
-#include "host/session.h"
+#include "session/session.h"
 
 typedef struct hx_entry_cost {
     char element[64];

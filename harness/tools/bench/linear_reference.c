@@ -60,12 +60,12 @@ static void state_at(const hx_linear_reference *r, const double *z, const double
 
 /* Generalized accelerations along the directions (mass-weighted), and the
  * largest acceleration off them. */
-static int accelerations(hx_dynamics *d, const hx_linear_reference *r, const double *mass,
-                         const double *z, const double *rate, double *y, double *ydot, double *g,
-                         double *off)
+static int accelerations(const hx_dynamics *d, hx_dynamics_data *dd,
+                         const hx_linear_reference *r, const double *mass, const double *z,
+                         const double *rate, double *y, double *ydot, double *g, double *off)
 {
     state_at(r, z, rate, y);
-    if (hx_dynamics_rhs(d, 0.0, y, ydot) != 0)
+    if (hx_dynamics_rhs(d, dd, 0.0, y, ydot) != 0)
         return -1;
     const int m = r->nq + r->nu;
     const double *a = ydot + r->nq;
@@ -89,7 +89,9 @@ static int accelerations(hx_dynamics *d, const hx_linear_reference *r, const dou
     return 0;
 }
 
-int hx_linear_reference_build(hx_dynamics *d, hx_linear_reference *r, hx_message *msg)
+/* hx_linear_reference_build's work on an evaluation's data of its own. */
+static int build(const hx_dynamics *d, hx_dynamics_data *dd, hx_linear_reference *r,
+                 hx_message *msg)
 {
     memset(r, 0, sizeof *r);
     const hx_model *mo = d->m;
@@ -107,8 +109,8 @@ int hx_linear_reference_build(hx_dynamics *d, hx_linear_reference *r, hx_message
     double *y = calloc((size_t)r->n, sizeof(double)), *ydot = calloc((size_t)r->n, sizeof(double));
     double *g0 = calloc(4 * HX_REFERENCE_MODES, sizeof(double));
     int status = r->y0 && r->direction && mass && y && ydot && g0 ? 0 : hx_fail(msg, "out of memory");
-    if (status == 0 && hx_dynamics_initial_state(d, r->y0) != 0)
-        status = hx_fail(msg, "%s", d->message);
+    if (status == 0 && hx_dynamics_initial_state(d, dd, r->y0) != 0)
+        status = hx_fail(msg, "%s", dd->message);
     for (int b = 0; status == 0 && b < mo->nbodies; ++b) { /* the mass of each velocity */
         const hx_body_dof *dof = &d->dof[b];
         if (dof->kind == HX_DOF_FREE)
@@ -153,8 +155,8 @@ int hx_linear_reference_build(hx_dynamics *d, hx_linear_reference *r, hx_message
     double *z = g0 + HX_REFERENCE_MODES, *rate = z + HX_REFERENCE_MODES, *g = rate + HX_REFERENCE_MODES;
     double off = 0.0, worst_off = 0.0, scale = 0.0;
     const int modes = r->modes;
-    if (status == 0 && accelerations(d, r, mass, z, rate, y, ydot, g0, &off) != 0)
-        status = hx_fail(msg, "%s", d->message);
+    if (status == 0 && accelerations(d, dd, r, mass, z, rate, y, ydot, g0, &off) != 0)
+        status = hx_fail(msg, "%s", dd->message);
     for (int k = 0; k < modes; ++k)
         r->f[k] = g0[k], scale = fmax(scale, fabs(g0[k]));
     worst_off = off;
@@ -164,8 +166,8 @@ int hx_linear_reference_build(hx_dynamics *d, hx_linear_reference *r, hx_message
             memset(z, 0, sizeof(double) * HX_REFERENCE_MODES);
             memset(rate, 0, sizeof(double) * HX_REFERENCE_MODES);
             (kind == 0 ? z : rate)[l] = step;
-            if (accelerations(d, r, mass, z, rate, y, ydot, g, &off) != 0) {
-                status = hx_fail(msg, "%s", d->message);
+            if (accelerations(d, dd, r, mass, z, rate, y, ydot, g, &off) != 0) {
+                status = hx_fail(msg, "%s", dd->message);
                 break;
             }
             worst_off = fmax(worst_off, off);
@@ -185,8 +187,8 @@ int hx_linear_reference_build(hx_dynamics *d, hx_linear_reference *r, hx_message
     if (status == 0) {
         for (int k = 0; k < modes; ++k)
             z[k] = 1000.0 * step * (k + 1), rate[k] = -700.0 * step * (k + 1);
-        if (accelerations(d, r, mass, z, rate, y, ydot, g, &off) != 0)
-            status = hx_fail(msg, "%s", d->message);
+        if (accelerations(d, dd, r, mass, z, rate, y, ydot, g, &off) != 0)
+            status = hx_fail(msg, "%s", dd->message);
         for (int k = 0; status == 0 && k < modes; ++k) {
             const double predicted = r->f[k] - r->k[k] * z[k] - r->c[k] * rate[k];
             const double size = fabs(r->f[k]) + fabs(r->k[k] * z[k]) + fabs(r->c[k] * rate[k]);
@@ -200,6 +202,16 @@ int hx_linear_reference_build(hx_dynamics *d, hx_linear_reference *r, hx_message
     free(g0);
     if (status != 0)
         hx_linear_reference_free(r);
+    return status;
+}
+
+int hx_linear_reference_build(const hx_dynamics *d, hx_linear_reference *r, hx_message *msg)
+{
+    hx_dynamics_data dd;
+    if (hx_dynamics_data_init(&dd, d, msg) != 0)
+        return -1;
+    const int status = build(d, &dd, r, msg);
+    hx_dynamics_data_free(&dd);
     return status;
 }
 

@@ -7,8 +7,8 @@
  * decoupled and linear, and solved in closed form. Anything else is not
  * such a model, and the caller falls back to a numerical reference.
  */
-#ifndef HX_LINEAR_REFERENCE_H
-#define HX_LINEAR_REFERENCE_H
+#ifndef HX_TOOLS_BENCH_LINEAR_REFERENCE_H
+#define HX_TOOLS_BENCH_LINEAR_REFERENCE_H
 
 #include "sim/dynamics/dynamics.h"
 
@@ -25,7 +25,7 @@ typedef struct hx_linear_reference {
 
 /* Builds the reference of d's model from its initial state. Returns 0, or -1
  * with msg saying why the model has no closed form here. */
-int hx_linear_reference_build(hx_dynamics *d, hx_linear_reference *r, hx_message *msg);
+int hx_linear_reference_build(const hx_dynamics *d, hx_linear_reference *r, hx_message *msg);
 void hx_linear_reference_free(hx_linear_reference *r);
 
 /* The reference state at t: positions and velocities (the other components

@@ -16,12 +16,13 @@ typedef struct energy_trace {
     int count;
 } energy_trace;
 
-static int observe(void *ctx, hx_dynamics *d, double t, const double *y)
+static int observe(void *ctx, const hx_dynamics *d, hx_dynamics_data *dd, double t,
+                   const double *y)
 {
     energy_trace *tr = ctx;
     if (tr->count > SAMPLES)
         return 0;
-    const hx_energy e = hx_energy_of(d, t, y);
+    const hx_energy e = hx_energy_of(d, dd, t, y);
     if (tr->count == 0)
         tr->e0 = e.total;
     tr->kinetic_max = fmax(tr->kinetic_max, fabs(e.kinetic));

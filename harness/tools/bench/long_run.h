@@ -4,13 +4,13 @@
  * and the largest constraint residuals. A symplectic method keeps the energy
  * error of a conservative model bounded; RK4 lets it drift slowly.
  */
-#ifndef HX_LONG_RUN_H
-#define HX_LONG_RUN_H
+#ifndef HX_TOOLS_BENCH_LONG_RUN_H
+#define HX_TOOLS_BENCH_LONG_RUN_H
 
 #include <stdio.h>
 
 #include "sim/ode/integrator.h"
-#include "host/session.h"
+#include "session/session.h"
 
 typedef struct hx_long_run {
     hx_method method;

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host/invoke.h"
 #include "host/state_inputs.h"
 #include "sim/dynamics/stateeqns.h"
 #include "frames/measures.h"
@@ -71,15 +72,13 @@ static void STDCALL standin_yfosub(int *id, double *time, double *par, int *npar
 
 /* The real entries and USER list of a binding, kept while stand-ins run. */
 typedef struct saved_entries {
-    usrsub_coupler_fn *coupler[3];
-    usrsub_gfosub_fn *gfosub;
-    usrsub_fiesub_fn *fiesub;
-    usrsub_yfosub_fn *yfosub;
+    hx_binding_functions fn;
     double *par;
 } saved_entries;
 
 /* A Force_StateEqn's rates and outputs at d's state, states from y, into out. */
-static int record_stateeqn(hx_dynamics *d, hx_binding *b, const double *y, double *out)
+static int record_stateeqn(const hx_dynamics *d, const hx_dynamics_data *dd, hx_binding *b,
+                           const double *y, double *out)
 {
     const hx_stateeqn *f = &d->m->stateeqns[b->index];
     if (f->nstate + 6 > 81)
@@ -88,17 +87,18 @@ static int record_stateeqn(hx_dynamics *d, hx_binding *b, const double *y, doubl
     if (work == NULL)
         return -1;
     memcpy(work, y + d->stateeqns->offset[b->index], sizeof(double) * (size_t)f->nstate);
-    hx_stateeqn_inputs(&d->frames, b->index, work + f->nstate);
-    hx_invoke_yfosub(b, &d->frames, work, work + f->nstate, 0, 0, out, out + f->nstate, NULL);
+    hx_stateeqn_inputs(&dd->frames, b->index, work + f->nstate);
+    hx_invoke_stateeqn(b, &dd->frames, work, work + f->nstate, 0, 0, out, out + f->nstate, NULL);
     free(work);
     return 0;
 }
 
 /* One stand-in per binding, recording each entry's outputs at the state of y. */
-static int record_standins(hx_session *s, hx_dynamics *d, const double *y, standin **records)
+static int record_standins(hx_session *s, const hx_dynamics *d, hx_dynamics_data *dd,
+                           const double *y, standin **records)
 {
     double *ydot = calloc((size_t)d->n, sizeof(double));
-    if (ydot == NULL || hx_dynamics_rhs(d, 0.0, y, ydot) != 0) { /* d->frames is y's */
+    if (ydot == NULL || hx_dynamics_rhs(d, dd, 0.0, y, ydot) != 0) { /* dd->frames is y's */
         free(ydot);
         return -1;
     }
@@ -114,19 +114,19 @@ static int record_standins(hx_session *s, hx_dynamics *d, const double *y, stand
             const hx_coupler *c = &s->model->couplers[b->index];
             double disp[3];
             for (int i = 0; i < c->njoints; ++i)
-                disp[i] = hx_joint_coordinate(&d->frames, c->joint[i]);
+                disp[i] = hx_joint_coordinate(&dd->frames, c->joint[i]);
             for (int which = 0; which < 3; ++which)
-                hx_invoke_coupler(b, which, &d->frames, disp, c->njoints, 0, st->out[which], NULL);
-        } else if (b->kind == HX_BIND_GFOSUB) {
+                hx_invoke_coupler(b, which, &dd->frames, disp, c->njoints, 0, st->out[which], NULL);
+        } else if (b->kind == HX_BIND_FORCE) {
             st->values = hx_force_routine_values(b->part);
-            hx_invoke_gfosub(b, &d->frames, 0, 0, st->out[0], NULL);
-        } else if (b->kind == HX_BIND_YFOSUB) {
-            if (record_stateeqn(d, b, y, st->out[0]) != 0)
+            hx_invoke_force(b, &dd->frames, 0, 0, st->out[0], NULL);
+        } else if (b->kind == HX_BIND_STATEEQN) {
+            if (record_stateeqn(d, dd, b, y, st->out[0]) != 0)
                 return -1;
         } else {
             double disp[6], velo[6];
-            hx_force_deformation(&d->frames, b->index, disp, velo);
-            hx_invoke_fiesub(b, &d->frames, disp, velo, 0, 0, st->out[0], st->out[0] + 6,
+            hx_force_deformation(&dd->frames, b->index, disp, velo);
+            hx_invoke_field(b, &dd->frames, disp, velo, 0, 0, st->out[0], st->out[0] + 6,
                            st->out[0] + 42, NULL);
         }
     }
@@ -137,17 +137,16 @@ static void swap_in_standins(hx_session *s, standin **records, saved_entries *sa
 {
     for (int k = 0; k < s->bindings.count; ++k) {
         hx_binding *b = &s->bindings.items[k];
-        saved[k] = (saved_entries){{b->coupler[0], b->coupler[1], b->coupler[2]}, b->gfosub,
-                                   b->fiesub, b->yfosub, b->par};
+        saved[k] = (saved_entries){b->fn, b->par};
         b->par = records[k]->par;
         if (b->kind == HX_BIND_COUPLER)
-            memcpy(b->coupler, standin_coupler, sizeof b->coupler);
-        else if (b->kind == HX_BIND_GFOSUB)
-            b->gfosub = standin_gfosub;
-        else if (b->kind == HX_BIND_YFOSUB)
-            b->yfosub = standin_yfosub;
+            memcpy(b->fn.coupler, standin_coupler, sizeof b->fn.coupler);
+        else if (b->kind == HX_BIND_FORCE)
+            b->fn.force = standin_gfosub;
+        else if (b->kind == HX_BIND_STATEEQN)
+            b->fn.stateeqn.rates = standin_yfosub;
         else
-            b->fiesub = standin_fiesub;
+            b->fn.field = standin_fiesub;
     }
 }
 
@@ -155,10 +154,7 @@ static void restore_entries(hx_session *s, const saved_entries *saved)
 {
     for (int k = 0; k < s->bindings.count; ++k) {
         hx_binding *b = &s->bindings.items[k];
-        memcpy(b->coupler, saved[k].coupler, sizeof b->coupler);
-        b->gfosub = saved[k].gfosub;
-        b->fiesub = saved[k].fiesub;
-        b->yfosub = saved[k].yfosub;
+        b->fn = saved[k].fn;
         b->par = saved[k].par;
     }
 }
@@ -167,7 +163,8 @@ static void restore_entries(hx_session *s, const saved_entries *saved)
 
 typedef struct rhs_bench {
     hx_session *s;
-    hx_dynamics *d;
+    const hx_dynamics *d;
+    hx_dynamics_data *dd;
     double *y, *ydot;
     standin **records;     /* non-NULL: evaluate with the stand-ins */
     saved_entries *saved;
@@ -181,7 +178,7 @@ static void run_rhs(void *ctx, long calls)
         swap_in_standins(b->s, b->records, b->saved);
     double sink = 0.0;
     for (long k = 0; k < calls; ++k) {
-        hx_dynamics_rhs(b->d, 0.0, b->y, b->ydot);
+        hx_dynamics_rhs(b->d, b->dd, 0.0, b->y, b->ydot);
         sink += b->ydot[0];
     }
     if (b->records != NULL)
@@ -209,9 +206,9 @@ static void run_standins(void *ctx, long calls)
             if (bd->kind == HX_BIND_COUPLER)
                 for (int which = 0; which < 3; ++which)
                     standin_coupler[which](&id, &t, par, &npar, disp, &nd, &flag, out);
-            else if (bd->kind == HX_BIND_GFOSUB)
+            else if (bd->kind == HX_BIND_FORCE)
                 standin_gfosub(&id, &t, par, &npar, &flag, &flag, out);
-            else if (bd->kind == HX_BIND_YFOSUB) {
+            else if (bd->kind == HX_BIND_STATEEQN) {
                 const hx_stateeqn *f = &b->s->model->stateeqns[bd->index];
                 int ns = f->nstate, ni = 0, no = 6;
                 standin_yfosub(&id, &t, par, &npar, &flag, &flag, &ns, states, &ni, disp, &no,
@@ -230,7 +227,7 @@ int hx_rhs_cost_supported(const hx_session *s, hx_message *msg)
      * equation routines (and nothing else calls the library in a run) */
     for (int k = 0; k < s->bindings.count; ++k) {
         const hx_binding *b = &s->bindings.items[k];
-        if (b->kind >= HX_BIND_REQSUB || b->record != NULL)
+        if (b->kind >= HX_BIND_REQUEST || b->record != NULL)
             return hx_fail(msg, "%s %d (%s): bench splits the cost of force elements, couplers"
                            " and state equations in the classic form only", b->element, b->id,
                            hx_binding_routine(b, 0));
@@ -246,8 +243,13 @@ int hx_measure_rhs_cost(hx_session *s, int repeats, hx_entry_cost *costs, int ca
     if (hx_rhs_cost_supported(s, msg) != 0)
         return -1;
     hx_dynamics d;
+    hx_dynamics_data dd;
     if (hx_dynamics_init(&d, s, msg) != 0)
         return -1;
+    if (hx_dynamics_data_init(&dd, &d, msg) != 0) {
+        hx_dynamics_free(&d);
+        return -1;
+    }
     const int nb = s->bindings.count;
     double *y = calloc((size_t)d.n, sizeof(double)), *ydot = calloc((size_t)d.n, sizeof(double));
     double *rounds = calloc(5 * (size_t)repeats, sizeof(double));
@@ -255,12 +257,13 @@ int hx_measure_rhs_cost(hx_session *s, int repeats, hx_entry_cost *costs, int ca
     standin **records = calloc((size_t)nb + 1, sizeof *records);
     int status = y && ydot && rounds && saved && records ? 0 : hx_fail(msg, "out of memory");
     if (status == 0 &&
-        (hx_dynamics_initial_state(&d, y) != 0 || record_standins(s, &d, y, records) != 0))
-        status = hx_fail(msg, "the model's right-hand side failed: %s", d.message);
+        (hx_dynamics_initial_state(&d, &dd, y) != 0 ||
+         record_standins(s, &d, &dd, y, records) != 0))
+        status = hx_fail(msg, "the model's right-hand side failed: %s", dd.message);
     if (status == 0) {
         double *real = rounds, *replay = rounds + repeats, *alone_ns = rounds + 2 * repeats;
-        rhs_bench as_is = {s, &d, y, ydot, NULL, saved, 0.0};
-        rhs_bench replayed = {s, &d, y, ydot, records, saved, 0.0};
+        rhs_bench as_is = {s, &d, &dd, y, ydot, NULL, saved, 0.0};
+        rhs_bench replayed = {s, &d, &dd, y, ydot, records, saved, 0.0};
         standin_bench alone = {s, records, 0.0};
         hx_timed_body bodies[3] = {{run_rhs, &as_is, real},
                                    {run_rhs, &replayed, replay},
@@ -291,6 +294,7 @@ int hx_measure_rhs_cost(hx_session *s, int repeats, hx_entry_cost *costs, int ca
     free(ydot);
     free(rounds);
     free(saved);
+    hx_dynamics_data_free(&dd);
     hx_dynamics_free(&d);
     return status;
 }

@@ -8,8 +8,8 @@
  * evaluation (their host queries included, as in the cost per call). Taking both round by round lets a slow spell of the
  * machine cancel out.
  */
-#ifndef HX_RHS_COST_H
-#define HX_RHS_COST_H
+#ifndef HX_TOOLS_BENCH_RHS_COST_H
+#define HX_TOOLS_BENCH_RHS_COST_H
 
 #include "tools/bench/entry_cost.h"
 #include "sim/dynamics/dynamics.h"

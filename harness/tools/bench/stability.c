@@ -69,7 +69,8 @@ double hx_stable_step(hx_method method, double re, double im)
 /* ---- the fastest mode -------------------------------------------------------------- */
 
 typedef struct jv_context {
-    hx_dynamics *d;
+    const hx_dynamics *d;
+    hx_dynamics_data *dd;
     double t;
     const double *y;
     double *plus, *minus, *fplus, *fminus;
@@ -96,8 +97,8 @@ static int jacobian_times(jv_context *c, const double *v, double *out)
     for (int i = 0; i < m; ++i)
         c->plus[i] += eps * v[i], c->minus[i] -= eps * v[i];
     c->evaluations += 2;
-    if (hx_dynamics_rhs(c->d, c->t, c->plus, c->fplus) != 0 ||
-        hx_dynamics_rhs(c->d, c->t, c->minus, c->fminus) != 0)
+    if (hx_dynamics_rhs(c->d, c->dd, c->t, c->plus, c->fplus) != 0 ||
+        hx_dynamics_rhs(c->d, c->dd, c->t, c->minus, c->fminus) != 0)
         return -1;
     for (int i = 0; i < m; ++i)
         out[i] = (c->fplus[i] - c->fminus[i]) / (2.0 * eps);
@@ -121,17 +122,22 @@ static double normalize(double *v, int n)
     return norm;
 }
 
-int hx_estimate_stability(hx_dynamics *d, double t, const double *y, hx_stability *out,
+int hx_estimate_stability(const hx_dynamics *d, double t, const double *y, hx_stability *out,
                           hx_message *msg)
 {
     memset(out, 0, sizeof *out);
     /* the element states follow the velocities (dynamics.h): bristles that
      * slide fast are a model's fastest mode */
     const int n = d->n, m = d->nq + d->nu + d->nstates;
+    hx_dynamics_data dd;
+    if (hx_dynamics_data_init(&dd, d, msg) != 0)
+        return -1;
     double *work = calloc(4 * (size_t)n + 5 * (size_t)m + 8, sizeof(double));
-    if (work == NULL)
+    if (work == NULL) {
+        hx_dynamics_data_free(&dd);
         return hx_fail(msg, "out of memory");
-    jv_context c = {d, t, y, work, work + n, work + 2 * n, work + 3 * n, m, 0.0, 0};
+    }
+    jv_context c = {d, &dd, t, y, work, work + n, work + 2 * n, work + 3 * n, m, 0.0, 0};
     double *v = work + 4 * n, *w = v + m, *w2 = w + m, *q2 = w2 + m, *tmp = q2 + m;
     for (int i = 0; i < m; ++i)
         c.scale = fmax(c.scale, fabs(y[i]));
@@ -184,10 +190,13 @@ int hx_estimate_stability(hx_dynamics *d, double t, const double *y, hx_stabilit
             }
         }
     }
+    free(work);
     if (status != 0) {
-        free(work);
-        return hx_fail(msg, "the right-hand side failed while linearizing: %s", d->message);
+        hx_fail(msg, "the right-hand side failed while linearizing: %s", dd.message);
+        hx_dynamics_data_free(&dd);
+        return -1;
     }
+    hx_dynamics_data_free(&dd);
     out->magnitude = hypot(out->re, out->im);
     /* central differences are good to about 1e-6 of |lambda|: a real or an
      * imaginary part below that is their noise (an undamped mode must not
@@ -199,7 +208,6 @@ int hx_estimate_stability(hx_dynamics *d, double t, const double *y, hx_stabilit
     out->evaluations = c.evaluations;
     for (int k = 0; k < HX_METHOD_COUNT; ++k)
         out->max_step[k] = hx_stable_step((hx_method)k, out->re, out->im);
-    free(work);
     return 0;
 }
 

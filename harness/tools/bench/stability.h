@@ -6,8 +6,8 @@
  * method the largest fixed step h with h lambda inside its stability region
  * (BDF, A(alpha)-stable, has none: any step).
  */
-#ifndef HX_STABILITY_H
-#define HX_STABILITY_H
+#ifndef HX_TOOLS_BENCH_STABILITY_H
+#define HX_TOOLS_BENCH_STABILITY_H
 
 #include "sim/dynamics/dynamics.h"
 #include "sim/ode/integrator.h"
@@ -21,7 +21,7 @@ typedef struct hx_stability {
 
 /* Estimates at state y and time t. Returns 0, or -1 with msg (the
  * right-hand side failed). */
-int hx_estimate_stability(hx_dynamics *d, double t, const double *y, hx_stability *out,
+int hx_estimate_stability(const hx_dynamics *d, double t, const double *y, hx_stability *out,
                           hx_message *msg);
 
 /* Largest h with h lambda stable for the method (lambda = re + i im). */

@@ -148,10 +148,11 @@ typedef struct observed {
     double t_end;
 } observed;
 
-static int observe(void *ctx, hx_dynamics *d, double t, const double *y)
+static int observe(void *ctx, const hx_dynamics *d, hx_dynamics_data *dd, double t,
+                   const double *y)
 {
+    (void)d, (void)dd;
     observed *o = ctx;
-    (void)d;
     const int row = (int)lround(t / o->t_end * HX_WP_GRID);
     if (row < 0 || row > HX_WP_GRID)
         return 0;
@@ -340,9 +341,9 @@ int hx_work_precision(hx_session *s, const hx_wp_options *o, hx_wp_result *r,
         status = assign_outputs(&d, o, g.slow, msg);
         r->restricted = o->noutputs > 0;
     }
-    if (status == 0 && (hx_dynamics_initial_state(&d, y0) != 0 ||
+    if (status == 0 && (hx_dynamics_initial_y(&d, y0, msg) != 0 ||
                         hx_estimate_stability(&d, 0.0, y0, &r->stability, msg) != 0))
-        status = msg->text[0] ? -1 : hx_fail(msg, "%s", d.message);
+        status = -1;
     if (status == 0)
         status = build_reference(&d, o, &g, r, msg);
     if (status == 0) {

@@ -16,12 +16,12 @@
  * states of the bodies named (all bodies by default); the largest error over
  * all states (a fast mode's included) is kept beside them.
  */
-#ifndef HX_WORK_PRECISION_H
-#define HX_WORK_PRECISION_H
+#ifndef HX_TOOLS_BENCH_WORK_PRECISION_H
+#define HX_TOOLS_BENCH_WORK_PRECISION_H
 
 #include <stdio.h>
 
-#include "host/session.h"
+#include "session/session.h"
 #include "tools/bench/stability.h"
 
 #define HX_WP_MAX_POINTS 96

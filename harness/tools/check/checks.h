@@ -23,7 +23,7 @@
 
 #include <stdio.h>
 
-#include "host/session.h"
+#include "session/session.h"
 
 #define HX_DERIVATIVE_TOLERANCE_TEXT "1e-6"
 

@@ -10,6 +10,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "host/invoke.h"
 #include "base/finite.h"
 #include "base/linalg.h"
 #include "frames/measures.h"
@@ -22,14 +23,14 @@
 
 typedef struct coupler_sampler {
     hx_binding *b;
-    const hx_frames *s;
+    const hx_frames *frames;
     int n, which;
 } coupler_sampler;
 
 static int sample(void *ctx, const double *x, double *out)
 {
     const coupler_sampler *cs = ctx;
-    hx_invoke_coupler(cs->b, cs->which, cs->s, x, cs->n, 0, out, NULL);
+    hx_invoke_coupler(cs->b, cs->which, cs->frames, x, cs->n, 0, out, NULL);
     if (cs->b->messages != NULL && hx_messages_stopped(cs->b->messages))
         return -1;
     return hx_all_finite(out, cs->which == 0 ? 1 : cs->which == 1 ? cs->n : cs->n * cs->n) ? 0 : -1;

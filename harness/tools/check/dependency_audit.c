@@ -17,25 +17,26 @@
 #include <string.h>
 
 #include "base/vecmath.h"
-#include "host/evaluate.h"
-#include "sim/dynamics/element_probe.h"
+#include "host/invoke.h"
+#include "host/element_call.h"
+#include "sim/dynamics/element_at.h"
 #include "frames/measures.h"
 #include "tools/check/checks.h"
 #include "tools/check/element_samples.h"
 
 #define MAX_OUT 8
 
-static int outputs_at(hx_binding *b, const hx_frames *s, hx_call *call, double out[MAX_OUT])
+static int outputs_at(hx_binding *b, const hx_frames *fr, hx_call *call, double out[MAX_OUT])
 {
     hx_call local;
     if (call == NULL) {
-        hx_binding_call_init(b, &local, 0, s, 0);
+        hx_binding_call_init(b, &local, 0, fr, 0);
         call = &local;
     }
-    if (b->kind == HX_BIND_GFOSUB)
-        hx_invoke_gfosub(b, s, 0, 0, out, call);
+    if (b->kind == HX_BIND_FORCE)
+        hx_invoke_force(b, fr, 0, 0, out, call);
     else
-        hx_invoke_routine(b, s, 0, 0, out, call);
+        hx_invoke_routine(b, fr, 0, 0, out, call);
     return hx_messages_stopped(b->messages) ? -1 : 0;
 }
 
@@ -101,7 +102,7 @@ static void report_unrepeatable(const audit *a, const double *first, const doubl
     int k = 0;
     while (k < a->nout - 1 && memcmp(&first[k], &second[k], sizeof first[k]) == 0)
         ++k;
-    if (a->b->kind != HX_BIND_GFOSUB) {
+    if (a->b->kind != HX_BIND_FORCE) {
         fprintf(a->out, "  %s %d: FAIL: two calls in a row at the same state and time t = %.9g"
                 " return output %d = %.17g, then %.17g: %s\n", a->b->element, a->b->id,
                 a->base.time, k + 1, first[k], second[k], consequence);
@@ -230,7 +231,7 @@ static void place_sample(audit *a, int sample, double scale[12])
 {
     hx_session *s = a->s;
     const hx_model *m = s->model;
-    if (a->b->kind != HX_BIND_GFOSUB) {
+    if (a->b->kind != HX_BIND_FORCE) {
         hx_sample_model_frames(s, sample, &a->base, scale);
         return;
     }
@@ -299,8 +300,8 @@ int hx_audit_dependencies(hx_session *s, hx_binding *b, FILE *out)
     a.s = s, a.b = b, a.out = out;
     /* the values the routine itself returns, in its entry type's layout: what
      * the harness makes of them (their axes, a scalar's direction) is its own */
-    a.nout = hx_binding_output_count(b);
-    a.what = b->kind == HX_BIND_GFOSUB ? "force" : "output";
+    a.nout = hx_element_call_output_count(b);
+    a.what = b->kind == HX_BIND_FORCE ? "force" : "output";
     a.capacity = hx_query_capacity(m);
     const size_t capacity = (size_t)a.capacity;
     a.answer0 = malloc(sizeof(double) * capacity);

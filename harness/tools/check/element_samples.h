@@ -12,7 +12,7 @@
 #ifndef HX_TOOLS_CHECK_ELEMENT_SAMPLES_H
 #define HX_TOOLS_CHECK_ELEMENT_SAMPLES_H
 
-#include "host/session.h"
+#include "session/session.h"
 
 #define HX_FORCE_SAMPLES 12
 

@@ -24,9 +24,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "sim/dynamics/element_probe.h"
+#include "sim/dynamics/element_at.h"
 #include "frames/measures.h"
-#include "host/evaluate.h"
+#include "host/element_call.h"
 #include "tools/check/checks.h"
 #include "tools/check/coupler_ranges.h"
 #include "tools/check/element_samples.h"
@@ -81,18 +81,18 @@ static int evaluate(probe *p, int which, double t, int dflag, double *out)
 {
     hx_binding *b = p->b;
     memset(out, 0, sizeof(double) * MAX_OUT);
-    if (b->kind == HX_BIND_GFOSUB) {
+    if (b->kind == HX_BIND_FORCE) {
         const hx_force *f = &p->s->model->forces[b->index];
         hx_place_relative(&p->s->frames, &p->frames, f->i_marker, f->j_marker, p->input[which],
                           p->input[which] + 6);
-    } else if (b->kind >= HX_BIND_REQSUB) { /* the whole model's state is its input */
+    } else if (b->kind >= HX_BIND_REQUEST) { /* the whole model's state is its input */
         double scale[12];
         hx_sample_model_frames(p->s, which == INPUT_A ? 3 : 8, &p->frames, scale);
     }
     double copy[MAX_IN]; /* a state equation may write into its arguments */
     memcpy(copy, p->input[which], sizeof copy);
     p->frames.time = t;
-    hx_binding_evaluate(b, &p->frames, copy, 0, dflag, out);
+    hx_element_call(b, &p->frames, copy, 0, dflag, out);
     return hx_messages_stopped(b->messages) ? -1 : 0;
 }
 
@@ -123,11 +123,11 @@ static void choose_inputs(probe *p)
         return;
     }
     double scale[MAX_IN];
-    if (b->kind >= HX_BIND_REQSUB) {
+    if (b->kind >= HX_BIND_REQUEST) {
         p->ninput = 0; /* evaluate() sets the model's state A or B */
         return;
     }
-    if (b->kind == HX_BIND_YFOSUB) {
+    if (b->kind == HX_BIND_STATEEQN) {
         const hx_stateeqn *f = &m->stateeqns[b->index];
         hx_sample_stateeqn_states(p->s, b->index, 3, p->input[INPUT_A], p->input[INPUT_A] + f->nstate,
                                 scale);
@@ -237,11 +237,11 @@ static const char *input_name(const hx_binding *b)
 {
     switch (b->kind) {
     case HX_BIND_COUPLER: return "joint displacements";
-    case HX_BIND_YFOSUB: return "states, then inputs";
-    case HX_BIND_REQSUB:
-    case HX_BIND_VARSUB:
-    case HX_BIND_DIFSUB:
-    case HX_BIND_MOTSUB: return "a sampled state of the model's bodies and Control_Diff states";
+    case HX_BIND_STATEEQN: return "states, then inputs";
+    case HX_BIND_REQUEST:
+    case HX_BIND_VARIABLE:
+    case HX_BIND_DIFF:
+    case HX_BIND_MOTION: return "a sampled state of the model's bodies and Control_Diff states";
     default: return "deformation and rate of I relative to J";
     }
 }
@@ -249,7 +249,7 @@ static const char *input_name(const hx_binding *b)
 int hx_audit_history(hx_session *s, hx_binding *b, FILE *out)
 {
     probe p = {.s = s, .b = b};
-    if (b->kind == HX_BIND_YFOSUB) {
+    if (b->kind == HX_BIND_STATEEQN) {
         const hx_stateeqn *f = &s->model->stateeqns[b->index];
         if (f->nstate + f->ninput > MAX_IN || f->nstate + 6 > MAX_OUT) {
             fprintf(out, "  %s %d: history audit: %d states and %d inputs are more than it"
@@ -261,7 +261,7 @@ int hx_audit_history(hx_session *s, hx_binding *b, FILE *out)
         return 1;
     choose_inputs(&p);
     choose_times(&p);
-    p.nout = hx_binding_output_count(b);
+    p.nout = hx_element_call_output_count(b);
     result r[HISTORIES];
     int isolated = 1, failed = -1, component = 0;
     for (int h = 0; h < HISTORIES && failed < 0; ++h) {

@@ -10,14 +10,15 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "host/invoke.h"
 #include "tools/check/checks.h"
 #include "tools/check/element_samples.h"
 
 /* Order `iord` of the motion at time t; -1 when the routine stopped the run. */
-static int motion_at(hx_binding *b, hx_frames *s, double t, int iord, double *value)
+static int motion_at(hx_binding *b, hx_frames *fr, double t, int iord, double *value)
 {
-    s->time = t;
-    hx_invoke_routine(b, s, iord, 0, value, NULL);
+    fr->time = t;
+    hx_invoke_routine(b, fr, iord, 0, value, NULL);
     return hx_messages_stopped(b->messages) ? -1 : 0;
 }
 

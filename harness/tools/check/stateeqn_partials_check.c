@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host/invoke.h"
 #include "base/finite.h"
 #include "tools/check/checks.h"
 #include "tools/check/derivative_check.h"
@@ -27,7 +28,7 @@ static const char *const output_names[6] = {"Fx", "Fy", "Fz", "Tx", "Ty", "Tz"};
 typedef struct state_sampler {
     hx_session *session;
     hx_binding *b;
-    hx_frames *s;
+    hx_frames *frames;
     int ns, ni;
     int outputs;         /* 0: the rates (stated), 1: the outputs */
     double *copy, *rates, out[6];
@@ -38,7 +39,7 @@ static int sample_stateeqn(void *ctx, const double *v, double *out)
 {
     state_sampler *ss = ctx;
     memcpy(ss->copy, v, sizeof(double) * (size_t)(ss->ns + ss->ni)); /* it may write there */
-    hx_invoke_yfosub(ss->b, ss->s, ss->copy, ss->copy + ss->ns, 1, 0, ss->rates, ss->out, NULL);
+    hx_invoke_stateeqn(ss->b, ss->frames, ss->copy, ss->copy + ss->ns, 1, 0, ss->rates, ss->out, NULL);
     if (hx_messages_stopped(ss->b->messages) || !hx_all_finite(ss->rates, ss->ns) ||
         !hx_all_finite(ss->out, 6))
         return -1;
@@ -55,10 +56,10 @@ static int jacobian_at(state_sampler *ss, double *v, const double *scale, double
     const int ns = ss->ns, ni = ss->ni, rows = ns + 6;
     double matrix[4][64 * 64];
     for (int r = 0; r < 4; ++r) {
-        if (ss->b->state_partial[r] == NULL)
+        if (ss->b->fn.stateeqn.partial[r] == NULL)
             continue;
         memcpy(ss->copy, v, sizeof(double) * (size_t)(ns + ni));
-        hx_invoke_yfosub_partial(ss->b, r, ss->s, ss->copy, ss->copy + ns, matrix[r], NULL);
+        hx_invoke_stateeqn_partial(ss->b, r, ss->frames, ss->copy, ss->copy + ns, matrix[r], NULL);
         const int size = (r < YX ? ns : 6) * (r == XX || r == YX ? ns : ni);
         if (hx_messages_stopped(ss->b->messages) || !hx_all_finite(matrix[r], size))
             return -1 - r;
@@ -79,7 +80,7 @@ static int jacobian_at(state_sampler *ss, double *v, const double *scale, double
         for (int i = 0; i < rows; ++i) {
             const int r = i < ns ? (state ? XX : XU) : (state ? YX : YU);
             const int row = i < ns ? i : i - ns, height = i < ns ? ns : 6;
-            J[i + rows * c] = ss->b->state_partial[r] != NULL ? matrix[r][row + height * j]
+            J[i + rows * c] = ss->b->fn.stateeqn.partial[r] != NULL ? matrix[r][row + height * j]
                                                               : (up[i] - down[i]) / (2.0 * h);
         }
     }
@@ -112,7 +113,7 @@ static int check_sample(state_sampler *ss, const hx_model *m, const hx_stateeqn 
     const int ns = ss->ns, ni = ss->ni, rows = ns + 6;
     double v[64], scale[64], J[70 * 64];
     hx_sample_stateeqn_states(ss->session, ss->b->index, k, v, v + ns, scale);
-    ss->s->time = hx_sample_time(m, k);
+    ss->frames->time = hx_sample_time(m, k);
     const int status = jacobian_at(ss, v, scale, J);
     if (status != 0)
         return status;
@@ -120,7 +121,7 @@ static int check_sample(state_sampler *ss, const hx_model *m, const hx_stateeqn 
         for (ss->outputs = 0; ss->outputs < 2; ++ss->outputs) {
             const int r = ss->outputs ? (c < ns ? YX : YU) : (c < ns ? XX : XU);
             const int first = ss->outputs ? ns : 0, height = ss->outputs ? 6 : ns;
-            if (ss->b->state_partial[r] == NULL || height == 0)
+            if (ss->b->fn.stateeqn.partial[r] == NULL || height == 0)
                 continue;
             double column[64], floor[64];
             for (int i = 0; i < height; ++i) {
@@ -144,7 +145,7 @@ static int check_sample(state_sampler *ss, const hx_model *m, const hx_stateeqn 
                     e = e_wide, row = wide_row;
             }
             char where[256];
-            describe_entry(where, sizeof where, m, f, r, row, c < ns ? c : c - ns, k, ss->s->time);
+            describe_entry(where, sizeof where, m, f, r, row, c < ns ? c : c - ns, k, ss->frames->time);
             hx_worst_update(&worst[r], e, "%s", where);
         }
     return 0;
@@ -161,17 +162,17 @@ int hx_check_state_partials(hx_session *s, hx_binding *b, FILE *out)
                 " in all: FAIL\n", b->element, b->id, f->nstate, f->ninput);
         return 1;
     }
-    hx_frames state;
+    hx_frames sample;
     double copy[64], rates[64];
-    if (hx_frames_clone(&state, &s->frames) != 0)
+    if (hx_frames_clone(&sample, &s->frames) != 0)
         return 1;
-    state_sampler ss = {s, b, &state, f->nstate, f->ninput, 0, copy, rates, {0}};
+    state_sampler ss = {s, b, &sample, f->nstate, f->ninput, 0, copy, rates, {0}};
     hx_worst worst[4];
     memset(worst, 0, sizeof worst);
     int failures = 0, status = 0, k = 0;
     for (; k < HX_FORCE_SAMPLES && status == 0; ++k)
         status = check_sample(&ss, m, f, k, worst);
-    hx_frames_free(&state);
+    hx_frames_free(&sample);
     if (status != 0) {
         fprintf(out, "  %s %d: %s returned non-finite values or stopped the run at sample %d:"
                 " FAIL\n", b->element, b->id, status >= -4 ? b->names[-status] : b->names[0],
@@ -180,7 +181,7 @@ int hx_check_state_partials(hx_session *s, hx_binding *b, FILE *out)
     }
     for (int r = 0; r < 4; ++r) {
         const int empty = (r != YU && f->nstate == 0) || (r % 2 == 1 && f->ninput == 0);
-        if (b->state_partial[r] == NULL)
+        if (b->fn.stateeqn.partial[r] == NULL)
             fprintf(out, "  %s %d: %s (%s): not exported; the harness differences %s in its"
                     " place\n", b->element, b->id, b->names[1 + r], meaning[r], b->names[0]);
         else if (empty)

@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "base/linalg.h"
-#include "sim/dynamics/element_probe.h"
+#include "sim/dynamics/element_at.h"
 
 static int evaluate(hx_rig *r, double t, const double d[6], const double v[6], double F[6],
                     double *J, double *Jv)

@@ -10,7 +10,7 @@
 
 #include <stdio.h>
 
-#include "host/session.h"
+#include "session/session.h"
 #include "tools/rig/rig_path.h"
 
 typedef struct hx_rig {

@@ -6,8 +6,8 @@
  *   sine K,AMP,FREQ[,PHASE]  AMP sin(2 pi FREQ t + PHASE) added to K
  *   history FILE.csv       rows t,x,y,z,ax,ay,az, linear in between
  */
-#ifndef HX_RIG_PATH_H
-#define HX_RIG_PATH_H
+#ifndef HX_TOOLS_RIG_RIG_PATH_H
+#define HX_TOOLS_RIG_RIG_PATH_H
 
 #include "base/message.h"
 

@@ -7,8 +7,9 @@
 
 #include "base/finite.h"
 #include "base/vecmath.h"
+#include "host/invoke.h"
 #include "host/state_inputs.h"
-#include "sim/dynamics/element_probe.h"
+#include "sim/dynamics/element_at.h"
 
 typedef struct state_rig {
     hx_rig *r;
@@ -38,7 +39,7 @@ static int evaluate(state_rig *sr, double t, const double *x, int dflag, double 
     memcpy(sr->copy, x, sizeof(double) * (size_t)f->nstate); /* copies: it may write there */
     memcpy(sr->copy + f->nstate, sr->u, sizeof(double) * (size_t)f->ninput);
     double out[6];
-    hx_invoke_yfosub(sr->b, &r->scratch, sr->copy, sr->copy + f->nstate, dflag, 0, xdot, out, NULL);
+    hx_invoke_stateeqn(sr->b, &r->scratch, sr->copy, sr->copy + f->nstate, dflag, 0, xdot, out, NULL);
     r->element_calls++;
     if (hx_messages_stopped(&r->s->messages) || !hx_all_finite(out, 6) ||
         !hx_all_finite(xdot, f->nstate)) {
@@ -69,12 +70,12 @@ static int rate_jacobian(void *ctx, double t, const double *x, const double *fx,
     (void)fx;
     state_rig *sr = ctx;
     const int ns = sr->f->nstate;
-    if (sr->b->state_partial[0] != NULL) {
+    if (sr->b->fn.stateeqn.partial[0] != NULL) {
         if (evaluate(sr, t, x, 1, sr->rates) != 0) /* places I and measures the inputs */
             return -1;
         memcpy(sr->copy, x, sizeof(double) * (size_t)ns);
         memcpy(sr->copy + ns, sr->u, sizeof(double) * (size_t)sr->f->ninput);
-        hx_invoke_yfosub_partial(sr->b, 0, &sr->r->scratch, sr->copy, sr->copy + ns, J, NULL);
+        hx_invoke_stateeqn_partial(sr->b, 0, &sr->r->scratch, sr->copy, sr->copy + ns, J, NULL);
         return hx_all_finite(J, ns * ns) && !hx_messages_stopped(&sr->r->s->messages) ? 0 : -1;
     }
     double *xp = sr->rates + ns; /* past the rates: ns values */
@@ -148,7 +149,7 @@ int hx_stateeqn_rig_run(hx_rig *r, hx_stateeqn_rig_result *result)
     memset(result, 0, sizeof *result);
     const hx_stateeqn *f = &r->s->model->stateeqns[r->force];
     state_rig sr = {.r = r, .f = f, .result = result};
-    sr.b = hx_binding_of_stateeqn(&r->s->bindings, r->force);
+    sr.b = hx_bindings_find(&r->s->bindings, HX_FAMILY_STATEEQN, r->force);
     const int ns = f->nstate, ni = f->ninput;
     double *work = calloc((size_t)(5 * ns + 2 * ni + 1), sizeof(double));
     if (work == NULL) {

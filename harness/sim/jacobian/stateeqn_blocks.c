@@ -19,10 +19,11 @@
 
 #include "base/finite.h"
 #include "base/vecmath.h"
+#include "host/invoke.h"
 #include "host/state_inputs.h"
-#include "sim/dynamics/stage_failure.h"
+#include "sim/dynamics/failure.h"
 #include "sim/dynamics/stateeqns.h"
-#include "sim/newton/newton_parts.h"
+#include "sim/jacobian/jacobian_parts.h"
 
 #define MAX_INPUT_BODIES 32
 
@@ -58,10 +59,10 @@ int hx_stateeqn_input_bodies(const hx_dynamics *d, int k, int *bodies, int max)
     return count;
 }
 
-int hx_stateeqn_blocks_init(hx_newton_matrix *nm, hx_message *msg)
+int hx_stateeqn_blocks_init(hx_jacobian *jac, hx_message *msg)
 {
-    const hx_model *m = nm->d->m;
-    struct hx_stateeqn_blocks *sb = nm->states = calloc(1, sizeof *sb);
+    const hx_model *m = jac->d->m;
+    struct hx_stateeqn_blocks *sb = jac->stateeqn_blocks = calloc(1, sizeof *sb);
     if (sb == NULL)
         return hx_fail(msg, "out of memory");
     sb->block = calloc((size_t)m->nstateeqns + 1, sizeof *sb->block);
@@ -86,30 +87,31 @@ int hx_stateeqn_blocks_init(hx_newton_matrix *nm, hx_message *msg)
     return 0;
 }
 
-void hx_stateeqn_blocks_free(hx_newton_matrix *nm)
+void hx_stateeqn_blocks_free(hx_jacobian *jac)
 {
-    struct hx_stateeqn_blocks *sb = nm->states;
+    struct hx_stateeqn_blocks *sb = jac->stateeqn_blocks;
     if (sb == NULL)
         return;
     free(sb->block);
     free(sb->partials);
     free(sb->x);
     free(sb);
-    nm->states = NULL;
+    jac->stateeqn_blocks = NULL;
 }
 
 /* The four blocks of element k by the library's partial routines where it
  * exports them; which[r] is set for the routines that must be differenced. */
-static int library_partials(hx_newton_matrix *nm, int k, double *blocks[4], int which[4])
+static int library_partials(hx_jacobian *jac, int k, double *blocks[4], int which[4])
 {
-    hx_dynamics *d = nm->d;
-    struct hx_stateeqn_blocks *sb = nm->states;
+    const hx_dynamics *d = jac->d;
+    hx_dynamics_data *dd = &jac->dd;
+    struct hx_stateeqn_blocks *sb = jac->stateeqn_blocks;
     const hx_stateeqn *f = &d->m->stateeqns[k];
     hx_binding *b = d->stateeqns->binding[k];
     const int size[4] = {f->nstate * f->nstate, f->nstate * f->ninput, 6 * f->nstate,
                          6 * f->ninput};
     for (int r = 0; r < 4; ++r) {
-        which[r] = b->state_partial[r] == NULL;
+        which[r] = b->fn.stateeqn.partial[r] == NULL;
         if (which[r]) {
             sb->differenced[r] = 1;
             continue;
@@ -117,13 +119,13 @@ static int library_partials(hx_newton_matrix *nm, int k, double *blocks[4], int 
         sb->exported[r] = 1;
         memcpy(sb->xdot, sb->x, sizeof(double) * (size_t)f->nstate); /* copies it may write */
         memcpy(sb->xdotm, sb->u, sizeof(double) * (size_t)f->ninput);
-        hx_invoke_yfosub_partial(b, r, &d->frames, sb->xdot, sb->xdotm, blocks[r], NULL);
-        nm->partial_calls++;
-        if (hx_dynamics_check_stop(d, b) != 0)
+        hx_invoke_stateeqn_partial(b, r, &dd->frames, sb->xdot, sb->xdotm, blocks[r], NULL);
+        jac->partial_calls++;
+        if (hx_dynamics_check_call(d, dd, b, NULL, 0, "", dd->frames.time) != 0)
             return -1;
         if (!hx_all_finite(blocks[r], size[r]))
-            return hx_dynamics_fail(d, "Force_StateEqn %d: %s returned non-finite partials at t ="
-                                    " %g", f->id, b->names[1 + r], d->frames.time);
+            return hx_dynamics_fail(dd, "Force_StateEqn %d: %s returned non-finite partials at t ="
+                                    " %g", f->id, b->names[1 + r], dd->frames.time);
     }
     return 0;
 }
@@ -137,11 +139,12 @@ static double step_of(double v)
 
 /* Central differences of YFOSUB for the blocks the library does not give:
  * states perturbed for F_x and G_x, inputs for F_u and G_u. */
-static int differenced_partials(hx_newton_matrix *nm, int k, double *blocks[4],
+static int differenced_partials(hx_jacobian *jac, int k, double *blocks[4],
                                 const int which[4])
 {
-    hx_dynamics *d = nm->d;
-    struct hx_stateeqn_blocks *sb = nm->states;
+    const hx_dynamics *d = jac->d;
+    hx_dynamics_data *dd = &jac->dd;
+    struct hx_stateeqn_blocks *sb = jac->stateeqn_blocks;
     const hx_stateeqn *f = &d->m->stateeqns[k];
     const int ns = f->nstate, ni = f->ninput;
     for (int group = 0; group < 2; ++group) {
@@ -152,12 +155,12 @@ static int differenced_partials(hx_newton_matrix *nm, int k, double *blocks[4],
         for (int j = 0; j < columns; ++j) {
             const double keep = v[j], h = step_of(keep);
             v[j] = keep + h;
-            int status = hx_stateeqn_evaluate(d, k, sb->x, sb->u, 1, sb->xdot, sb->out);
+            int status = hx_stateeqn_call(d, dd, k, sb->x, sb->u, 1, sb->xdot, sb->out);
             v[j] = keep - h;
             if (status == 0)
-                status = hx_stateeqn_evaluate(d, k, sb->x, sb->u, 1, sb->xdotm, sb->outm);
+                status = hx_stateeqn_call(d, dd, k, sb->x, sb->u, 1, sb->xdotm, sb->outm);
             v[j] = keep;
-            nm->partial_calls += 2;
+            jac->partial_calls += 2;
             if (status != 0)
                 return -1;
             for (int i = 0; i < ns && which[group]; ++i)
@@ -170,19 +173,19 @@ static int differenced_partials(hx_newton_matrix *nm, int k, double *blocks[4],
 }
 
 /* dU/dy along column c of body b: differences of the harness's measures. */
-static void input_slope(hx_newton_matrix *nm, int k, int b, int c)
+static void input_slope(hx_jacobian *jac, int k, int b, int c)
 {
-    struct hx_stateeqn_blocks *sb = nm->states;
-    const hx_model *m = nm->d->m;
+    struct hx_stateeqn_blocks *sb = jac->stateeqn_blocks;
+    const hx_model *m = jac->d->m;
     const hx_stateeqn *f = &m->stateeqns[k];
-    const double keep = nm->y[c], h = hx_newton_step(nm->y, c);
+    const double keep = jac->y[c], h = hx_jacobian_step(jac->y, c);
     for (int side = 0; side < 2; ++side) {
-        nm->y[c] = keep + (side == 0 ? h : -h);
-        hx_newton_probe_move(nm, b, nm->y);
-        hx_stateeqn_inputs(&nm->probe, k, side == 0 ? sb->up : sb->um);
+        jac->y[c] = keep + (side == 0 ? h : -h);
+        hx_jacobian_move_body(jac, b, jac->y);
+        hx_stateeqn_inputs(&jac->moved, k, side == 0 ? sb->up : sb->um);
     }
-    nm->y[c] = keep;
-    hx_newton_probe_restore(nm, b);
+    jac->y[c] = keep;
+    hx_jacobian_restore_body(jac, b);
     for (int i = 0; i < f->ninput; ++i) {
         double delta = sb->up[i] - sb->um[i];
         if (hx_variable_is_angle(&m->variables[f->inputs[i]]))
@@ -209,30 +212,31 @@ static void through(const double *Fb, const double *Gb, int ns, int nv, const do
     }
 }
 
-static int element_block(hx_newton_matrix *nm, int k, const double *y)
+static int element_block(hx_jacobian *jac, int k, const double *y)
 {
-    hx_dynamics *d = nm->d;
-    struct hx_stateeqn_blocks *sb = nm->states;
+    const hx_dynamics *d = jac->d;
+    hx_dynamics_data *dd = &jac->dd;
+    struct hx_stateeqn_blocks *sb = jac->stateeqn_blocks;
     const hx_model *m = d->m;
     const hx_stateeqn *f = &m->stateeqns[k];
-    const hx_frames *s = &d->frames;
+    const hx_frames *fr = &dd->frames;
     const int ns = f->nstate, ni = f->ninput, x0 = d->stateeqns->offset[k];
     memcpy(sb->x, y + x0, sizeof(double) * (size_t)ns);
-    if (hx_stateeqn_inputs(s, k, sb->u) != 0)
-        return hx_dynamics_fail(d, "Force_StateEqn %d: an input could not be measured", f->id);
+    if (hx_stateeqn_inputs(fr, k, sb->u) != 0)
+        return hx_dynamics_fail(dd, "Force_StateEqn %d: an input could not be measured", f->id);
     double *xx = sb->partials + sb->block[k];
     double *blocks[4] = {xx, xx + ns * ns, xx + ns * (ns + ni), xx + ns * (ns + ni) + 6 * ns};
     int which[4];
-    if (library_partials(nm, k, blocks, which) != 0 || differenced_partials(nm, k, blocks, which) != 0)
+    if (library_partials(jac, k, blocks, which) != 0 || differenced_partials(jac, k, blocks, which) != 0)
         return -1;
     hx_frame scratch[2];
     hx_applied_force a;
     a.bi = m->markers[f->i_marker].body;
     a.bj = m->markers[f->j_marker].body;
     a.ba = f->ref_marker >= 0 ? m->markers[f->ref_marker].body : -1;
-    a.I = hx_frames_marker(s, f->i_marker, &scratch[0]);
-    a.R_A = hx_frames_marker(s, f->ref_marker, &scratch[1])->R;
-    const double *out0 = d->stateeqns->outputs + 6 * k;
+    a.I = hx_frames_marker(fr, f->i_marker, &scratch[0]);
+    a.R_A = hx_frames_marker(fr, f->ref_marker, &scratch[1])->R;
+    const double *out0 = dd->stateeqn_outputs + 6 * k;
     m3_apply(a.F, a.R_A, out0);
     m3_apply(a.T, a.R_A, out0 + 3);
     static const hx_motion still;
@@ -241,11 +245,11 @@ static int element_block(hx_newton_matrix *nm, int k, const double *y)
     for (int j = 0; j < ns; ++j) {
         double e[64] = {0};
         if (ns > 64)
-            return hx_dynamics_fail(d, "Force_StateEqn %d: more than 64 states", f->id);
+            return hx_dynamics_fail(dd, "Force_StateEqn %d: more than 64 states", f->id);
         e[j] = 1.0;
         through(blocks[0], blocks[2], ns, ns, e, sb->g, dout);
-        hx_newton_add(nm, x0, ns, x0 + j, sb->g);
-        hx_newton_applied_force(nm, &a, x0 + j, -1, &still, dout, NULL);
+        hx_jacobian_add(jac, x0, ns, x0 + j, sb->g);
+        hx_jacobian_applied_force(jac, &a, x0 + j, -1, &still, dout, NULL);
     }
     /* the bodies' columns: through the inputs, and the force's geometry */
     int bodies[MAX_INPUT_BODIES + 3];
@@ -262,35 +266,35 @@ static int element_block(hx_newton_matrix *nm, int k, const double *y)
     for (int l = 0; l < count; ++l) {
         const int b = bodies[l];
         int columns[13];
-        const int nc = hx_newton_body_columns(d, b, columns);
+        const int nc = hx_jacobian_body_columns(d, b, columns);
         for (int j = 0; j < nc; ++j) {
             hx_motion mo;
-            hx_body_column_motion(d, b, j, y, &s->bodies[b], &mo);
+            hx_body_column_motion(d, b, j, y, &fr->bodies[b], &mo);
             if (l < measured)
-                input_slope(nm, k, b, columns[j]);
+                input_slope(jac, k, b, columns[j]);
             else
                 memset(sb->du, 0, sizeof(double) * (size_t)ni);
             through(blocks[1], blocks[3], ns, ni, sb->du, sb->g, dout);
-            hx_newton_add(nm, x0, ns, columns[j], sb->g);
-            hx_newton_applied_force(nm, &a, columns[j], b, &mo, dout, NULL);
+            hx_jacobian_add(jac, x0, ns, columns[j], sb->g);
+            hx_jacobian_applied_force(jac, &a, columns[j], b, &mo, dout, NULL);
         }
     }
     return 0;
 }
 
-int hx_stateeqn_blocks(hx_newton_matrix *nm, double t, const double *y)
+int hx_stateeqn_blocks(hx_jacobian *jac, double t, const double *y)
 {
     (void)t;
-    for (int k = 0; k < nm->d->m->nstateeqns; ++k)
-        if (element_block(nm, k, y) != 0)
+    for (int k = 0; k < jac->d->m->nstateeqns; ++k)
+        if (element_block(jac, k, y) != 0)
             return -1;
     return 0;
 }
 
-void hx_stateeqn_blocks_describe(const hx_newton_matrix *nm, char *text, size_t size)
+void hx_stateeqn_blocks_describe(const hx_jacobian *jac, char *text, size_t size)
 {
-    const struct hx_stateeqn_blocks *sb = nm->states;
-    if (nm->d->m->nstateeqns == 0)
+    const struct hx_stateeqn_blocks *sb = jac->stateeqn_blocks;
+    if (jac->d->m->nstateeqns == 0)
         return;
     size_t len = strlen(text);
     for (int r = 0; r < 4 && len < size; ++r)

@@ -6,10 +6,10 @@
  * by the elastic energy, the rig and the checks; the state being simulated
  * is never touched.
  */
-#ifndef HX_SIM_ELEMENT_PROBE_H
-#define HX_SIM_ELEMENT_PROBE_H
+#ifndef HX_SIM_DYNAMICS_ELEMENT_AT_H
+#define HX_SIM_DYNAMICS_ELEMENT_AT_H
 
-#include "host/session.h"
+#include "session/session.h"
 #include "frames/frames.h"
 
 /* A rotation whose projection angles (AX, AY, AZ) are a; returns 0, or -1
@@ -35,7 +35,7 @@ int hx_element_at(hx_session *s, hx_frames *scratch, const hx_frames *base, int 
                   const double disp[6], const double velo[6], double F[6], double *dFdd,
                   double *dFdv);
 
-/* Elastic energy of the element at state base (scratch: a copy of base,
+/* Elastic energy of the element at frames base (scratch: a copy of base,
  * which it is again on return; one copy serves every element): minus the work of its force
  * and torque on I, at rest, along the path from J's pose to I's that moves
  * straight and turns about one fixed axis (I at s x and exp(s [r]x) in J, s

@@ -1,5 +1,5 @@
 /* How bodies move with their coordinates (body_motion.h). */
-#include "sim/newton/body_motion.h"
+#include "sim/jacobian/body_motion.h"
 
 #include <math.h>
 #include <string.h>

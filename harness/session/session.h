@@ -5,8 +5,8 @@
  * from there sees relative property-file paths). Paths given on the command
  * line are taken relative to the folder the harness started in.
  */
-#ifndef HX_HOST_SESSION_H
-#define HX_HOST_SESSION_H
+#ifndef HX_SESSION_SESSION_H
+#define HX_SESSION_SESSION_H
 
 #include <limits.h>
 #include <stdio.h>

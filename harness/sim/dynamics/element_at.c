@@ -1,5 +1,6 @@
-/* Force elements at prescribed states (element_probe.h). */
-#include "sim/dynamics/element_probe.h"
+/* Force elements at prescribed states (element_at.h). */
+#include "host/invoke.h"
+#include "sim/dynamics/element_at.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -136,12 +137,12 @@ int hx_element_at(hx_session *s, hx_frames *scratch, const hx_frames *base, int 
                   const double disp[6], const double velo[6], double F[6], double *dFdd,
                   double *dFdv)
 {
-    hx_binding *b = hx_binding_of_force(&s->bindings, force);
-    if (b->kind == HX_BIND_FIESUB) {
+    hx_binding *b = hx_bindings_find(&s->bindings, HX_FAMILY_FORCE, force);
+    if (b->kind == HX_BIND_FIELD) {
         double dfd[36], dfv[36];
         hx_frames_copy(scratch, base);
         scratch->time = t;
-        hx_invoke_fiesub(b, scratch, disp, velo, dFdd != NULL, 0, F, dfd, dfv, NULL);
+        hx_invoke_field(b, scratch, disp, velo, dFdd != NULL, 0, F, dfd, dfv, NULL);
         if (dFdd != NULL) {
             memcpy(dFdd, dfd, sizeof dfd);
             memcpy(dFdv, dfv, sizeof dfv);
@@ -174,13 +175,13 @@ static int element_at_pose(hx_session *s, hx_frames *scratch, const hx_frames *b
                            double t, const double p[3], const double R[9], double F[6])
 {
     static const double zero[6] = {0, 0, 0, 0, 0, 0};
-    hx_binding *b = hx_binding_of_force(&s->bindings, force);
+    hx_binding *b = hx_bindings_find(&s->bindings, HX_FAMILY_FORCE, force);
     scratch->time = t;
-    if (b->kind == HX_BIND_FIESUB) {
+    if (b->kind == HX_BIND_FIELD) {
         double disp[6], dfd[36], dfv[36];
         v3_copy(disp, p);
         hx_projection_angles(R, disp + 3);
-        hx_invoke_fiesub(b, scratch, disp, zero, 0, 0, F, dfd, dfv, NULL);
+        hx_invoke_field(b, scratch, disp, zero, 0, 0, F, dfd, dfv, NULL);
         scratch->time = base->time;
         return hx_messages_stopped(&s->messages) ? -1 : 0;
     }

@@ -1,5 +1,5 @@
 /*
- * The force elements' blocks of the Newton matrix (newton_matrix.h). With
+ * The force elements' blocks of the Jacobian (jacobian.h). With
  * d = p_I - p_J and the deformation disp = (R_J^T d, angles of R_J^T R_I),
  * velo = (R_J^T (v_I - v_J - w_J x d), R_J^T (w_I - w_J)), a motion of the
  * two markers (body_motion.h) changes them by
@@ -8,18 +8,19 @@
  *   dvelo_t = R_J^T (dv_I - dv_J - dw_J x d - w_J x dd - dth_J x x)
  *   dvelo_r = R_J^T (dw_I - dw_J - dth_J x (w_I - w_J))
  * and the outputs by dfddis ddisp + dfdvel dvelo; the force they make on the
- * bodies turns and moves with them (hx_newton_applied_force).
+ * bodies turns and moves with them (hx_jacobian_applied_force).
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "host/invoke.h"
 #include "base/finite.h"
 #include "base/vecmath.h"
 #include "sim/dynamics/element_forces.h"
-#include "sim/dynamics/stage_failure.h"
-#include "sim/newton/newton_parts.h"
+#include "sim/dynamics/failure.h"
+#include "sim/jacobian/jacobian_parts.h"
 #include "frames/measures.h"
 
 #define TWIN_TOLERANCE 1e-9
@@ -40,38 +41,33 @@ static int same_axes(const hx_model *m, const hx_force *f)
     return r->body == j->body && memcmp(r->R_local, j->R_local, sizeof r->R_local) == 0;
 }
 
-int hx_element_blocks_init(hx_newton_matrix *nm, hx_message *msg)
+int hx_element_blocks_init(hx_jacobian *jac, hx_message *msg)
 {
-    const hx_dynamics *d = nm->d;
+    const hx_dynamics *d = jac->d;
     const hx_model *m = d->m;
-    const size_t f1 = (size_t)nm->nf + 1;
-    nm->source = calloc(f1, sizeof *nm->source);
-    nm->why = calloc(f1 * HX_NEWTON_WHY, 1);
-    nm->twin_partials = calloc(72 * f1, sizeof(double));
-    nm->element_rows = malloc(ELEMENT_ROWS * f1 * sizeof(int));
-    if (nm->source == NULL || nm->why == NULL || nm->twin_partials == NULL ||
-        nm->element_rows == NULL)
+    const size_t f1 = (size_t)jac->nf + 1;
+    jac->source = calloc(f1, sizeof *jac->source);
+    jac->why = calloc(f1 * HX_JACOBIAN_WHY, 1);
+    jac->twin_partials = calloc(72 * f1, sizeof(double));
+    jac->element_rows = malloc(ELEMENT_ROWS * f1 * sizeof(int));
+    if (jac->source == NULL || jac->why == NULL || jac->twin_partials == NULL ||
+        jac->element_rows == NULL)
         return hx_fail(msg, "out of memory");
-    for (int k = 0; k < nm->nf; ++k) {
+    for (int k = 0; k < jac->nf; ++k) {
         const hx_force *f = &m->forces[k];
         const hx_binding *b = d->force_binding[k];
-        char *why = nm->why + k * HX_NEWTON_WHY;
+        char *why = jac->why + k * HX_JACOBIAN_WHY;
         if (f->interface == HX_FORCE_FIESUB) {
-            nm->source[k] = HX_PARTIALS_FIESUB;
-            /* the evaluations ask for them from now on; one made without
-             * them holds none to reuse */
-            if (!nm->d->field_partials)
-                nm->d->evaluated = 0;
-            nm->d->field_partials = 1;
+            jac->source[k] = HX_PARTIALS_FIESUB; /* the build's evaluation asks for them */
         } else if (b->twin == NULL) {
-            nm->source[k] = HX_PARTIALS_DIFFERENCES;
-            snprintf(why, HX_NEWTON_WHY, "its library exports no FIESUB twin of %s", b->names[0]);
+            jac->source[k] = HX_PARTIALS_DIFFERENCES;
+            snprintf(why, HX_JACOBIAN_WHY, "its library exports no FIESUB twin of %s", b->names[0]);
         } else if (!same_axes(m, f)) {
-            nm->source[k] = HX_PARTIALS_DIFFERENCES;
-            snprintf(why, HX_NEWTON_WHY, "its ref_marker_id is not its J marker, whose axes the"
+            jac->source[k] = HX_PARTIALS_DIFFERENCES;
+            snprintf(why, HX_JACOBIAN_WHY, "its ref_marker_id is not its J marker, whose axes the"
                      " twin %s answers in", b->twin_name);
         } else {
-            nm->source[k] = HX_PARTIALS_TWIN;
+            jac->source[k] = HX_PARTIALS_TWIN;
         }
     }
     return 0;
@@ -95,14 +91,14 @@ static void element_bodies(const hx_dynamics *d, int k, int bodies[3])
     }
 }
 
-void hx_element_blocks_locate(hx_newton_matrix *nm)
+void hx_element_blocks_locate(hx_jacobian *jac)
 {
-    const hx_dynamics *d = nm->d;
+    const hx_dynamics *d = jac->d;
     const hx_model *m = d->m;
-    for (int k = 0; k < nm->nf; ++k) {
+    for (int k = 0; k < jac->nf; ++k) {
         const hx_force *f = &m->forces[k];
         const int sides[2] = {m->markers[f->i_marker].body, m->markers[f->j_marker].body};
-        int bodies[3], *rows = nm->element_rows + ELEMENT_ROWS * k;
+        int bodies[3], *rows = jac->element_rows + ELEMENT_ROWS * k;
         element_bodies(d, k, bodies);
         for (int i = 0; i < ELEMENT_ROWS; ++i)
             rows[i] = -1;
@@ -110,11 +106,11 @@ void hx_element_blocks_locate(hx_newton_matrix *nm)
             if (bodies[i] < 0)
                 continue;
             int columns[13];
-            const int count = hx_newton_body_columns(d, bodies[i], columns);
+            const int count = hx_jacobian_body_columns(d, bodies[i], columns);
             for (int j = 0; j < count; ++j)
                 for (int side = 0; side < 2; ++side)
                     rows[(13 * i + j) * 2 + side] =
-                        hx_newton_body_rows_at(nm, sides[side], columns[j]);
+                        hx_jacobian_body_rows_at(jac, sides[side], columns[j]);
         }
     }
 }
@@ -135,34 +131,39 @@ static int twin_agrees(const double gfo[6], const double twin[6], double *worst)
     return *worst <= TWIN_TOLERANCE;
 }
 
-/* The twin's partials at the build's state, or the element set aside for
- * differences (for good: a twin that disagrees once is not the element's). */
-static int twin_partials(hx_newton_matrix *nm, int k)
+/* The twin's partials at the build's state into jac->twin_partials; 0, or
+ * 1 when the twin cannot stand in for the element (it refuses the list, its
+ * partials are not finite, or its force differs from the element's), which
+ * is then set aside for differences for good, the reason kept. The check is
+ * made at every build: the twin is handed projection angles where the GFOSUB
+ * measures through the host's 3-1-3 angles, and the two agree only as far as
+ * the state allows (docs/architecture.md, the Jacobian). */
+static int twin_partials(hx_jacobian *jac, int k)
 {
-    hx_dynamics *d = nm->d;
-    const hx_frames *s = &d->frames;
+    const hx_dynamics *d = jac->d;
+    const hx_frames *fr = &jac->dd.frames;
     hx_binding *b = d->force_binding[k];
     double disp[6], velo[6], field[6], worst = 0.0;
-    double *dfd = nm->twin_partials + 72 * k;
-    hx_force_deformation(s, k, disp, velo);
-    hx_invoke_twin(b, s, disp, velo, field, dfd, dfd + 36, &nm->twin_messages);
-    nm->partial_calls++;
-    const int refused = hx_messages_stopped(&nm->twin_messages);
+    double *dfd = jac->twin_partials + 72 * k;
+    hx_force_deformation(fr, k, disp, velo);
+    hx_invoke_twin(b, fr, disp, velo, field, dfd, dfd + 36, &jac->twin_messages);
+    jac->partial_calls++;
+    const int refused = hx_messages_stopped(&jac->twin_messages);
     const int finite = hx_all_finite(dfd, 72);
-    if (!refused && finite && twin_agrees(d->element_outputs + 6 * k, field, &worst))
+    if (!refused && finite && twin_agrees(jac->dd.element_outputs + 6 * k, field, &worst))
         return 0;
-    nm->source[k] = HX_PARTIALS_DIFFERENCES;
-    char *why = nm->why + k * HX_NEWTON_WHY;
+    jac->source[k] = HX_PARTIALS_DIFFERENCES;
+    char *why = jac->why + k * HX_JACOBIAN_WHY;
     if (refused)
-        snprintf(why, HX_NEWTON_WHY, "its twin %s refused the list: %.80s", b->twin_name,
-                 nm->twin_messages.stop_message);
+        snprintf(why, HX_JACOBIAN_WHY, "its twin %s refused the list: %.80s", b->twin_name,
+                 jac->twin_messages.stop_message);
     else if (!finite)
-        snprintf(why, HX_NEWTON_WHY, "its twin %s returned non-finite partials at t = %g",
-                 b->twin_name, s->time);
+        snprintf(why, HX_JACOBIAN_WHY, "its twin %s returned non-finite partials at t = %g",
+                 b->twin_name, fr->time);
     else
-        snprintf(why, HX_NEWTON_WHY, "its twin %s differs from it by %.2g (relative) at t = %g",
-                 b->twin_name, worst, s->time);
-    hx_messages_reset(&nm->twin_messages);
+        snprintf(why, HX_JACOBIAN_WHY, "its twin %s differs from it by %.2g (relative) at t = %g",
+                 b->twin_name, worst, fr->time);
+    hx_messages_reset(&jac->twin_messages);
     return 1;
 }
 
@@ -197,26 +198,26 @@ static int still_pose(const hx_motion *mo)
 
 /* The outputs' change by differences of element k alone, its body b moved
  * along column c. */
-static int differenced_outputs(hx_newton_matrix *nm, int k, int b, int c, double dout[6])
+static int differenced_outputs(hx_jacobian *jac, int k, int b, int c, double dout[6])
 {
-    hx_dynamics *d = nm->d;
+    const hx_dynamics *d = jac->d;
+    hx_dynamics_data *dd = &jac->dd;
     hx_binding *bind = d->force_binding[k];
-    const double keep = nm->y[c], h = hx_newton_step(nm->y, c);
+    const double keep = jac->y[c], h = hx_jacobian_step(jac->y, c);
     double out[2][6];
     for (int side = 0; side < 2; ++side) {
-        nm->y[c] = keep + (side == 0 ? h : -h);
-        hx_newton_probe_move(nm, b, nm->y);
-        hx_force_routine_call(bind, &nm->probe, 1, out[side]);
-        nm->partial_calls++;
-        if (hx_dynamics_check_stop(d, bind) != 0 || !hx_all_finite(out[side], 6)) {
-            nm->y[c] = keep;
-            hx_newton_probe_restore(nm, b);
-            return hx_dynamics_fail(d, "%s %d returned a non-finite force at t = %g",
-                                    bind->element, bind->id, d->frames.time);
+        jac->y[c] = keep + (side == 0 ? h : -h);
+        hx_jacobian_move_body(jac, b, jac->y);
+        hx_force_routine_call(bind, &jac->moved, 1, out[side]);
+        jac->partial_calls++;
+        if (hx_dynamics_check_call(d, dd, bind, out[side], 6, "force", dd->frames.time) != 0) {
+            jac->y[c] = keep;
+            hx_jacobian_restore_body(jac, b);
+            return -1;
         }
     }
-    nm->y[c] = keep;
-    hx_newton_probe_restore(nm, b);
+    jac->y[c] = keep;
+    hx_jacobian_restore_body(jac, b);
     for (int i = 0; i < 6; ++i)
         dout[i] = (out[0][i] - out[1][i]) / (2.0 * h);
     return 0;
@@ -301,31 +302,32 @@ static void side_deformation_change(const pair_geometry *g, int side, const hx_m
 
 /* The block of an element with partials (FIESUB's own or its twin's): I
  * and J on two bodies and the outputs in J's axes (element_bodies), so that
- * a column moves one side only; hx_newton_applied_force's sums written out
+ * a column moves one side only; hx_jacobian_applied_force's sums written out
  * for it, the load's rows found once (hx_element_blocks_locate). */
-static void block_from_partials(hx_newton_matrix *nm, int k, const double *y,
+static void block_from_partials(hx_jacobian *jac, int k, const double *y,
                                 const hx_applied_force *a, const double *dfd,
                                 const int bodies[3], const int *rows)
 {
-    const hx_dynamics *d = nm->d;
-    const hx_frames *s = &d->frames;
+    const hx_dynamics *d = jac->d;
+    hx_dynamics_data *dd = &jac->dd;
+    const hx_frames *fr = &dd->frames;
     const hx_force *f = &d->m->forces[k];
-    const hx_frame *I = &s->markers[f->i_marker], *J = &s->markers[f->j_marker];
+    const hx_frame *I = &fr->markers[f->i_marker], *J = &fr->markers[f->j_marker];
     pair_geometry g;
     pair_geometry_of(I, J, &g);
     const int loaded[2] = {d->dof[a->bi].kind != HX_DOF_GROUND,
                            d->dof[a->bj].kind != HX_DOF_GROUND};
     const int free[2] = {d->dof[a->bi].kind == HX_DOF_FREE, d->dof[a->bj].kind == HX_DOF_FREE};
     double arm[2][3]; /* from each body's centre to the point of application, I */
-    v3_sub(arm[0], I->p, s->bodies[a->bi].p);
-    v3_sub(arm[1], I->p, s->bodies[a->bj].p);
+    v3_sub(arm[0], I->p, fr->bodies[a->bi].p);
+    v3_sub(arm[1], I->p, fr->bodies[a->bj].p);
     for (int side = 0; side < 2; ++side) {
         const int b = bodies[side];
         if (b < 0)
             continue;
         int columns[13];
-        const int count = hx_newton_body_columns(d, b, columns);
-        const hx_frame *fb = &s->bodies[b];
+        const int count = hx_jacobian_body_columns(d, b, columns);
+        const hx_frame *fb = &fr->bodies[b];
         for (int j = 0; j < count; ++j) {
             hx_motion mo, pm; /* the body's motion, and its marker's (I or J) */
             hx_body_column_motion(d, b, j, y, fb, &mo);
@@ -361,85 +363,84 @@ static void block_from_partials(hx_newton_matrix *nm, int k, const double *y,
                 v3_add(torque, torque, t);
                 v3_add(torque, torque, dT);
                 if (free[on] && at >= 0) {
-                    hx_newton_free_body_load(nm->values + at, nm->load_map + 12 * body, sign, dF,
+                    hx_jacobian_free_body_load(jac->values + at, jac->load_map + 12 * body, sign, dF,
                                              torque);
                     continue;
                 }
                 v3_scale(torque, torque, sign);
                 v3_scale(force, dF, sign);
-                hx_newton_body_load(nm, body, columns[j], at, force, torque);
+                hx_jacobian_body_load(jac, body, columns[j], at, force, torque);
             }
         }
     }
 }
 
 /* The block of an element by differences of its outputs alone, its load
- * applied as hx_newton_applied_force says. */
-static int block_by_differences(hx_newton_matrix *nm, int k, const double *y,
+ * applied as hx_jacobian_applied_force says. */
+static int block_by_differences(hx_jacobian *jac, int k, const double *y,
                                 const hx_applied_force *a, const int bodies[3], const int *rows)
 {
-    const hx_dynamics *d = nm->d;
+    const hx_dynamics *d = jac->d;
+    hx_dynamics_data *dd = &jac->dd;
     for (int i = 0; i < 3; ++i) {
         const int b = bodies[i];
         if (b < 0)
             continue;
         int columns[13];
-        const int count = hx_newton_body_columns(d, b, columns);
+        const int count = hx_jacobian_body_columns(d, b, columns);
         for (int j = 0; j < count; ++j) {
             hx_motion mo;
             double dout[6];
-            hx_body_column_motion(d, b, j, y, &d->frames.bodies[b], &mo);
-            if (differenced_outputs(nm, k, b, columns[j], dout) != 0)
+            hx_body_column_motion(d, b, j, y, &dd->frames.bodies[b], &mo);
+            if (differenced_outputs(jac, k, b, columns[j], dout) != 0)
                 return -1;
-            hx_newton_applied_force(nm, a, columns[j], b, &mo, dout, rows + (13 * i + j) * 2);
+            hx_jacobian_applied_force(jac, a, columns[j], b, &mo, dout, rows + (13 * i + j) * 2);
         }
     }
     return 0;
 }
 
-static int element_block(hx_newton_matrix *nm, int k, const double *y)
+static int element_block(hx_jacobian *jac, int k, const double *y)
 {
-    hx_dynamics *d = nm->d;
+    const hx_dynamics *d = jac->d;
+    hx_dynamics_data *dd = &jac->dd;
     const hx_model *m = d->m;
     const hx_force *f = &m->forces[k];
-    const hx_frames *s = &d->frames;
-    if (nm->source[k] == HX_PARTIALS_TWIN && twin_partials(nm, k) != 0)
-        return 0; /* set aside: the caller runs this element again by differences */
+    const hx_frames *fr = &dd->frames;
+    /* a twin that cannot stand in sets the element aside for differences */
+    if (jac->source[k] == HX_PARTIALS_TWIN)
+        twin_partials(jac, k);
     hx_applied_force a;
     a.bi = m->markers[f->i_marker].body;
     a.bj = m->markers[f->j_marker].body;
     const int axes = hx_force_output_axes(f);
     a.ba = axes >= 0 ? m->markers[axes].body : -1;
-    a.R_A = axes >= 0 ? s->markers[axes].R : hx_world_frame.R;
-    a.I = &s->markers[f->i_marker];
-    v3_copy(a.F, d->element_load + 6 * k);
-    v3_copy(a.T, d->element_load + 6 * k + 3);
-    const int *rows = nm->element_rows + ELEMENT_ROWS * k;
+    a.R_A = axes >= 0 ? fr->markers[axes].R : hx_world_frame.R;
+    a.I = &fr->markers[f->i_marker];
+    v3_copy(a.F, dd->element_load + 6 * k);
+    v3_copy(a.T, dd->element_load + 6 * k + 3);
+    const int *rows = jac->element_rows + ELEMENT_ROWS * k;
     int bodies[3];
     element_bodies(d, k, bodies);
-    if (nm->source[k] == HX_PARTIALS_DIFFERENCES)
-        return block_by_differences(nm, k, y, &a, bodies, rows);
-    const double *dfd = nm->source[k] == HX_PARTIALS_FIESUB ? d->element_partials + 72 * k
-                                                            : nm->twin_partials + 72 * k;
-    if (!hx_all_finite(dfd, 72)) /* a twin's were checked when taken */
-        return hx_dynamics_fail(d, "%s %d returned non-finite partials (dfddis, dfdvel) at t = %g",
-                                d->force_binding[k]->element, d->force_binding[k]->id, s->time);
+    if (jac->source[k] == HX_PARTIALS_DIFFERENCES)
+        return block_by_differences(jac, k, y, &a, bodies, rows);
+    const double *dfd = jac->source[k] == HX_PARTIALS_FIESUB ? dd->element_partials + 72 * k
+                                                            : jac->twin_partials + 72 * k;
+    if (jac->source[k] == HX_PARTIALS_FIESUB && /* a twin's were checked when taken */
+        hx_dynamics_check_call(d, dd, d->force_binding[k], dfd, 72,
+                               "value among its partials (dfddis, dfdvel)", fr->time) != 0)
+        return -1;
     /* with partials the outputs are in J's axes (hx_element_blocks_init), and
      * I and J are on two bodies (the model's reader refuses one) */
-    block_from_partials(nm, k, y, &a, dfd, bodies, rows);
+    block_from_partials(jac, k, y, &a, dfd, bodies, rows);
     return 0;
 }
 
-int hx_element_blocks(hx_newton_matrix *nm, double t, const double *y)
+int hx_element_blocks(hx_jacobian *jac, double t, const double *y)
 {
     (void)t;
-    for (int k = 0; k < nm->nf; ++k) {
-        const hx_partials_source before = nm->source[k];
-        if (element_block(nm, k, y) != 0)
+    for (int k = 0; k < jac->nf; ++k)
+        if (element_block(jac, k, y) != 0)
             return -1;
-        if (before == HX_PARTIALS_TWIN && nm->source[k] == HX_PARTIALS_DIFFERENCES &&
-            element_block(nm, k, y) != 0)
-            return -1;
-    }
     return 0;
 }

@@ -12,7 +12,7 @@
 #include <string.h>
 
 #include "sim/dynamics/stateeqns.h"
-#include "sim/newton/newton_parts.h"
+#include "sim/jacobian/jacobian_parts.h"
 
 typedef struct pairs {
     int *rows, *cols;
@@ -46,7 +46,7 @@ static void body_by_body(pairs *p, const hx_dynamics *d, int b, int c, int all_r
     if (b < 0 || c < 0 || d->dof[b].kind == HX_DOF_GROUND)
         return;
     int rows[13], cols[13];
-    const int nr = hx_newton_body_columns(d, b, rows), nc = hx_newton_body_columns(d, c, cols);
+    const int nr = hx_jacobian_body_columns(d, b, rows), nc = hx_jacobian_body_columns(d, c, cols);
     const int first = all_rows ? 0 : nr - (d->dof[b].kind == HX_DOF_FREE ? 6 : 1);
     for (int i = first; i < nr; ++i)
         for (int j = 0; j < nc; ++j)
@@ -85,7 +85,7 @@ static void state_element(pairs *p, const hx_dynamics *d, int k)
             add(p, x0 + i, x0 + j);
         for (int l = 0; l < nmeasured; ++l) {
             int cols[13];
-            const int nc = hx_newton_body_columns(d, measured[l], cols);
+            const int nc = hx_jacobian_body_columns(d, measured[l], cols);
             for (int j = 0; j < nc; ++j)
                 add(p, x0 + i, cols[j]);
         }
@@ -95,7 +95,7 @@ static void state_element(pairs *p, const hx_dynamics *d, int k)
         if (out[s] < 0 || d->dof[out[s]].kind == HX_DOF_GROUND)
             continue;
         int rows[13];
-        const int nr = hx_newton_body_columns(d, out[s], rows);
+        const int nr = hx_jacobian_body_columns(d, out[s], rows);
         const int first = nr - (d->dof[out[s]].kind == HX_DOF_FREE ? 6 : 1);
         for (int i = first; i < nr; ++i)
             for (int j = 0; j < ns; ++j)
@@ -104,40 +104,40 @@ static void state_element(pairs *p, const hx_dynamics *d, int k)
 }
 
 /* The coupled velocities' rows: each on every column any of them has. */
-static void coupled_rows(pairs *p, const hx_newton_matrix *nm)
+static void coupled_rows(pairs *p, const hx_jacobian *jac)
 {
-    const hx_dynamics *d = nm->d;
-    if (nm->ncoupled == 0)
+    const hx_dynamics *d = jac->d;
+    if (jac->ncoupled == 0)
         return;
-    unsigned char *is_row = calloc((size_t)nm->n, 1), *is_col = calloc((size_t)nm->n, 1);
+    unsigned char *is_row = calloc((size_t)jac->n, 1), *is_col = calloc((size_t)jac->n, 1);
     if (is_row == NULL || is_col == NULL) {
         free(is_row), free(is_col);
         p->failed = 1;
         return;
     }
-    for (int i = 0; i < nm->ncoupled; ++i)
-        is_row[d->nq + nm->coupled[i]] = 1;
+    for (int i = 0; i < jac->ncoupled; ++i)
+        is_row[d->nq + jac->coupled[i]] = 1;
     const long before = p->count;
     for (long k = 0; k < before; ++k)
         if (is_row[p->rows[k]])
             is_col[p->cols[k]] = 1;
-    for (int i = 0; i < nm->ncoupled; ++i)
-        is_col[d->nq + nm->coupled[i]] = 1;
+    for (int i = 0; i < jac->ncoupled; ++i)
+        is_col[d->nq + jac->coupled[i]] = 1;
     for (int b = 0; b < d->m->nbodies; ++b) /* the coupled joints' coordinates */
-        for (int i = 0; i < nm->ncoupled; ++i)
+        for (int i = 0; i < jac->ncoupled; ++i)
             if (d->dof[b].kind != HX_DOF_FREE && d->dof[b].kind != HX_DOF_GROUND &&
-                d->dof[b].u == nm->coupled[i])
+                d->dof[b].u == jac->coupled[i])
                 is_col[d->dof[b].q] = 1;
-    for (int c = 0; c < nm->n; ++c)
+    for (int c = 0; c < jac->n; ++c)
         if (is_col[c])
-            for (int i = 0; i < nm->ncoupled; ++i)
-                add(p, d->nq + nm->coupled[i], c);
+            for (int i = 0; i < jac->ncoupled; ++i)
+                add(p, d->nq + jac->coupled[i], c);
     free(is_row), free(is_col);
 }
 
-int hx_newton_pattern(hx_newton_matrix *nm)
+int hx_jacobian_pattern(hx_jacobian *jac, hx_message *msg)
 {
-    const hx_dynamics *d = nm->d;
+    const hx_dynamics *d = jac->d;
     const hx_model *m = d->m;
     pairs p = {0};
     for (int b = 0; b < m->nbodies; ++b)
@@ -163,11 +163,12 @@ int hx_newton_pattern(hx_newton_matrix *nm)
             int cols[DIFF_COLUMNS_MAX];
             const int nc = hx_diff_columns(d, k, cols, DIFF_COLUMNS_MAX);
             for (int j = 0; j < nc; ++j)
-                add(&p, d->diffs + m->routines[k].slot, cols[j]);
+                add(&p, d->diff_offset + m->routines[k].slot, cols[j]);
         }
-    coupled_rows(&p, nm);
-    int status = p.failed ? -1 : hx_sparsity_from_pairs(&nm->pattern, nm->n, p.rows, p.cols, p.count);
+    coupled_rows(&p, jac);
+    const int status =
+        p.failed ? -1 : hx_sparsity_from_pairs(&jac->pattern, jac->n, p.rows, p.cols, p.count);
     free(p.rows);
     free(p.cols);
-    return status;
+    return status == 0 ? 0 : hx_fail(msg, "out of memory for the Jacobian's pattern");
 }

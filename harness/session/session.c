@@ -1,5 +1,5 @@
 /* Opening and closing a harness session (session.h). */
-#include "host/session.h"
+#include "session/session.h"
 
 #include <errno.h>
 #include <stdlib.h>

@@ -9,16 +9,16 @@
 #include <string.h>
 
 #include "sim/dynamics/constraints.h"
-#include "sim/newton/newton_parts.h"
+#include "sim/jacobian/jacobian_parts.h"
 
 /* The coupled rows of column c through P. */
-static void project_column(hx_newton_matrix *nm, int c, double *v, double *w, int *at)
+static void project_column(hx_jacobian *jac, int c, double *v, double *w, int *at)
 {
-    const int k = nm->ncoupled, row0 = nm->d->nq;
+    const int k = jac->ncoupled, row0 = jac->d->nq;
     int any = 0;
     for (int i = 0; i < k; ++i) {
-        at[i] = hx_sparsity_find(&nm->pattern, row0 + nm->coupled[i], c);
-        v[i] = at[i] >= 0 ? nm->values[at[i]] : 0.0;
+        at[i] = hx_sparsity_find(&jac->pattern, row0 + jac->coupled[i], c);
+        v[i] = at[i] >= 0 ? jac->values[at[i]] : 0.0;
         any |= v[i] != 0.0;
     }
     if (!any)
@@ -26,65 +26,67 @@ static void project_column(hx_newton_matrix *nm, int c, double *v, double *w, in
     for (int i = 0; i < k; ++i) {
         double s = 0.0;
         for (int j = 0; j < k; ++j)
-            s += nm->projector[i + k * j] * v[j];
+            s += jac->projector[i + k * j] * v[j];
         w[i] = s;
     }
     for (int i = 0; i < k; ++i) {
         if (at[i] >= 0)
-            nm->values[at[i]] = w[i];
+            jac->values[at[i]] = w[i];
         else if (w[i] != 0.0)
-            nm->outside++;
+            jac->outside++;
     }
 }
 
 /* The constraint stage at y with the free accelerations held: the coupled
  * velocities' accelerations into out. */
-static int stage(hx_newton_matrix *nm, double t, const double *y, double *accel, double *out)
+static int stage(hx_jacobian *jac, double t, const double *y, double *accel, double *out)
 {
-    hx_dynamics *d = nm->d;
-    memcpy(accel, d->free_accelerations, sizeof(double) * (size_t)d->nu);
-    if (hx_constraints_apply(d, t, y, accel) != 0)
+    const hx_dynamics *d = jac->d;
+    hx_dynamics_data *dd = &jac->dd;
+    memcpy(accel, dd->free_accelerations, sizeof(double) * (size_t)d->nu);
+    if (hx_constraints_apply(d, dd, t, y, accel) != 0)
         return -1;
-    for (int i = 0; i < nm->ncoupled; ++i)
-        out[i] = accel[nm->coupled[i]];
+    for (int i = 0; i < jac->ncoupled; ++i)
+        out[i] = accel[jac->coupled[i]];
     return 0;
 }
 
-int hx_coupler_blocks(hx_newton_matrix *nm, double t, const double *y)
+int hx_coupler_blocks(hx_jacobian *jac, double t, const double *y)
 {
-    hx_dynamics *d = nm->d;
-    const int k = nm->ncoupled;
+    const hx_dynamics *d = jac->d;
+    hx_dynamics_data *dd = &jac->dd;
+    const int k = jac->ncoupled;
     if (k == 0)
         return 0;
-    double *v = nm->coupler_work, *w = v + k;
-    if (hx_constraints_projector(d, t, y, nm->coupled, k, w + k, nm->projector) != 0)
+    double *v = jac->coupler_work, *w = v + k;
+    if (hx_constraints_projector(d, dd, t, y, jac->coupled, k, w + k, jac->projector) != 0)
         return -1;
-    for (int c = 0; c < nm->n; ++c)
-        project_column(nm, c, v, w, nm->coupled_at);
+    for (int c = 0; c < jac->n; ++c)
+        project_column(jac, c, v, w, jac->coupled_at);
     /* the stage's own dependence on the coupled joints' coordinates and rates */
-    double *accel = nm->f_plus, *plus = nm->f_minus, *minus = plus + k;
+    double *accel = jac->f_plus, *plus = jac->f_minus, *minus = plus + k;
     for (int b = 0; b < d->m->nbodies; ++b) {
         const hx_body_dof *dof = &d->dof[b];
         int coupled = 0;
         for (int i = 0; i < k && !coupled; ++i)
             coupled = (dof->kind == HX_DOF_REVOLUTE || dof->kind == HX_DOF_SLIDER) &&
-                      nm->coupled[i] == dof->u;
+                      jac->coupled[i] == dof->u;
         if (!coupled)
             continue;
         const int columns[2] = {dof->q, d->nq + dof->u};
         for (int j = 0; j < 2; ++j) {
             const int c = columns[j];
-            const double keep = nm->y[c], h = hx_newton_step(nm->y, c);
-            nm->y[c] = keep + h;
-            int status = stage(nm, t, nm->y, accel, plus);
-            nm->y[c] = keep - h;
-            status |= stage(nm, t, nm->y, accel, minus);
-            nm->y[c] = keep;
+            const double keep = jac->y[c], h = hx_jacobian_step(jac->y, c);
+            jac->y[c] = keep + h;
+            int status = stage(jac, t, jac->y, accel, plus);
+            jac->y[c] = keep - h;
+            status |= stage(jac, t, jac->y, accel, minus);
+            jac->y[c] = keep;
             if (status != 0)
                 return -1;
             for (int i = 0; i < k; ++i) {
                 const double slope = (plus[i] - minus[i]) / (2.0 * h);
-                hx_newton_add(nm, d->nq + nm->coupled[i], 1, c, &slope);
+                hx_jacobian_add(jac, d->nq + jac->coupled[i], 1, c, &slope);
             }
         }
     }

@@ -5,22 +5,22 @@
  */
 #include "base/vecmath.h"
 #include "sim/dynamics/loads.h"
-#include "sim/newton/newton_parts.h"
+#include "sim/jacobian/jacobian_parts.h"
 
 /* What share puts on its i-th body: F and the torque about its centre. */
-static void wrench(const hx_load_share *share, int i, const hx_frames *s, double F[3], double T[3])
+static void wrench(const hx_load_share *share, int i, const hx_frames *fr, double F[3], double T[3])
 {
     double arm[3];
     v3_copy(F, share->F[i]);
-    v3_sub(arm, share->point[i], s->bodies[share->body[i]].p);
+    v3_sub(arm, share->point[i], fr->bodies[share->body[i]].p);
     v3_cross(T, arm, share->F[i]);
     v3_add(T, T, share->T[i]);
 }
 
-int hx_load_blocks(hx_newton_matrix *nm, double t, const double *y)
+int hx_load_blocks(hx_jacobian *jac, double t, const double *y)
 {
     (void)y;
-    const hx_dynamics *d = nm->d;
+    const hx_dynamics *d = jac->d;
     const hx_model *m = d->m;
     for (int k = 0; k < m->nloads; ++k) {
         const hx_load *l = &m->loads[k];
@@ -32,26 +32,26 @@ int hx_load_blocks(hx_newton_matrix *nm, double t, const double *y)
             if (b < 0 || d->dof[b].kind == HX_DOF_GROUND || (i == 1 && b == bodies[0]))
                 continue;
             int columns[13];
-            const int count = hx_newton_body_columns(d, b, columns);
+            const int count = hx_jacobian_body_columns(d, b, columns);
             for (int j = 0; j < count; ++j) {
                 const int c = columns[j];
-                const double keep = nm->y[c], h = hx_newton_step(nm->y, c);
+                const double keep = jac->y[c], h = hx_jacobian_step(jac->y, c);
                 hx_load_share share[2];
                 double W[2][2][6]; /* side, application, (F, T) */
                 for (int side = 0; side < 2; ++side) {
-                    nm->y[c] = keep + (side == 0 ? h : -h);
-                    hx_newton_probe_move(nm, b, nm->y);
-                    hx_load_share_at(d, &nm->probe, t, k, &share[side]);
+                    jac->y[c] = keep + (side == 0 ? h : -h);
+                    hx_jacobian_move_body(jac, b, jac->y);
+                    hx_load_share_at(d->m, &jac->moved, t, k, &share[side]);
                     for (int a = 0; a < share[side].count; ++a)
-                        wrench(&share[side], a, &nm->probe, W[side][a], W[side][a] + 3);
+                        wrench(&share[side], a, &jac->moved, W[side][a], W[side][a] + 3);
                 }
-                nm->y[c] = keep;
-                hx_newton_probe_restore(nm, b);
+                jac->y[c] = keep;
+                hx_jacobian_restore_body(jac, b);
                 for (int a = 0; a < share[0].count; ++a) {
                     double dW[6];
                     for (int r = 0; r < 6; ++r)
                         dW[r] = (W[0][a][r] - W[1][a][r]) / (2.0 * h);
-                    hx_newton_body_load(nm, share[0].body[a], c, -1, dW, dW + 3);
+                    hx_jacobian_body_load(jac, share[0].body[a], c, -1, dW, dW + 3);
                 }
             }
         }

@@ -1,8 +1,7 @@
 /*
- * The Jacobian J = df/dy of the dynamics for the implicit integrator's
- * Newton iterations, sparse and assembled element by element (as a
- * multibody solver assembles it), never by differences of the whole
- * right-hand side:
+ * The Jacobian J = df/dy of the dynamics, for BDF's Newton matrix I - gamma J
+ * (sim/ode/bdf.c), sparse and assembled element by element (as a multibody
+ * solver assembles it), never by differences of the whole right-hand side:
  *
  *   - each body's own block, analytic (body_blocks.c): the quaternion
  *     kinematics, the gyroscopic terms, the turning of the body's loads into
@@ -18,19 +17,23 @@
  *     differences of YFOSUB) with its inputs' slopes, by differences of the
  *     harness's measures on the bodies they measure;
  *   - the couplers (coupler_blocks.c): the accelerations they project, P
- *     J_free, plus their own terms by differences of the constraint stage.
+ *     J_free, plus their own terms by differences of the constraint stage;
+ *   - the routines (routine_blocks.c): Control_Diff rows by differences of
+ *     DIFSUB; a driven joint's rows, functions of time alone, zero.
  *
  * Its cost grows with the number of elements. The work accumulators' rows
  * are left out (their diagonal only): nothing depends on them, so Newton's
  * method gives them their exact update without.
  *
- * The elements' outputs, FIESUB's partials and the bodies' loads come from
- * the right-hand side the integrator evaluated at the same (t, y) (kept by
- * the dynamics); only a GFOSUB's FIESUB twin, or a GFOSUB without one, is
- * called again.
+ * A build is a function of its arguments: it evaluates the dynamics at
+ * (t, y) on its own data (jac->dd, asking Force_Field elements for their
+ * partials), and every difference it takes moves its own scratch frames
+ * (jac->moved), never the run's evaluation. Each force element's source of
+ * partials is decided at set-up; a FIESUB twin that cannot stand in for its
+ * GFOSUB at some build sets the element aside for differences for good.
  */
-#ifndef HX_SIM_NEWTON_NEWTON_MATRIX_H
-#define HX_SIM_NEWTON_NEWTON_MATRIX_H
+#ifndef HX_SIM_JACOBIAN_JACOBIAN_H
+#define HX_SIM_JACOBIAN_JACOBIAN_H
 
 #include "sim/dynamics/dynamics.h"
 #include "sim/ode/sparsity.h"
@@ -41,46 +44,54 @@ typedef enum hx_partials_source {
     HX_PARTIALS_DIFFERENCES /* differences of that GFOSUB element alone */
 } hx_partials_source;
 
-#define HX_NEWTON_WHY 160
+#define HX_JACOBIAN_WHY 160
 
-typedef struct hx_newton_matrix {
-    hx_dynamics *d;
+typedef struct hx_jacobian {
+    const hx_dynamics *d;
+    hx_dynamics_data dd;        /* the dynamics at the build's (t, y), with partials */
     int n, m;                   /* state size; positions and velocities */
     int nf;                     /* force elements */
     hx_sparsity pattern;        /* where J can be nonzero (pattern.c) */
     double *values;             /* the build in progress: J in the pattern's order */
     long outside;               /* entries a build found outside the pattern (a defect) */
-    hx_partials_source *source; /* per force element */
-    char *why;                  /* per element, HX_NEWTON_WHY: why differences */
+    hx_partials_source *source; /* per force element, decided at the first build */
+    char *why;                  /* per element, HX_JACOBIAN_WHY: why differences */
     double *twin_partials;      /* 72 per force element: the twins' dfddis, dfdvel */
     double *load_map;           /* per free body, 12: [0] ucf/m, [3..11] ucf I^-1 R^T
                                  * (row-major) at the build's state (body_blocks.c) */
     int *element_rows;          /* per force element, ELEMENT_ROWS: where its bodies' rows
                                  * sit in its columns (element_blocks.c) */
-    hx_frames probe;             /* the state at y with one body moved (differences) */
+    hx_frames moved;            /* jac->dd's frames with one body moved (differences) */
     int *body_markers, *body_marker_start; /* each body's tracked markers */
     /* Force_StateEqn elements (stateeqn_blocks.c) */
-    struct hx_stateeqn_blocks *states;
+    struct hx_stateeqn_blocks *stateeqn_blocks;
     /* couplers (coupler_blocks.c) */
     int ncoupled;               /* coupled velocities */
     int *coupled;               /* their indices into u */
     int *coupled_at;            /* scratch: where their rows sit in one column */
     double *projector, *coupler_work; /* P (ncoupled^2); gathered rows; the solve's */
+    /* driven joints (routine_blocks.c): the y rows whose rate is a function of
+     * time alone, marked once */
+    unsigned char *driven;
     double *y, *f_plus, *f_minus;     /* scratch: n each */
     hx_messages twin_messages;  /* the twins' own messages, apart from the session's */
-    long evaluations;           /* right-hand sides the builds evaluated themselves */
+    long evaluations;           /* right-hand sides the builds evaluated */
     long partial_calls;         /* element calls made for partials */
-} hx_newton_matrix;
+} hx_jacobian;
 
-/* Returns 0, or -1 with msg (out of memory). */
-int hx_newton_matrix_init(hx_newton_matrix *nm, hx_dynamics *d, hx_message *msg);
-void hx_newton_matrix_free(hx_newton_matrix *nm);
+/* Returns 0, or -1 with msg (out of memory, or a callee's reason). */
+int hx_jacobian_init(hx_jacobian *jac, const hx_dynamics *d, hx_message *msg);
+void hx_jacobian_free(hx_jacobian *jac);
 
-/* J at (t, y) into values (nm->pattern.nnz, the pattern's order). Returns 0,
- * or -1 (d->message) when an element or the constraints failed. */
-int hx_newton_matrix_build(hx_newton_matrix *nm, double t, const double *y, double *values);
+/* J at (t, y) into values (jac->pattern.nnz, the pattern's order); fy =
+ * f(t, y) as the integrator has it (the assembly takes every element's
+ * outputs at (t, y) itself, with their partials, which fy does not hold).
+ * Returns 0, or -1 (jac->dd.message) when an element or the constraints
+ * failed. */
+int hx_jacobian_build(hx_jacobian *jac, double t, const double *y, const double *fy,
+                      double *values);
 
 /* Where each element's partials come from, in a line or two. */
-void hx_newton_matrix_describe(const hx_newton_matrix *nm, char *text, size_t size);
+void hx_jacobian_describe(const hx_jacobian *jac, char *text, size_t size);
 
 #endif

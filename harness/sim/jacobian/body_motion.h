@@ -8,8 +8,8 @@
  * made unit (bodies.h), so a change of the quaternion along itself is no
  * motion at all.
  */
-#ifndef HX_SIM_NEWTON_BODY_MOTION_H
-#define HX_SIM_NEWTON_BODY_MOTION_H
+#ifndef HX_SIM_JACOBIAN_BODY_MOTION_H
+#define HX_SIM_JACOBIAN_BODY_MOTION_H
 
 #include "sim/dynamics/dynamics.h"
 
@@ -18,7 +18,7 @@ typedef struct hx_motion {
 } hx_motion;
 
 /* The motion of body b (frame f at y) per unit of its column `which`
- * (0 .. count - 1 in hx_newton_body_columns' order). */
+ * (0 .. count - 1 in hx_jacobian_body_columns' order). */
 void hx_body_column_motion(const hx_dynamics *d, int b, int which, const double *y,
                            const hx_frame *f, hx_motion *mo);
 

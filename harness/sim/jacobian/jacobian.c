@@ -1,0 +1,112 @@
+/* The Jacobian of the dynamics, assembled element by element (jacobian.h). */
+#include "sim/jacobian/jacobian_parts.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim/dynamics/constraints.h"
+
+int hx_jacobian_init(hx_jacobian *jac, const hx_dynamics *d, hx_message *msg)
+{
+    memset(jac, 0, sizeof *jac);
+    hx_messages_init(&jac->twin_messages, NULL);
+    jac->d = d;
+    jac->n = d->n;
+    jac->m = d->nq + d->nu;
+    jac->nf = d->m->nforces;
+    if (hx_dynamics_data_init(&jac->dd, d, msg) != 0) {
+        hx_jacobian_free(jac);
+        return -1;
+    }
+    const int nc = d->m->ncouplers;
+    jac->y = calloc(3 * (size_t)jac->n + 1, sizeof(double));
+    jac->coupled = calloc((size_t)d->nu + 1, sizeof(int));
+    jac->load_map = calloc(12 * ((size_t)d->m->nbodies + 1), sizeof(double));
+    jac->driven = calloc((size_t)jac->n + 1, 1);
+    int ok = jac->y != NULL && jac->coupled != NULL && jac->load_map != NULL &&
+             jac->driven != NULL && hx_jacobian_marker_lists(jac) == 0 &&
+             hx_frames_clone(&jac->moved, &jac->dd.frames) == 0;
+    if (ok) {
+        jac->f_plus = jac->y + jac->n;
+        jac->f_minus = jac->f_plus + jac->n;
+        jac->ncoupled = nc > 0 ? hx_constraints_coupled(d, jac->coupled) : 0;
+        const size_t k = (size_t)jac->ncoupled;
+        jac->projector = calloc(k * k + 2 * k + (size_t)nc * ((size_t)nc + 1) + 1, sizeof(double));
+        jac->coupler_work = jac->projector + k * k;
+        jac->coupled_at = calloc(k + 1, sizeof(int));
+        ok = jac->projector != NULL && jac->coupled_at != NULL;
+    }
+    if (!ok) {
+        hx_jacobian_free(jac);
+        return hx_fail(msg, "out of memory");
+    }
+    /* each part says why it failed */
+    if (hx_element_blocks_init(jac, msg) != 0 || hx_stateeqn_blocks_init(jac, msg) != 0 ||
+        hx_routine_blocks_init(jac, msg) != 0 || hx_jacobian_pattern(jac, msg) != 0) {
+        hx_jacobian_free(jac);
+        return -1;
+    }
+    hx_element_blocks_locate(jac);
+    return 0;
+}
+
+void hx_jacobian_free(hx_jacobian *jac)
+{
+    hx_sparsity_free(&jac->pattern);
+    free(jac->source);
+    free(jac->why);
+    free(jac->twin_partials);
+    free(jac->element_rows);
+    free(jac->load_map);
+    hx_frames_free(&jac->moved);
+    free(jac->body_markers);
+    free(jac->body_marker_start);
+    hx_stateeqn_blocks_free(jac);
+    free(jac->coupled);
+    free(jac->coupled_at);
+    free(jac->projector);
+    free(jac->driven);
+    free(jac->y);
+    hx_dynamics_data_free(&jac->dd);
+    hx_messages_destroy(&jac->twin_messages);
+    memset(jac, 0, sizeof *jac);
+}
+
+int hx_jacobian_build(hx_jacobian *jac, double t, const double *y, const double *fy,
+                      double *values)
+{
+    (void)fy; /* the elements' partials come with their outputs, which fy does not hold */
+    const hx_dynamics *d = jac->d;
+    hx_dynamics_data *dd = &jac->dd;
+    jac->evaluations++;
+    if (hx_dynamics_evaluate(d, dd, t, y, jac->f_plus, HX_EVALUATE_PARTIALS) != 0)
+        return -1;
+    jac->values = values;
+    memset(values, 0, sizeof(double) * (size_t)jac->pattern.nnz);
+    memcpy(jac->y, y, sizeof(double) * (size_t)jac->n);
+    hx_frames_copy(&jac->moved, &dd->frames);
+    hx_body_blocks(jac, y);
+    /* the element blocks read dd's outputs of this evaluation; the coupler and
+     * routine blocks evaluate stages of dd again at moved states, after them */
+    const int status = hx_element_blocks(jac, t, y) != 0 || hx_load_blocks(jac, t, y) != 0 ||
+                       hx_stateeqn_blocks(jac, t, y) != 0 || hx_coupler_blocks(jac, t, y) != 0 ||
+                       hx_routine_blocks(jac, t, y) != 0;
+    return status ? -1 : 0;
+}
+
+void hx_jacobian_describe(const hx_jacobian *jac, char *text, size_t size)
+{
+    int counts[3] = {0, 0, 0};
+    for (int k = 0; k < jac->nf; ++k)
+        counts[jac->source[k]]++;
+    int len = snprintf(text, size, "Jacobian from the elements' partials: %d by FIESUB's own,"
+                       " %d by their FIESUB twin, %d by differences of the element alone",
+                       counts[0], counts[1], counts[2]);
+    for (int k = 0; k < jac->nf && len > 0 && (size_t)len < size; ++k)
+        if (jac->source[k] == HX_PARTIALS_DIFFERENCES)
+            len += snprintf(text + len, size - (size_t)len, "\n    %s %d by differences: %s",
+                            jac->d->force_binding[k]->element, jac->d->force_binding[k]->id,
+                            jac->why + k * HX_JACOBIAN_WHY);
+    hx_stateeqn_blocks_describe(jac, text, size);
+}

@@ -1,0 +1,149 @@
+/* Helpers of the tests that open a model, run it and compare states (model_runs.h). */
+#include "model_runs.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim/jacobian/jacobian.h"
+#include "test_support.h"
+
+void open_model(model *m, const char *path)
+{
+    hx_message msg;
+    memset(m, 0, sizeof *m);
+    if (hx_session_open(&m->session, path, stderr, &msg) != 0 ||
+        hx_dynamics_init(&m->d, &m->session, &msg) != 0 ||
+        hx_dynamics_data_init(&m->data, &m->d, &msg) != 0)
+        fail_msg("%s: %s", path, msg.text);
+}
+
+double *model_state(const model *m)
+{
+    double *y = calloc((size_t)m->d.n, sizeof(double));
+    assert_non_null(y);
+    return y;
+}
+
+void model_initial_state(model *m, double *y)
+{
+    if (hx_dynamics_initial_state(&m->d, &m->data, y) != 0)
+        fail_msg("%s", m->data.message);
+}
+
+void close_model(model *m)
+{
+    hx_dynamics_data_free(&m->data);
+    hx_dynamics_free(&m->d);
+    hx_session_close(&m->session);
+}
+
+/* The model from its initial state to t_end; y receives the end state.
+ * atol = rtol * atol_ratio. */
+hx_simulation_result simulate_with(model *m, hx_method method, hx_jacobian_method jacobian,
+                                   double rtol, double atol_ratio, double t_end, double *y)
+{
+    hx_simulation_options so = {0};
+    hx_integrator_defaults(&so.integration);
+    so.integration.method = method;
+    so.integration.jacobian = jacobian;
+    so.integration.rtol = rtol;
+    so.integration.atol = rtol * atol_ratio;
+    so.integration.t_end = t_end;
+    so.integration.output_interval = t_end;
+    so.skip_energy = 1;
+    hx_simulation_result r;
+    hx_simulate(&m->d, &so, y, &r);
+    return r;
+}
+
+hx_simulation_result simulate(model *m, hx_method method, hx_jacobian_method jacobian,
+                              double rtol, double t_end, double *y)
+{
+    return simulate_with(m, method, jacobian, rtol, 1e-3, t_end, y);
+}
+
+/* Largest difference of positions and velocities, relative to the largest
+ * of each kind (translations, quaternions, velocities, angular velocities and
+ * joint coordinates apart): excursions from y0, and velocities at the end or
+ * at the start (a motion that has died away is measured against its start). */
+double state_difference(const hx_dynamics *d, const double *a, const double *b, const double *y0)
+{
+    double worst = 0.0;
+    for (int pass = 0; pass < 2; ++pass)
+        for (int body = 0; body < d->m->nbodies; ++body) {
+            const hx_body_dof *dof = &d->dof[body];
+            if (dof->kind == HX_DOF_GROUND)
+                continue;
+            const int free = dof->kind == HX_DOF_FREE;
+            const int groups[4][2] = {{dof->q, free ? 3 : 1},
+                                      {dof->q + 3, free ? 4 : 0},
+                                      {d->nq + dof->u, free ? 3 : 1},
+                                      {d->nq + dof->u + 3, free ? 3 : 0}};
+            for (int g = 0; g < 4; ++g) {
+                double size = 0.0, diff = 0.0;
+                for (int i = groups[g][0]; i < groups[g][0] + groups[g][1]; ++i) {
+                    const double base = g == 0 ? y0[i] : 0.0;
+                    size = fmax(size, fmax(fabs(a[i] - base), fabs(b[i] - base)));
+                    if (g >= 2)
+                        size = fmax(size, fabs(y0[i]));
+                    diff = fmax(diff, fabs(a[i] - b[i]));
+                }
+                if (size > 1e-9)
+                    worst = fmax(worst, diff / size);
+            }
+        }
+    return worst;
+}
+
+int is_model(const struct dirent *e)
+{
+    const size_t n = strlen(e->d_name);
+    return n > 4 && strcmp(e->d_name + n - 4, ".xml") == 0;
+}
+
+
+/* A 1 kg body on the test library's FIESUB: soft, damped translations, and
+ * rotations on a stiff overdamped spring (|lambda| near 2e4 1/s), reported
+ * partials scaled by `scale`. */
+const char *scaled_field_model(const char *name, const char *element)
+{
+    static char xml[4096];
+    snprintf(xml, sizeof xml,
+             "<MotionSolve><Model>\n"
+             "<Param_Unit force_unit=\"NEWTON\" mass_unit=\"KILOGRAM\" length_unit=\"MILLIMETER\""
+             " time_unit=\"SECOND\"/>\n"
+             "<Body_Ground id=\"1\"/><Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+             "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"100\" inertia_yy=\"100\""
+             " inertia_zz=\"100\" v_ic_x=\"100\" v_ic_y=\"-40\" w_ic_z=\"2\" w_ic_x=\"1\"/>\n"
+             "<Reference_Marker id=\"20\" body_id=\"2\"/>\n%s</Model></MotionSolve>\n", element);
+    return test_write_file(name, xml);
+}
+
+double *bdf_on(const char *path, double rtol, double t_end, hx_simulation_result *r,
+               hx_partials_source *source, char *description)
+{
+    model m;
+    open_model(&m, path);
+    double *y = model_state(&m);
+    *r = simulate(&m, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, rtol, t_end, y);
+    if (description != NULL)
+        snprintf(description, 1024, "%s", r->jacobian);
+    if (source != NULL) { /* where the partials came from, after the run */
+        hx_jacobian jac;
+        hx_message msg;
+        assert_int_equal(hx_jacobian_init(&jac, &m.d, &msg), 0);
+        double *J = calloc((size_t)jac.pattern.nnz + 1, sizeof(double));
+        double *fy = model_state(&m);
+        assert_non_null(J);
+        assert_int_equal(hx_dynamics_rhs(&m.d, &m.data, t_end, y, fy), 0);
+        assert_int_equal(hx_jacobian_build(&jac, t_end, y, fy, J), 0);
+        *source = jac.source[0];
+        hx_jacobian_free(&jac);
+        free(J), free(fy);
+    }
+    close_model(&m);
+    return y;
+}
+

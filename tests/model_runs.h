@@ -1,0 +1,58 @@
+/*
+ * Helpers of the tests that open a model, run it and compare states (the
+ * Jacobian, BDF and energy tests): a session with its dynamics and a data of
+ * the test's own, runs to a time, and a difference of two states that is
+ * fair to every kind of coordinate.
+ */
+#ifndef MODEL_RUNS_H
+#define MODEL_RUNS_H
+
+#include <dirent.h>
+
+#include "sim/jacobian/jacobian.h"
+#include "sim/simulation/simulation.h"
+
+typedef struct model {
+    hx_session session;
+    hx_dynamics d;
+    hx_dynamics_data data; /* the test's own evaluations */
+} model;
+
+/* Opens the model at path; fails the test when it does not open. */
+void open_model(model *m, const char *path);
+void close_model(model *m);
+/* A state of the model's size (calloc'ed; the caller frees it). */
+double *model_state(const model *m);
+/* The model's initial state into y; fails the test on an error. */
+void model_initial_state(model *m, double *y);
+
+/* The model from its initial state to t_end; y receives the end state.
+ * atol = rtol * atol_ratio. */
+hx_simulation_result simulate_with(model *m, hx_method method, hx_jacobian_method jacobian,
+                                   double rtol, double atol_ratio, double t_end, double *y);
+/* The same with atol = rtol * 1e-3. */
+hx_simulation_result simulate(model *m, hx_method method, hx_jacobian_method jacobian,
+                              double rtol, double t_end, double *y);
+
+/* Largest difference of positions and velocities, relative to the largest
+ * of each kind (translations, quaternions, velocities, angular velocities and
+ * joint coordinates apart): excursions from y0, and velocities at the end or
+ * at the start (a motion that has died away is measured against its start). */
+double state_difference(const hx_dynamics *d, const double *a, const double *b, const double *y0);
+
+/* scandir's filter of model files (.xml). */
+int is_model(const struct dirent *e);
+
+/* A 1 kg body on the element written in `element` (a field or spring of
+ * tests/implicit_support/scaled_field.c: soft, damped translations, and
+ * rotations on a stiff overdamped spring), written to the temporary folder
+ * as name; its path. */
+const char *scaled_field_model(const char *name, const char *element);
+/* BDF on the model at path to t_end at rtol, its result in r: the end state
+ * (malloc'ed; the caller frees it); source (may be NULL) where the first
+ * element's partials came from after the run, description (may be NULL,
+ * 1024 characters) the run's account of its Jacobian. */
+double *bdf_on(const char *path, double rtol, double t_end, hx_simulation_result *r,
+               hx_partials_source *source, char *description);
+
+#endif
