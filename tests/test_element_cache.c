@@ -60,10 +60,10 @@ static void set_up_once(void **state)
     (void)state;
     const double par[] = {1.5, 2.0};
     int now;
-    const fake_model *a = get(ELEMENT_GFOSUB, 7, par, 2, &now);
+    const fake_model *a = get(USRSUB_ELEMENT_GFOSUB, 7, par, 2, &now);
     assert_int_equal(now, 1);
     const double same[] = {1.5, 2.0}; /* another buffer, same values */
-    const fake_model *b = get(ELEMENT_GFOSUB, 7, same, 2, &now);
+    const fake_model *b = get(USRSUB_ELEMENT_GFOSUB, 7, same, 2, &now);
     assert_int_equal(now, 0);
     assert_ptr_equal(a, b);
     assert_int_equal(atomic_load(&setups), 1);
@@ -74,14 +74,14 @@ static void changed_list_is_rebuilt(void **state)
     (void)state;
     double par[] = {1.5, 2.0};
     int now;
-    const fake_model *a = get(ELEMENT_GFOSUB, 7, par, 2, &now);
+    const fake_model *a = get(USRSUB_ELEMENT_GFOSUB, 7, par, 2, &now);
     par[1] = 3.0;
-    const fake_model *b = get(ELEMENT_GFOSUB, 7, par, 2, &now);
+    const fake_model *b = get(USRSUB_ELEMENT_GFOSUB, 7, par, 2, &now);
     assert_int_equal(now, 1);
     assert_ptr_not_equal(a, b);
     assert_int_equal(b->serial, 2);
     /* a shorter list is a change too */
-    const fake_model *c = get(ELEMENT_GFOSUB, 7, par, 1, &now);
+    const fake_model *c = get(USRSUB_ELEMENT_GFOSUB, 7, par, 1, &now);
     assert_int_equal(now, 1);
     assert_int_equal(c->serial, 3);
     assert_int_equal(usrsub_element_cache_size(), 1); /* superseded records are not live */
@@ -94,9 +94,9 @@ static void interfaces_and_ids_are_separate(void **state)
     (void)state;
     const double par[] = {4.0};
     int now;
-    const fake_model *a = get(ELEMENT_GFOSUB, 3, par, 1, &now);
-    const fake_model *b = get(ELEMENT_FIESUB, 3, par, 1, &now);
-    const fake_model *c = get(ELEMENT_GFOSUB, 4, par, 1, &now);
+    const fake_model *a = get(USRSUB_ELEMENT_GFOSUB, 3, par, 1, &now);
+    const fake_model *b = get(USRSUB_ELEMENT_FIESUB, 3, par, 1, &now);
+    const fake_model *c = get(USRSUB_ELEMENT_GFOSUB, 4, par, 1, &now);
     assert_ptr_not_equal(a, b);
     assert_ptr_not_equal(a, c);
     assert_int_equal(usrsub_element_cache_size(), 3);
@@ -107,9 +107,9 @@ static void failure_is_cached_and_reported_once(void **state)
     (void)state;
     const double par[] = {-1.0};
     int now;
-    assert_null(get(ELEMENT_COUPLER, 9, par, 1, &now));
+    assert_null(get(USRSUB_ELEMENT_COUPLER, 9, par, 1, &now));
     assert_int_equal(now, 1);
-    assert_null(get(ELEMENT_COUPLER, 9, par, 1, &now));
+    assert_null(get(USRSUB_ELEMENT_COUPLER, 9, par, 1, &now));
     assert_int_equal(now, 0);
     assert_int_equal(atomic_load(&setups), 1);
 }
@@ -119,8 +119,8 @@ static void nan_in_the_list_still_matches(void **state)
     (void)state;
     const double par[] = {2.0, NAN};
     int now;
-    get(ELEMENT_GFOSUB, 11, par, 2, &now);
-    get(ELEMENT_GFOSUB, 11, par, 2, &now);
+    get(USRSUB_ELEMENT_GFOSUB, 11, par, 2, &now);
+    get(USRSUB_ELEMENT_GFOSUB, 11, par, 2, &now);
     assert_int_equal(now, 0);
     assert_int_equal(atomic_load(&setups), 1);
 }
@@ -136,7 +136,7 @@ static void *race(void *arg)
 {
     racer *r = arg;
     const double par[] = {8.0};
-    usrsub_element_signature sig = {ELEMENT_FIESUB, r->id, 0, par, 1};
+    usrsub_element_signature sig = {USRSUB_ELEMENT_FIESUB, r->id, 0, par, 1};
     usrsub_element_setup_report report;
     int now;
     pthread_barrier_wait(r->barrier);

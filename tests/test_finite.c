@@ -20,9 +20,9 @@ static void every_position_of_every_length(void **state)
                 double v[73];
                 for (int k = 0; k < n; ++k)
                     v[k] = k % 4 == 0 ? DBL_MAX : k % 4 == 1 ? -DBL_MIN / 8 : k % 4 == 2 ? -0.0 : 1.5;
-                assert_true(usrsub_all_finite(v, n));
+                assert_true(usrsub_finite_all(v, n));
                 v[at] = bad[b];
-                assert_false(usrsub_all_finite(v, n));
+                assert_false(usrsub_finite_all(v, n));
             }
 }
 
@@ -33,9 +33,9 @@ static void strided_values_only(void **state)
     for (int k = 0; k < 12; ++k)
         v[k] = k;
     v[5] = NAN; /* between the strided entries 0, 3, 6, 9 */
-    assert_true(usrsub_all_finite_strided(v, 4, 3));
+    assert_true(usrsub_finite_all_strided(v, 4, 3));
     v[6] = -INFINITY;
-    assert_false(usrsub_all_finite_strided(v, 4, 3));
+    assert_false(usrsub_finite_all_strided(v, 4, 3));
 }
 
 int main(void)

@@ -22,7 +22,7 @@ static const double values[] = {NAN, INFINITY, -INFINITY, 1e308, -1e308, 4.9e-32
                                 DBL_MIN, 0.0, -0.0, 1e-300, 1e150, 3.0};
 #define NVALUES ((int)(sizeof values / sizeof values[0]))
 
-static int usrsub_all_finite(const double *v, int n)
+static int all_finite(const double *v, int n)
 {
     for (int k = 0; k < n; ++k)
         if (!isfinite(v[k]))
@@ -87,7 +87,7 @@ static void couplers_take_any_disp(void **state)
                     double t = 0.0, out[9];
                     fn[w](&id, &t, par, &npar, disp, &nd, &flag, out);
                     const int count = w == 0 ? 1 : w == 1 ? nd : nd * nd;
-                    if (!usrsub_all_finite(out, count))
+                    if (!all_finite(out, count))
                         fail_msg("%s coupler %zu at disp (%g %g %g): a non-finite output",
                                  w == 0 ? "COUSUB" : w == 1 ? "COUXX" : "COUXX2", c, disp[0],
                                  disp[1], disp[2]);
@@ -133,7 +133,7 @@ static void field_entries_take_any_state(void **state)
                     int id = 600 + (int)e, npar = fields[e].npar, dflag = 0, iflag = 0;
                     double t = 0.0;
                     fn(&id, &t, par, &npar, disp, velo, &dflag, &iflag, F, J, J + 36);
-                    if (!usrsub_all_finite(F, 6) || !usrsub_all_finite(J, 72))
+                    if (!all_finite(F, 6) || !all_finite(J, 72))
                         fail_msg("%s USER(%g, ...): a non-finite output with %s[%d] = %g over %g",
                                  fields[e].entry, par[0], slot < 6 ? "disp" : "velo", slot % 6,
                                  values[a], base);
@@ -183,7 +183,7 @@ static void gfosub_entries_take_any_host_answer(void **state)
                 int id = 700 + (int)e, npar = forces[e].npar, dflag = 0, iflag = 0;
                 double t = 0.0;
                 fn(&id, &t, par, &npar, &dflag, &iflag, out);
-                if (!usrsub_all_finite(out, 6))
+                if (!all_finite(out, 6))
                     fail_msg("%s: a non-finite output with state slot %d = %g", forces[e].entry,
                              slot, values[a]);
                 ++calls;

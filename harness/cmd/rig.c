@@ -106,6 +106,33 @@ static int run_state_rig(hx_rig *r, const char *plot, const char *csv_path, cons
     return plot_status < 0 ? -1 : 0;
 }
 
+/* An output path that does not fit, named by its option and its start. */
+static int too_long(hx_message *msg, const char *option, const char *arg, const char *suffix,
+                    size_t size)
+{
+    return hx_fail(msg, "--%s %.40s%s (%zu characters): the path is too long: resolved from the"
+                   " starting folder%s%s%s, it must stay under %zu characters", option, arg,
+                   strlen(arg) > 40 ? "..." : "", strlen(arg), *suffix ? " and with '" : "",
+                   suffix, *suffix ? "'" : "", size);
+}
+
+/* The CSV's path (--out, else PREFIX.csv) and the plots' prefix, each resolved
+ * against the starting folder in a buffer of size; a path that does not fit
+ * with the longest name the rig adds to it is refused (-1, msg), not cut. */
+static int output_paths(const hx_session *s, const char *out, const char *plot, char *csv_path,
+                        char *prefix, size_t size, hx_message *msg)
+{
+    static const char longest_plot[] = "_force_deformation.png";
+    if (plot != NULL &&
+        strlen(hx_session_path(s, plot, prefix, size)) + sizeof longest_plot > size)
+        return too_long(msg, "plot", plot, longest_plot, size);
+    if (out != NULL && strlen(hx_session_path(s, out, csv_path, size)) + 1 >= size)
+        return too_long(msg, "out", out, "", size - 1);
+    if (out == NULL && plot != NULL && snprintf(csv_path, size, "%s.csv", prefix) >= (int)size)
+        return too_long(msg, "plot", plot, ".csv", size);
+    return 0;
+}
+
 int hx_command_rig(int argc, char **argv)
 {
     static const struct option options[] = {
@@ -186,12 +213,13 @@ int hx_command_rig(int argc, char **argv)
     }
     r.s = &s;
     char csv_path[4096], prefix[4096] = "";
-    if (plot != NULL)
-        hx_session_path(&s, plot, prefix, sizeof prefix);
-    if (out != NULL)
-        hx_session_path(&s, out, csv_path, sizeof csv_path);
-    else if (plot != NULL)
-        snprintf(csv_path, sizeof csv_path, "%s.csv", prefix);
+    if (output_paths(&s, out, plot, csv_path, prefix, sizeof prefix, &msg) != 0) {
+        fprintf(stderr, "usrsub-harness rig: %s\n", msg.text);
+        hx_frames_free(&r.scratch);
+        hx_session_close(&s);
+        hx_rig_path_free(&r.path);
+        return 2;
+    }
     if ((out != NULL || plot != NULL) && (r.csv = hx_open_output(csv_path, &msg)) == NULL) {
         fprintf(stderr, "usrsub-harness rig: %s\n", msg.text);
         hx_frames_free(&r.scratch);

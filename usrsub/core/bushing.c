@@ -22,8 +22,8 @@ void usrsub_bushing_force(const usrsub_bushing *b, const double d[6], const doub
             q[i] = dirs[i]->disp_scale * d[k] - dirs[i]->offset;
             qd[i] = dirs[i]->disp_scale * v[k];
         }
-        usrsub_bushing_group_force(dirs, m, b->epsilon[g], q, qd, Fg, dFdd ? J : NULL,
-                                   dFdd ? Jv : NULL);
+        usrsub_bushing_coupling_force(dirs, m, b->epsilon[g], q, qd, Fg, dFdd ? J : NULL,
+                                      dFdd ? Jv : NULL);
         for (int i = 0; i < m; ++i) {
             const int k = b->group[g][i];
             const double V = dirs[i]->force_scale;

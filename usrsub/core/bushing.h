@@ -96,9 +96,9 @@ void usrsub_bushing_force(const usrsub_bushing *b, const double d[6], const doub
 /* Force of a coupled group of m (2 or 3) directions at q, qdot (after offset
  * and scale), before preload and force scale, with its m x m partials
  * (column-major [i + m*j] = dF_i/dq_j; may be NULL). */
-void usrsub_bushing_group_force(const usrsub_bushing_direction *const dirs[], int m,
-                                double epsilon, const double *q, const double *qd, double *F,
-                                double *dFdq, double *dFdqd);
+void usrsub_bushing_coupling_force(const usrsub_bushing_direction *const dirs[], int m,
+                                   double epsilon, const double *q, const double *qd, double *F,
+                                   double *dFdq, double *dFdqd);
 
 
 void usrsub_bushing_free(usrsub_bushing *b);

@@ -211,9 +211,9 @@ INLINE void group_force(const usrsub_bushing_direction *const dirs[], const int 
         }
 }
 
-void usrsub_bushing_group_force(const usrsub_bushing_direction *const dirs[], int m,
-                                double epsilon, const double *q, const double *qd, double *F,
-                                double *dFdq, double *dFdqd)
+void usrsub_bushing_coupling_force(const usrsub_bushing_direction *const dirs[], int m,
+                                   double epsilon, const double *q, const double *qd, double *F,
+                                   double *dFdq, double *dFdqd)
 {
     if (m == 2)
         group_force(dirs, 2, epsilon, q, qd, F, dFdq, dFdqd);

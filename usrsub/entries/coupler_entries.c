@@ -95,7 +95,7 @@ static void coupler_entry(coupler_output what, const int *id, const double *par,
         return;
     }
     const int n = *ndisp;
-    usrsub_element_signature sig = {ELEMENT_COUPLER, *id, n, par, *npar};
+    usrsub_element_signature sig = {USRSUB_ELEMENT_COUPLER, *id, n, par, *npar};
     usrsub_element_setup_report report;
     int set_up_now;
     const usrsub_coupler *c =
@@ -127,7 +127,7 @@ static void coupler_entry(coupler_output what, const int *id, const double *par,
      * diagonal (the rest written as exact zeros): its diagonal is what can overflow. */
     const int count = output_count(what, n);
     const int checked = what == COUPLER_PHI ? 1 : n, stride = what == COUPLER_HESSIAN ? n + 1 : 1;
-    if (!usrsub_all_finite_strided(out, checked, stride)) {
+    if (!usrsub_finite_all_strided(out, checked, stride)) {
         zero(out, count);
         usrsub_entry_report_error(routine_names[what], *id, "result", "the output at disp (%g %g %g) is"
                            " not finite (a displacement out of any sensible range); the output"
@@ -156,6 +156,6 @@ void STDCALL COUXX2(int *id, double *time, double *par, int *npar, double *disp,
     coupler_entry(COUPLER_HESSIAN, id, par, npar, disp, ndisp, d2fda2);
 }
 
-ENTRY_ALIAS(usrsub_coupler_fn, cousub_, COUSUB)
-ENTRY_ALIAS(usrsub_coupler_fn, couxx_, COUXX)
-ENTRY_ALIAS(usrsub_coupler_fn, couxx2_, COUXX2)
+USRSUB_ENTRY_ALIAS(usrsub_coupler_fn, cousub_, COUSUB)
+USRSUB_ENTRY_ALIAS(usrsub_coupler_fn, couxx_, COUXX)
+USRSUB_ENTRY_ALIAS(usrsub_coupler_fn, couxx2_, COUXX2)

@@ -37,7 +37,7 @@ static int rotation_of(const int ipar[4], int twist, double euler[3], double R[9
     return 0;
 }
 
-int usrsub_measure_deformation(int i_marker, int j_marker, usrsub_deformation_needs needs, double d[6],
+int usrsub_deformation_measure(int i_marker, int j_marker, usrsub_deformation_needs needs, double d[6],
                         double v[6], double *R, char *failed)
 {
     const int ipar[4] = {i_marker, j_marker, j_marker, j_marker};

@@ -21,7 +21,7 @@ typedef struct usrsub_deformation_needs {
  * not NULL and rotations are needed, the rotation of I relative to J
  * (row-major, columns I's axes in J). Returns 0, or -1 with the query the
  * host refused in failed (at least 64 chars). */
-int usrsub_measure_deformation(int i_marker, int j_marker, usrsub_deformation_needs needs, double d[6],
+int usrsub_deformation_measure(int i_marker, int j_marker, usrsub_deformation_needs needs, double d[6],
                         double v[6], double *R, char *failed);
 
 #endif

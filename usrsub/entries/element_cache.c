@@ -7,13 +7,13 @@
 
 #include "mutex.h"
 
-_Atomic(usrsub_element_record *) usrsub_element_cache_buckets[ELEMENT_CACHE_BUCKETS];
+_Atomic(usrsub_element_record *) usrsub_element_cache_buckets[USRSUB_ELEMENT_CACHE_BUCKETS];
 static usrsub_element_record *retired; /* superseded records, freed at unload */
 static usrsub_mutex setup_lock = USRSUB_MUTEX_INIT;
 
 static int same_element(const usrsub_element_record *r, const usrsub_element_signature *sig)
 {
-    return r->id == sig->id && r->interface == sig->interface;
+    return r->id == sig->id && r->form == sig->form;
 }
 
 static void free_record(usrsub_element_record *r)
@@ -43,14 +43,14 @@ void *usrsub_element_cache_get(const usrsub_element_signature *sig, usrsub_eleme
                         usrsub_element_release_fn *release, void *ctx, int *set_up_now,
                         usrsub_element_setup_report *report)
 {
-    const unsigned bucket = usrsub_element_cache_bucket(sig->interface, sig->id);
+    const unsigned bucket = usrsub_element_cache_bucket(sig->form, sig->id);
     *set_up_now = 0;
-    usrsub_element_record *r = usrsub_element_cache_record(sig->interface, sig->id);
+    usrsub_element_record *r = usrsub_element_cache_record(sig->form, sig->id);
     if (r != NULL && usrsub_element_cache_matches(r, sig))
         return r->model;
 
     usrsub_mutex_lock(&setup_lock);
-    r = usrsub_element_cache_record(sig->interface, sig->id); /* set up meanwhile? */
+    r = usrsub_element_cache_record(sig->form, sig->id); /* set up meanwhile? */
     if (r != NULL && usrsub_element_cache_matches(r, sig)) {
         usrsub_mutex_unlock(&setup_lock);
         return r->model;
@@ -64,7 +64,7 @@ void *usrsub_element_cache_get(const usrsub_element_signature *sig, usrsub_eleme
         usrsub_fail(&report->error, "out of memory while setting up the element");
         return NULL;
     }
-    fresh->interface = sig->interface;
+    fresh->form = sig->form;
     fresh->id = sig->id;
     fresh->code = sig->code;
     fresh->npar = npar;
@@ -86,7 +86,7 @@ int usrsub_element_cache_size(void)
 {
     int count = 0;
     usrsub_mutex_lock(&setup_lock);
-    for (unsigned b = 0; b < ELEMENT_CACHE_BUCKETS; ++b)
+    for (unsigned b = 0; b < USRSUB_ELEMENT_CACHE_BUCKETS; ++b)
         for (usrsub_element_record *r = atomic_load(&usrsub_element_cache_buckets[b]); r != NULL; r = atomic_load(&r->next))
             ++count;
     usrsub_mutex_unlock(&setup_lock);
@@ -96,7 +96,7 @@ int usrsub_element_cache_size(void)
 void usrsub_element_cache_clear(void)
 {
     usrsub_mutex_lock(&setup_lock);
-    for (unsigned b = 0; b < ELEMENT_CACHE_BUCKETS; ++b) {
+    for (unsigned b = 0; b < USRSUB_ELEMENT_CACHE_BUCKETS; ++b) {
         usrsub_element_record *r = atomic_exchange(&usrsub_element_cache_buckets[b], NULL);
         while (r != NULL) {
             usrsub_element_record *next = atomic_load(&r->next);

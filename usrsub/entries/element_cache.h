@@ -1,7 +1,7 @@
 /*
  * Per-element set-up cache of the library.
  *
- * An element is set up once per (interface, element id), keyed also on a copy
+ * An element is set up once per (entry form, element id), keyed also on a copy
  * of its USER list (and one discriminating code, such as ndisp), so that an
  * element whose list changes is rebuilt. Look-ups take no lock: records are
  * immutable once published and are only freed when the library is unloaded.
@@ -14,15 +14,17 @@
 #include "usrsub/core/message.h"
 #include "usrsub/readers/property_file.h"
 
-enum element_interface {
-    ELEMENT_COUPLER = 1, /* COUSUB, COUXX, COUXX2 share one set-up */
-    ELEMENT_GFOSUB = 2,
-    ELEMENT_FIESUB = 3,
-    ELEMENT_YFOSUB = 4 /* YFOSUB and its four partials share one set-up */
+/* The entry form an element is called through: the same id set up through
+ * two forms is two elements (a GFOSUB element and its FIESUB twin). */
+enum usrsub_element_form {
+    USRSUB_ELEMENT_COUPLER = 1, /* COUSUB, COUXX, COUXX2 share one set-up */
+    USRSUB_ELEMENT_GFOSUB = 2,  /* GFOSUB and the named GFOSUB-style entries */
+    USRSUB_ELEMENT_FIESUB = 3,  /* FIESUB and the named FIESUB-style entries */
+    USRSUB_ELEMENT_YFOSUB = 4   /* YFOSUB and its four partials share one set-up */
 };
 
 typedef struct usrsub_element_signature {
-    int interface;
+    int form;          /* enum usrsub_element_form */
     int id;
     int code;          /* ndisp for couplers, the entry code for forces */
     const double *par; /* USER list as the host passed it */
@@ -53,31 +55,31 @@ void *usrsub_element_cache_get(const usrsub_element_signature *sig, usrsub_eleme
 #include <stdatomic.h>
 #include <string.h>
 
-#define ELEMENT_CACHE_BUCKETS 1024u
+#define USRSUB_ELEMENT_CACHE_BUCKETS 1024u
 
 typedef struct usrsub_element_record {
     _Atomic(struct usrsub_element_record *) next;
     struct usrsub_element_record *retired_next;
-    int interface, id, code, npar;
+    int form, id, code, npar;
     void *model; /* NULL: the set-up failed */
     usrsub_element_release_fn *release;
     double par[];
 } usrsub_element_record;
 
-extern _Atomic(usrsub_element_record *) usrsub_element_cache_buckets[ELEMENT_CACHE_BUCKETS];
+extern _Atomic(usrsub_element_record *) usrsub_element_cache_buckets[USRSUB_ELEMENT_CACHE_BUCKETS];
 
-static inline unsigned usrsub_element_cache_bucket(int interface, int id)
+static inline unsigned usrsub_element_cache_bucket(int form, int id)
 {
-    return ((unsigned)id * 2654435761u ^ (unsigned)interface * 40503u) &
-           (ELEMENT_CACHE_BUCKETS - 1u);
+    return ((unsigned)id * 2654435761u ^ (unsigned)form * 40503u) &
+           (USRSUB_ELEMENT_CACHE_BUCKETS - 1u);
 }
 
 /* The element's current record, or NULL. */
-static inline usrsub_element_record *usrsub_element_cache_record(int interface, int id)
+static inline usrsub_element_record *usrsub_element_cache_record(int form, int id)
 {
     usrsub_element_record *r = atomic_load_explicit(
-        &usrsub_element_cache_buckets[usrsub_element_cache_bucket(interface, id)], memory_order_acquire);
-    while (r != NULL && (r->id != id || r->interface != interface))
+        &usrsub_element_cache_buckets[usrsub_element_cache_bucket(form, id)], memory_order_acquire);
+    while (r != NULL && (r->id != id || r->form != form))
         r = atomic_load_explicit(&r->next, memory_order_acquire);
     return r;
 }
@@ -96,7 +98,7 @@ static inline void *usrsub_element_cache_lookup(const usrsub_element_signature *
                                          usrsub_element_release_fn *release, void *ctx,
                                          int *set_up_now, usrsub_element_setup_report *report)
 {
-    const usrsub_element_record *r = usrsub_element_cache_record(sig->interface, sig->id);
+    const usrsub_element_record *r = usrsub_element_cache_record(sig->form, sig->id);
     if (r != NULL && usrsub_element_cache_matches(r, sig)) {
         *set_up_now = 0;
         return r->model;

@@ -9,7 +9,7 @@
 
 #include "usrsub/solver_abi.h"
 
-/* ENTRY_ALIAS(usrsub_gfosub_fn, gfosub_, GFOSUB), after GFOSUB's definition. */
-#define ENTRY_ALIAS(TYPE, ALIAS, NAME) TYPE ALIAS __attribute__((alias(#NAME)));
+/* USRSUB_ENTRY_ALIAS(usrsub_gfosub_fn, gfosub_, GFOSUB), after GFOSUB's definition. */
+#define USRSUB_ENTRY_ALIAS(TYPE, ALIAS, NAME) TYPE ALIAS __attribute__((alias(#NAME)));
 
 #endif

@@ -61,7 +61,8 @@ void usrsub_entry_report_error(const char *routine, int id, const char *kind, co
     usrsub_host_report_error(id, text);
 }
 
-int usrsub_entry_arguments_ok(const char *routine, const int *id, const double *par, const int *npar)
+int usrsub_entry_report_arguments_ok(const char *routine, const int *id, const double *par,
+                                     const int *npar)
 {
     if (id != NULL && npar != NULL && *npar >= 0 && (*npar == 0 || par != NULL))
         return 1;

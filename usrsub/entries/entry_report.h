@@ -22,6 +22,7 @@ void usrsub_entry_report_error(const char *routine, int id, const char *kind, co
 
 /* 1 when id, npar and par (for npar > 0) are there and npar >= 0; else the
  * call breaks the calling convention, which is reported (every time). */
-int usrsub_entry_arguments_ok(const char *routine, const int *id, const double *par, const int *npar);
+int usrsub_entry_report_arguments_ok(const char *routine, const int *id, const double *par,
+                                     const int *npar);
 
 #endif

@@ -10,7 +10,7 @@
 #include <string.h>
 
 /* 1 when v[0], v[stride], ..., v[(n-1) stride] are all finite. */
-static inline int usrsub_all_finite_strided(const double *v, int n, int stride)
+static inline int usrsub_finite_all_strided(const double *v, int n, int stride)
 {
     uint64_t carry = 0;
     for (int k = 0; k < n; ++k) {
@@ -23,7 +23,7 @@ static inline int usrsub_all_finite_strided(const double *v, int n, int stride)
 
 /* The same over contiguous values, two lanes at a time (SSE2, in every
  * x86-64): the 72 partials of a FIESUB call in 36 steps. */
-static inline int usrsub_all_finite(const double *v, int n)
+static inline int usrsub_finite_all(const double *v, int n)
 {
     typedef uint64_t lanes __attribute__((vector_size(16)));
     const lanes exponent = {0x7ff0000000000000u, 0x7ff0000000000000u};
@@ -35,7 +35,7 @@ static inline int usrsub_all_finite(const double *v, int n)
         memcpy(&bits, v + k, sizeof bits);
         carry |= (bits & exponent) + unit;
     }
-    const uint64_t tail = k < n ? !usrsub_all_finite_strided(v + k, n - k, 1) : 0;
+    const uint64_t tail = k < n ? !usrsub_finite_all_strided(v + k, n - k, 1) : 0;
     return ((carry[0] | carry[1]) >> 63 | tail) == 0;
 }
 

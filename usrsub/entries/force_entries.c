@@ -21,21 +21,22 @@ static void gfosub_entry(const char *routine, int code, int *id, double *time, d
     if (result == NULL)
         return;
     memset(result, 0, 6 * sizeof(double));
-    if (!usrsub_entry_arguments_ok(routine, id, par, npar))
+    if (!usrsub_entry_report_arguments_ok(routine, id, par, npar))
         return;
-    const usrsub_force_model *m = usrsub_force_model_of(routine, ELEMENT_GFOSUB, code, *id, par, *npar);
+    const usrsub_force_model *m =
+        usrsub_force_model_of(routine, USRSUB_ELEMENT_GFOSUB, code, *id, par, *npar);
     if (m == NULL)
         return;
     double d[6] = {0, 0, 0, 0, 0, 0}, v[6] = {0, 0, 0, 0, 0, 0}, R[9];
     char failed[64];
     const int wants_rotation = m->rotation_measure == USRSUB_ROTATION_VECTOR;
-    if (usrsub_measure_deformation(m->i_marker, m->j_marker, m->needs, d, v, wants_rotation ? R : NULL,
+    if (usrsub_deformation_measure(m->i_marker, m->j_marker, m->needs, d, v, wants_rotation ? R : NULL,
                             failed) != 0) {
         usrsub_entry_report_error(routine, *id, "query", "the host could not answer %s (markers %d and %d);"
                            " the output is zero", failed, m->i_marker, m->j_marker);
         return;
     }
-    if (!usrsub_all_finite(d, 6) || !usrsub_all_finite(v, 6)) {
+    if (!usrsub_finite_all(d, 6) || !usrsub_finite_all(v, 6)) {
         usrsub_entry_report_error(routine, *id, "state", "the host's deformation (%g %g %g %g %g %g) or rate"
                            " (%g %g %g %g %g %g) is not finite; the output is zero", d[0], d[1],
                            d[2], d[3], d[4], d[5], v[0], v[1], v[2], v[3], v[4], v[5]);
@@ -43,7 +44,7 @@ static void gfosub_entry(const char *routine, int code, int *id, double *time, d
     }
     usrsub_force_model_evaluate(m, d, v, wants_rotation && m->needs.rotation ? R : NULL, result, NULL,
                          NULL);
-    if (!usrsub_all_finite(result, 6)) {
+    if (!usrsub_finite_all(result, 6)) {
         memset(result, 0, 6 * sizeof(double));
         usrsub_entry_report_error(routine, *id, "result", "the force at deformation (%g %g %g %g %g %g) is not"
                            " finite (a state out of any sensible range); the output is zero",
@@ -69,7 +70,7 @@ static void fiesub_entry(const char *routine, int code, int *id, double *time, d
         return;
     const int partials = dfddis != NULL && dfdvel != NULL;
     /* the evaluation writes every output; each way out before it zeros them */
-    if (!usrsub_entry_arguments_ok(routine, id, par, npar)) {
+    if (!usrsub_entry_report_arguments_ok(routine, id, par, npar)) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
         return;
     }
@@ -78,12 +79,13 @@ static void fiesub_entry(const char *routine, int code, int *id, double *time, d
         usrsub_entry_report_error(routine, *id, NULL, "called without disp or velo");
         return;
     }
-    const usrsub_force_model *m = usrsub_force_model_of(routine, ELEMENT_FIESUB, code, *id, par, *npar);
+    const usrsub_force_model *m =
+        usrsub_force_model_of(routine, USRSUB_ELEMENT_FIESUB, code, *id, par, *npar);
     if (m == NULL) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
         return;
     }
-    if (!usrsub_all_finite(disp, 6) || !usrsub_all_finite(velo, 6)) {
+    if (!usrsub_finite_all(disp, 6) || !usrsub_finite_all(velo, 6)) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
         usrsub_entry_report_error(routine, *id, "state", "disp (%g %g %g %g %g %g) or velo (%g %g %g %g %g %g)"
                            " is not finite; the output is zero", disp[0], disp[1], disp[2],
@@ -99,8 +101,8 @@ static void fiesub_entry(const char *routine, int code, int *id, double *time, d
         return;
     }
     /* constant partials were checked finite when the file was read */
-    if (!usrsub_all_finite(field, 6) || (partials && !m->constant_partials &&
-                                  (!usrsub_all_finite(dfddis, 36) || !usrsub_all_finite(dfdvel, 36)))) {
+    if (!usrsub_finite_all(field, 6) || (partials && !m->constant_partials &&
+                                  (!usrsub_finite_all(dfddis, 36) || !usrsub_finite_all(dfdvel, 36)))) {
         zero_field(field, partials ? dfddis : NULL, dfdvel);
         usrsub_entry_report_error(routine, *id, "result", "the force at disp (%g %g %g %g %g %g) is not finite (a"
                            " state out of any sensible range); the output is zero", disp[0],
@@ -134,15 +136,15 @@ void STDCALL FIESUB(int *id, double *time, double *par, int *npar, double *disp,
                      dfddis, dfdvel);                                                            \
     }
 
-NAMED_ENTRIES(ABM_BUSHING, FORCE_BUSHING)
-NAMED_ENTRIES(MOUNT_LIMITS, FORCE_MOUNT_LIMITS)
-NAMED_ENTRIES(FLEX_JOINT, FORCE_FLEX_JOINT)
+NAMED_ENTRIES(ABM_BUSHING, USRSUB_FORCE_BUSHING)
+NAMED_ENTRIES(MOUNT_LIMITS, USRSUB_FORCE_MOUNT_LIMITS)
+NAMED_ENTRIES(FLEX_JOINT, USRSUB_FORCE_FLEX_JOINT)
 
-ENTRY_ALIAS(usrsub_gfosub_fn, gfosub_, GFOSUB)
-ENTRY_ALIAS(usrsub_fiesub_fn, fiesub_, FIESUB)
-ENTRY_ALIAS(usrsub_gfosub_fn, abm_bushing_, ABM_BUSHING)
-ENTRY_ALIAS(usrsub_fiesub_fn, abm_bushing_field_, ABM_BUSHING_FIELD)
-ENTRY_ALIAS(usrsub_gfosub_fn, mount_limits_, MOUNT_LIMITS)
-ENTRY_ALIAS(usrsub_fiesub_fn, mount_limits_field_, MOUNT_LIMITS_FIELD)
-ENTRY_ALIAS(usrsub_gfosub_fn, flex_joint_, FLEX_JOINT)
-ENTRY_ALIAS(usrsub_fiesub_fn, flex_joint_field_, FLEX_JOINT_FIELD)
+USRSUB_ENTRY_ALIAS(usrsub_gfosub_fn, gfosub_, GFOSUB)
+USRSUB_ENTRY_ALIAS(usrsub_fiesub_fn, fiesub_, FIESUB)
+USRSUB_ENTRY_ALIAS(usrsub_gfosub_fn, abm_bushing_, ABM_BUSHING)
+USRSUB_ENTRY_ALIAS(usrsub_fiesub_fn, abm_bushing_field_, ABM_BUSHING_FIELD)
+USRSUB_ENTRY_ALIAS(usrsub_gfosub_fn, mount_limits_, MOUNT_LIMITS)
+USRSUB_ENTRY_ALIAS(usrsub_fiesub_fn, mount_limits_field_, MOUNT_LIMITS_FIELD)
+USRSUB_ENTRY_ALIAS(usrsub_gfosub_fn, flex_joint_, FLEX_JOINT)
+USRSUB_ENTRY_ALIAS(usrsub_fiesub_fn, flex_joint_field_, FLEX_JOINT_FIELD)

@@ -114,7 +114,8 @@ static int limits_named(usrsub_force_model *m, usrsub_user_list *u, usrsub_eleme
 
 void *usrsub_force_model_setup(const usrsub_element_signature *sig, void *ctx, usrsub_element_setup_report *report)
 {
-    const int interface = *(const int *)ctx;
+    (void)ctx;
+    const int form = sig->form;
     usrsub_user_list u;
     int code = sig->code;
     if (code == 0) { /* GFOSUB/FIESUB: the code comes first */
@@ -133,13 +134,13 @@ void *usrsub_force_model_setup(const usrsub_element_signature *sig, void *ctx, u
         return NULL;
     }
     m->code = code;
-    if (interface == ELEMENT_YFOSUB && code != FORCE_BUSHING) {
+    if (form == USRSUB_ELEMENT_YFOSUB && code != USRSUB_FORCE_BUSHING) {
         usrsub_fail(&report->error, "element code %d: the state-equation form (YFOSUB) carries"
                     " only the bushing, code 1 (ABM_BUSHING)", code);
         free(m);
         return NULL;
     }
-    if (interface == ELEMENT_GFOSUB &&
+    if (form == USRSUB_ELEMENT_GFOSUB &&
         (usrsub_user_list_int(&u, "the I marker id", 1, INT_MAX, &m->i_marker, &report->error) != 0 ||
          usrsub_user_list_int(&u, "the J marker id", 1, INT_MAX, &m->j_marker, &report->error) != 0)) {
         free(m);
@@ -148,18 +149,18 @@ void *usrsub_force_model_setup(const usrsub_element_signature *sig, void *ctx, u
     int status = 0, string_id = 0;
     const char *ends = "the list";
     switch (code) {
-    case FORCE_BUSHING:
+    case USRSUB_FORCE_BUSHING:
         m->bushing = property_named(&u, "the Reference_String id of the .gbs bushing file", "gbs",
                                     read_bushing, free_bushing, report);
         status = m->bushing != NULL ? 0 : -1;
         if (status == 0) /* checked a whole id by property_named */
             string_id = (int)u.par[u.next - 1];
-        if (status == 0 && m->bushing->has_states && interface != ELEMENT_YFOSUB)
+        if (status == 0 && m->bushing->has_states && form != USRSUB_ELEMENT_YFOSUB)
             status = usrsub_fail(&report->error, "Reference_String %d: the bushing has internal"
                                  " states (friction, a mount or a rubber filter): it runs as a"
                                  " state equation, Force_StateEqn with YFOSUB (docs/interface.md"
                                  " §3.8)", string_id);
-        if (status == 0 && interface == ELEMENT_YFOSUB &&
+        if (status == 0 && form == USRSUB_ELEMENT_YFOSUB &&
             m->bushing->rotation_measure == USRSUB_ROTATION_VECTOR)
             status = usrsub_fail(&report->error, "Reference_String %d: ROTATION_MEASURE ="
                                  " 'ROTATION_VECTOR' is not available in the state-equation form"
@@ -176,11 +177,11 @@ void *usrsub_force_model_setup(const usrsub_element_signature *sig, void *ctx, u
             status = limits_named(m, &u, report);
         ends = "an ABM_BUSHING list (markers, .gbs id, optional .gbi id)";
         break;
-    case FORCE_MOUNT_LIMITS:
+    case USRSUB_FORCE_MOUNT_LIMITS:
         status = limits_named(m, &u, report);
         ends = "a MOUNT_LIMITS list (markers, .gbi id)";
         break;
-    case FORCE_FLEX_JOINT:
+    case USRSUB_FORCE_FLEX_JOINT:
         m->joint = property_named(&u, "the Reference_String id of the .gfj flexible-joint file",
                                   "gfj", read_joint, free_joint, report);
         status = m->joint != NULL ? 0 : -1;
@@ -202,7 +203,7 @@ void *usrsub_force_model_setup(const usrsub_element_signature *sig, void *ctx, u
      * az needs the rest rule; every component of the rotation vector does */
     if (m->rotation_measure == USRSUB_ROTATION_VECTOR)
         m->needs.twist |= m->needs.rotation;
-    m->constant_partials = code == FORCE_FLEX_JOINT &&
+    m->constant_partials = code == USRSUB_FORCE_FLEX_JOINT &&
                            m->rotation_measure != USRSUB_ROTATION_VECTOR;
     if (status == 0)
         status = usrsub_user_list_end(&u, ends, &report->error);
@@ -223,10 +224,10 @@ static void evaluate_law(const usrsub_force_model *m, const double d[6], const d
                          double *dFdd, double *dFdv)
 {
     switch (m->code) {
-    case FORCE_BUSHING:
+    case USRSUB_FORCE_BUSHING:
         usrsub_bushing_force(m->bushing, d, v, F, dFdd, dFdv);
         break;
-    case FORCE_FLEX_JOINT:
+    case USRSUB_FORCE_FLEX_JOINT:
         usrsub_flex_joint_force(m->joint, d, v, F, dFdd, dFdv);
         break;
     default:
@@ -271,15 +272,14 @@ int usrsub_force_model_evaluate(const usrsub_force_model *m, const double d[6], 
     return 0;
 }
 
-const usrsub_force_model *usrsub_force_model_of(const char *routine, int interface, int code, int id,
-                                  const double *par, int npar)
+const usrsub_force_model *usrsub_force_model_of(const char *routine, int form, int code, int id,
+                                                const double *par, int npar)
 {
-    static int interfaces[5] = {0, ELEMENT_COUPLER, ELEMENT_GFOSUB, ELEMENT_FIESUB, ELEMENT_YFOSUB};
-    usrsub_element_signature sig = {interface, id, code, par, npar};
+    usrsub_element_signature sig = {form, id, code, par, npar};
     usrsub_element_setup_report report;
     int set_up_now;
-    const usrsub_force_model *m = usrsub_element_cache_lookup(&sig, usrsub_force_model_setup, usrsub_force_model_release,
-                                                &interfaces[interface], &set_up_now, &report);
+    const usrsub_force_model *m = usrsub_element_cache_lookup(
+        &sig, usrsub_force_model_setup, usrsub_force_model_release, NULL, &set_up_now, &report);
     if (set_up_now)
         usrsub_entry_report_setup(routine, id, set_up_now, m, &report);
     return m;

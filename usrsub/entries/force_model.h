@@ -14,10 +14,16 @@
 #include "usrsub/core/mount_limits.h"
 #include "usrsub/core/rotation.h"
 
-enum force_code { FORCE_BUSHING = 1, FORCE_MOUNT_LIMITS = 2, FORCE_FLEX_JOINT = 3 };
+/* The element code: par[0] of GFOSUB, FIESUB and YFOSUB lists, or the named
+ * entry's (docs/interface.md §3.0). */
+enum usrsub_force_code {
+    USRSUB_FORCE_BUSHING = 1,
+    USRSUB_FORCE_MOUNT_LIMITS = 2,
+    USRSUB_FORCE_FLEX_JOINT = 3
+};
 
 typedef struct usrsub_force_model {
-    int code;                      /* enum force_code */
+    int code;                      /* enum usrsub_force_code */
     int i_marker, j_marker;        /* GFOSUB form */
     const usrsub_bushing *bushing; /* shared; NULL when unused */
     const usrsub_mount_limits *limits; /* shared; NULL when none is active */
@@ -28,18 +34,19 @@ typedef struct usrsub_force_model {
     int constant_partials;             /* -K and -D of a flexible joint on projection angles */
 } usrsub_force_model;
 
-/* Element cache set-up of a force element; ctx points to the interface
- * (ELEMENT_GFOSUB, ELEMENT_FIESUB or ELEMENT_YFOSUB). sig->code is the named
- * entry's code, or 0 for GFOSUB/FIESUB/YFOSUB, whose par[0] holds it. A
- * bushing with internal states sets up only in the YFOSUB form, which takes
- * only bushings (with or without states) on projection angles. */
+/* Element cache set-up of a force element in the form sig->form
+ * (USRSUB_ELEMENT_GFOSUB, USRSUB_ELEMENT_FIESUB or USRSUB_ELEMENT_YFOSUB; ctx
+ * is unused). sig->code is the named entry's code, or 0 for
+ * GFOSUB/FIESUB/YFOSUB, whose par[0] holds it. A bushing with internal states
+ * sets up only in the YFOSUB form, which takes only bushings (with or without
+ * states) on projection angles. */
 void *usrsub_force_model_setup(const usrsub_element_signature *sig, void *ctx, usrsub_element_setup_report *report);
 void usrsub_force_model_release(void *model);
 
 /* The element's model from the cache, set up on its first call (whose notices
  * and error are reported under routine); NULL when it could not be. */
-const usrsub_force_model *usrsub_force_model_of(const char *routine, int interface, int code, int id,
-                                  const double *par, int npar);
+const usrsub_force_model *usrsub_force_model_of(const char *routine, int form, int code, int id,
+                                                const double *par, int npar);
 
 /* Force and torque on I in J axes at the deformation d (x, y, z, AX, AY, AZ)
  * and rate v; partials (may be NULL) column-major. R: the rotation of I

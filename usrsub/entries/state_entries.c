@@ -42,9 +42,10 @@ static void zero(double *v, long n)
  * finite states and inputs); NULL after reporting what is not. */
 static const usrsub_force_model *checked_model(const state_call *c)
 {
-    if (!usrsub_entry_arguments_ok(c->routine, c->id, c->par, c->npar))
+    if (!usrsub_entry_report_arguments_ok(c->routine, c->id, c->par, c->npar))
         return NULL;
-    const usrsub_force_model *m = usrsub_force_model_of(c->routine, ELEMENT_YFOSUB, 0, *c->id, c->par, *c->npar);
+    const usrsub_force_model *m =
+        usrsub_force_model_of(c->routine, USRSUB_ELEMENT_YFOSUB, 0, *c->id, c->par, *c->npar);
     if (m == NULL)
         return NULL;
     const usrsub_state_layout *l = &m->states;
@@ -64,7 +65,7 @@ static const usrsub_force_model *checked_model(const state_call *c)
                                ? " and no states or inputs" : "");
         return NULL;
     }
-    if (!usrsub_all_finite(c->input, INPUTS) || (l->n > 0 && !usrsub_all_finite(c->states, l->n))) {
+    if (!usrsub_finite_all(c->input, INPUTS) || (l->n > 0 && !usrsub_finite_all(c->states, l->n))) {
         usrsub_entry_report_error(c->routine, *c->id, "state", "the inputs (%g %g %g %g %g %g | %g %g %g"
                            " %g %g %g) or the states are not finite; the outputs are zero",
                            c->input[0], c->input[1], c->input[2], c->input[3], c->input[4],
@@ -87,9 +88,9 @@ static int evaluate(const state_call *c, const usrsub_force_model *m, double *st
         return -1;
     }
     const int n = m->states.n;
-    if (!usrsub_all_finite(xdot, n) || !usrsub_all_finite(y, OUTPUTS) ||
-        (p != NULL && (!usrsub_all_finite(p->dxdot_dx, n * n) || !usrsub_all_finite(p->dxdot_du, n * INPUTS) ||
-                       !usrsub_all_finite(p->dy_dx, OUTPUTS * n) || !usrsub_all_finite(p->dy_du, OUTPUTS * INPUTS)))) {
+    if (!usrsub_finite_all(xdot, n) || !usrsub_finite_all(y, OUTPUTS) ||
+        (p != NULL && (!usrsub_finite_all(p->dxdot_dx, n * n) || !usrsub_finite_all(p->dxdot_du, n * INPUTS) ||
+                       !usrsub_finite_all(p->dy_dx, OUTPUTS * n) || !usrsub_finite_all(p->dy_du, OUTPUTS * INPUTS)))) {
         usrsub_entry_report_error(c->routine, *c->id, "result", "the outputs at inputs (%g %g %g %g %g %g)"
                            " are not finite (a state out of any sensible range); they are zero",
                            c->input[0], c->input[1], c->input[2], c->input[3], c->input[4],
@@ -152,8 +153,8 @@ PARTIAL_ENTRY(YFOXU, BLOCK_XU)
 PARTIAL_ENTRY(YFOYX, BLOCK_YX)
 PARTIAL_ENTRY(YFOYU, BLOCK_YU)
 
-ENTRY_ALIAS(usrsub_yfosub_fn, yfosub_, YFOSUB)
-ENTRY_ALIAS(usrsub_state_partial_fn, yfoxx_, YFOXX)
-ENTRY_ALIAS(usrsub_state_partial_fn, yfoxu_, YFOXU)
-ENTRY_ALIAS(usrsub_state_partial_fn, yfoyx_, YFOYX)
-ENTRY_ALIAS(usrsub_state_partial_fn, yfoyu_, YFOYU)
+USRSUB_ENTRY_ALIAS(usrsub_yfosub_fn, yfosub_, YFOSUB)
+USRSUB_ENTRY_ALIAS(usrsub_state_partial_fn, yfoxx_, YFOXX)
+USRSUB_ENTRY_ALIAS(usrsub_state_partial_fn, yfoxu_, YFOXU)
+USRSUB_ENTRY_ALIAS(usrsub_state_partial_fn, yfoyx_, YFOYX)
+USRSUB_ENTRY_ALIAS(usrsub_state_partial_fn, yfoyu_, YFOYU)

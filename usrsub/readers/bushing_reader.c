@@ -79,7 +79,7 @@ static int read_global(reader *r, usrsub_bushing *b)
             return usrsub_fail(r->msg, "'%s' line %d: COUPLING = '%s': expected UNCOUPLED,"
                                " CYLINDRICAL or SPHERICAL", r->f->path, c->line, c->value);
     }
-    if (usrsub_read_rotation_measure(r->f, &b->rotation_measure, r->msg) != 0)
+    if (usrsub_property_file_rotation_measure(r->f, &b->rotation_measure, r->msg) != 0)
         return -1;
     if (usrsub_teim_find_entry(g, "EPSILON") != NULL) {
         double eps;
@@ -181,8 +181,8 @@ static int read_spline(reader *r, usrsub_bushing_direction *dir, int k, int line
     double *x = malloc(sizeof(double) * (size_t)(t->nrows + 1));
     double *y = malloc(sizeof(double) * (size_t)(t->nrows + 1));
     int status = x && y ? 0 : usrsub_fail(r->msg, "out of memory");
-    const double fx = usrsub_direction_displacement_factor(&r->units, k);
-    const double fy = usrsub_direction_force_factor(&r->units, k);
+    const double fx = usrsub_property_units_displacement_factor(&r->units, k);
+    const double fy = usrsub_property_units_force_factor(&r->units, k);
     for (int i = 0; i < t->nrows && status == 0; ++i) {
         const usrsub_teim_row *rw = &t->row[i];
         if (rw->ncells != t->ncolumns || cx >= rw->ncells || cy >= rw->ncells ||
@@ -219,8 +219,8 @@ static int read_cubic(reader *r, usrsub_bushing_direction *dir, int k, int line)
     if ((usrsub_teim_find_entry(b, "RP") && number(r, b, "RP", &c->rp)) ||
         (usrsub_teim_find_entry(b, "RN") && number(r, b, "RN", &c->rn)))
         return -1;
-    const double fd = usrsub_direction_displacement_factor(&r->units, k);
-    const double ff = usrsub_direction_force_factor(&r->units, k);
+    const double fd = usrsub_property_units_displacement_factor(&r->units, k);
+    const double ff = usrsub_property_units_force_factor(&r->units, k);
     c->en *= fd, c->rn *= fd, c->o *= fd, c->rp *= fd, c->ep *= fd;
     c->rnf *= ff, c->of *= ff, c->rpf *= ff;
     c->ens *= ff / fd, c->os *= ff / fd, c->eps *= ff / fd;
@@ -281,8 +281,8 @@ static int read_preload_offset_scale(reader *r, usrsub_bushing *b)
                 return usrsub_fail(r->msg, "'%s' line %d: %s = '%s' is not a finite number",
                                    r->f->path, rw->line, cols[j + 1], rw->cell[c[j + 1]]);
         usrsub_bushing_direction *d = &b->dir[k];
-        d->preload = v[0] * usrsub_direction_force_factor(&r->units, k);
-        d->offset = v[1] * usrsub_direction_displacement_factor(&r->units, k);
+        d->preload = v[0] * usrsub_property_units_force_factor(&r->units, k);
+        d->offset = v[1] * usrsub_property_units_displacement_factor(&r->units, k);
         d->disp_scale = v[2];
         d->force_scale = v[3];
     }
@@ -375,7 +375,7 @@ static int read_friction(reader *r, usrsub_bushing *b, const usrsub_teim_block *
     fr->bristle_damping *= T / L;
     fr->slip_damping *= T / L;
     fr->ball_radius *= L;
-    fr->preload_torque *= usrsub_direction_force_factor(&r->units, 3);
+    fr->preload_torque *= usrsub_property_units_force_factor(&r->units, 3);
     return 0;
 }
 
@@ -414,8 +414,8 @@ static int read_mount(reader *r, usrsub_bushing *b, const usrsub_teim_block *blk
             return usrsub_fail(r->msg, "'%s' line %d: the mount of %s needs K > 0 and C >= 0"
                                " (got K = %g, C = %g); leave a rigid direction out",
                                r->f->path, rw->line, direction_names[k], K, C);
-        const double ff = usrsub_direction_force_factor(&r->units, k);
-        const double fd = usrsub_direction_displacement_factor(&r->units, k);
+        const double ff = usrsub_property_units_force_factor(&r->units, k);
+        const double fd = usrsub_property_units_displacement_factor(&r->units, k);
         b->dir[k].mount = 1;
         b->dir[k].mount_k = K * ff / fd;
         b->dir[k].mount_c = C * ff * r->units.time / fd;
@@ -464,8 +464,8 @@ static int read_rubber(reader *r, usrsub_bushing_direction *dir, int k, int line
                            " (got R %g, RMIN %g, K0 %g, C0 %g)", r->f->path, b->line, b->name,
                            R, rmin, dir->rubber_k, dir->rubber_c);
     R = fmax(R, rmin);
-    const double ff = usrsub_direction_force_factor(&r->units, k);
-    const double fd = usrsub_direction_displacement_factor(&r->units, k);
+    const double ff = usrsub_property_units_force_factor(&r->units, k);
+    const double fd = usrsub_property_units_displacement_factor(&r->units, k);
     dir->rubber = 1;
     dir->rubber_r = R / r->units.time;
     dir->rubber_k *= ff / fd;
@@ -480,8 +480,8 @@ static int read_bushing(reader *r, usrsub_bushing *b, usrsub_read_report *report
         return -1;
     const usrsub_teim_block *friction = usrsub_teim_find_block(r->f, "FRICTION");
     if (friction != NULL && usrsub_teim_find_entry(friction, "ACTIVE") == NULL) {
-        usrsub_read_report_add(report, "'%s': [FRICTION] has no ACTIVE flag and is taken as"
-                               " inactive", r->f->path);
+        usrsub_property_file_notice(report, "'%s': [FRICTION] has no ACTIVE flag and is taken"
+                                    " as inactive", r->f->path);
         friction = NULL;
     }
     const usrsub_teim_block *mount = usrsub_teim_find_block(r->f, "MOUNT_STIFFNESS");
@@ -490,8 +490,8 @@ static int read_bushing(reader *r, usrsub_bushing *b, usrsub_read_report *report
         return -1;
     for (int k = 0; k < 6; ++k) {
         usrsub_bushing_direction *d = &b->dir[k];
-        const double ff = usrsub_direction_force_factor(&r->units, k);
-        const double fd = usrsub_direction_displacement_factor(&r->units, k);
+        const double ff = usrsub_property_units_force_factor(&r->units, k);
+        const double fd = usrsub_property_units_displacement_factor(&r->units, k);
         int status = 0;
         if (active[SPLINE_STIFFNESS][k]) {
             d->stiffness = USRSUB_STIFFNESS_SPLINE;

@@ -72,8 +72,9 @@ static int read_matrix(const usrsub_teim_file *f, const char *block, const usrsu
         if (read_row(f, block, &t->row[i], i, row, msg) != 0)
             return -1;
         for (int j = 0; j < 6; ++j) {
-            m[i + 6 * j] = row[j] * usrsub_direction_force_factor(u, i) * pow(u->time, time_power) /
-                           usrsub_direction_displacement_factor(u, j);
+            m[i + 6 * j] = row[j] * usrsub_property_units_force_factor(u, i) *
+                           pow(u->time, time_power) /
+                           usrsub_property_units_displacement_factor(u, j);
             /* the entries hand -K and -D out as the partials, unchecked: finite here */
             if (!isfinite(m[i + 6 * j]))
                 return usrsub_fail(msg, "'%s' line %d: [%s] row %d, column %d (%g) is out of range"
@@ -99,7 +100,7 @@ static int read_preload(const usrsub_teim_file *f, const usrsub_unit_factors *u,
         read_row(f, "PRELOAD", &t->row[0], 0, p, msg) != 0)
         return -1;
     for (int i = 0; i < 6; ++i)
-        p[i] *= usrsub_direction_force_factor(u, i);
+        p[i] *= usrsub_property_units_force_factor(u, i);
     return 0;
 }
 
@@ -124,17 +125,17 @@ static void check_matrices(const char *path, const usrsub_flex_joint *j,
         snprintf(text, sizeof text, "'%s': the stiffness matrix is not symmetric (K[%d][%d] ="
                  " %g, K[%d][%d] = %g): the joint is not conservative", path, wi + 1, wj + 1,
                  j->k[wi + 6 * wj], wj + 1, wi + 1, j->k[wj + 6 * wi]);
-        usrsub_read_report_add(report, "%s", text);
+        usrsub_property_file_notice(report, "%s", text);
     }
     if (usrsub_scaled_smallest_eigenvalue(j->k, 6) < -1e-9) {
         snprintf(text, sizeof text, "'%s': the stiffness matrix is not positive semi-definite"
                  " (some deformation gives energy back): the joint can drive motion", path);
-        usrsub_read_report_add(report, "%s", text);
+        usrsub_property_file_notice(report, "%s", text);
     }
     if (usrsub_scaled_smallest_eigenvalue(j->d, 6) < -1e-9) {
         snprintf(text, sizeof text, "'%s': the damping matrix is not positive semi-definite"
                  " (some motion is pushed, not damped): the joint can add energy", path);
-        usrsub_read_report_add(report, "%s", text);
+        usrsub_property_file_notice(report, "%s", text);
     }
 }
 
@@ -153,7 +154,7 @@ static int read_joint(const usrsub_teim_file *f, const usrsub_unit_factors *u, v
                                " HEADER, UNITS, GLOBAL, STIFFNESS, DAMPING or PRELOAD)", f->path,
                                f->block[b].line, f->block[b].name);
     }
-    if (usrsub_read_rotation_measure(f, &j->rotation_measure, msg) != 0 ||
+    if (usrsub_property_file_rotation_measure(f, &j->rotation_measure, msg) != 0 ||
         read_matrix(f, "STIFFNESS", u, 0.0, j->k, 1, msg) != 0 ||
         read_matrix(f, "DAMPING", u, 1.0, j->d, 0, msg) != 0 || read_preload(f, u, j->preload, msg) != 0)
         return -1;

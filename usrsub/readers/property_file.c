@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
-void usrsub_read_report_add(usrsub_read_report *report, const char *fmt, ...)
+void usrsub_property_file_notice(usrsub_read_report *report, const char *fmt, ...)
 {
     char sentence[USRSUB_MESSAGE_MAX];
     va_list ap;
@@ -47,9 +47,9 @@ int usrsub_property_file_read(const char *path, const char *file_type, const cha
     if (status == 0) {
         int has_notice = 0;
         usrsub_message notice;
-        status = usrsub_property_units(f, model_scales, &units, &notice, &has_notice, msg);
+        status = usrsub_property_units_read(f, model_scales, &units, &notice, &has_notice, msg);
         if (status == 0 && has_notice)
-            usrsub_read_report_add(report, "%s", notice.text);
+            usrsub_property_file_notice(report, "%s", notice.text);
     }
     if (status == 0)
         status = body(f, &units, ctx, report, msg);
@@ -57,7 +57,8 @@ int usrsub_property_file_read(const char *path, const char *file_type, const cha
     return status;
 }
 
-int usrsub_read_rotation_measure(const usrsub_teim_file *f, int *measure, usrsub_message *msg)
+int usrsub_property_file_rotation_measure(const usrsub_teim_file *f, int *measure,
+                                          usrsub_message *msg)
 {
     *measure = USRSUB_PROJECTION_ANGLES;
     const usrsub_teim_entry *e =

@@ -24,7 +24,7 @@ typedef struct usrsub_read_report {
 } usrsub_read_report;
 
 /* Appends a sentence to the report's notice. */
-void usrsub_read_report_add(usrsub_read_report *report, const char *fmt, ...)
+void usrsub_property_file_notice(usrsub_read_report *report, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
 
 /* Reads the blocks of one kind of file into ctx; returns 0 or -1 with msg. */
@@ -40,7 +40,8 @@ int usrsub_property_file_read(const char *path, const char *file_type, const cha
 
 /* [GLOBAL] ROTATION_MEASURE = 'PROJECTION_ANGLES' (the default) or
  * 'ROTATION_VECTOR', of a .gbs or .gfj file (docs/interface.md §3.7). */
-int usrsub_read_rotation_measure(const usrsub_teim_file *f, int *measure, usrsub_message *msg);
+int usrsub_property_file_rotation_measure(const usrsub_teim_file *f, int *measure,
+                                          usrsub_message *msg);
 
 #ifdef __cplusplus
 }

@@ -6,9 +6,9 @@
 
 #include "usrsub/readers/units.h"
 
-int usrsub_property_units(const usrsub_teim_file *f, const double *model_scales,
-                          usrsub_unit_factors *factors, usrsub_message *notice,
-                          int *has_notice, usrsub_message *msg)
+int usrsub_property_units_read(const usrsub_teim_file *f, const double *model_scales,
+                               usrsub_unit_factors *factors, usrsub_message *notice,
+                               int *has_notice, usrsub_message *msg)
 {
     factors->length = factors->force = factors->mass = factors->time = factors->angle = 1.0;
     factors->converted = 0;
@@ -28,11 +28,11 @@ int usrsub_property_units(const usrsub_teim_file *f, const double *model_scales,
         const usrsub_teim_entry *e = usrsub_teim_find_entry(units, keys[k].key);
         if (e == NULL)
             return usrsub_fail(msg, "'%s' line %d: [UNITS] has no %s (expected one of %s)",
-                               f->path, units->line, keys[k].key, usrsub_unit_names(keys[k].kind));
-        if (usrsub_unit_size(keys[k].kind, e->value, &file_si[keys[k].kind]) != 0)
+                               f->path, units->line, keys[k].key, usrsub_units_names(keys[k].kind));
+        if (usrsub_units_size(keys[k].kind, e->value, &file_si[keys[k].kind]) != 0)
             return usrsub_fail(msg, "'%s' line %d: %s = '%s' is not a unit this library knows"
                                " (expected one of %s)", f->path, e->line, keys[k].key, e->value,
-                               usrsub_unit_names(keys[k].kind));
+                               usrsub_units_names(keys[k].kind));
     }
     if (units == NULL) {
         snprintf(notice->text, sizeof notice->text, "'%s' has no [UNITS] block: its values are"
@@ -55,17 +55,17 @@ int usrsub_property_units(const usrsub_teim_file *f, const double *model_scales,
     return 0;
 }
 
-double usrsub_unit_factor(const usrsub_unit_factors *u, int f, int l, int t, int a)
+double usrsub_property_units_factor(const usrsub_unit_factors *u, int f, int l, int t, int a)
 {
     return pow(u->force, f) * pow(u->length, l) * pow(u->time, t) * pow(u->angle, a);
 }
 
-double usrsub_direction_displacement_factor(const usrsub_unit_factors *u, int k)
+double usrsub_property_units_displacement_factor(const usrsub_unit_factors *u, int k)
 {
     return k < 3 ? u->length : u->angle;
 }
 
-double usrsub_direction_force_factor(const usrsub_unit_factors *u, int k)
+double usrsub_property_units_force_factor(const usrsub_unit_factors *u, int k)
 {
     return k < 3 ? u->force : u->force * u->length;
 }

@@ -60,7 +60,7 @@ static const unit_entry *table_of(enum usrsub_unit_kind kind)
     }
 }
 
-int usrsub_unit_size(enum usrsub_unit_kind kind, const char *name, double *si)
+int usrsub_units_size(enum usrsub_unit_kind kind, const char *name, double *si)
 {
     const unit_entry *t = table_of(kind);
     if (t == NULL || name == NULL)
@@ -73,7 +73,7 @@ int usrsub_unit_size(enum usrsub_unit_kind kind, const char *name, double *si)
     return -1;
 }
 
-const char *usrsub_unit_names(enum usrsub_unit_kind kind)
+const char *usrsub_units_names(enum usrsub_unit_kind kind)
 {
     switch (kind) {
     case USRSUB_UNIT_LENGTH: return "mm, cm, m (meter), km, inch, foot, yard, mile, micrometer";

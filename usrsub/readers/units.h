@@ -24,10 +24,10 @@ enum usrsub_unit_kind {
 
 /* Size of the named unit of the given kind in SI; returns 0, or -1 when the
  * name is unknown for that kind. */
-int usrsub_unit_size(enum usrsub_unit_kind kind, const char *name, double *si);
+int usrsub_units_size(enum usrsub_unit_kind kind, const char *name, double *si);
 
 /* Comma-separated list of the accepted names of a kind, for messages. */
-const char *usrsub_unit_names(enum usrsub_unit_kind kind);
+const char *usrsub_units_names(enum usrsub_unit_kind kind);
 
 #ifdef __cplusplus
 }
