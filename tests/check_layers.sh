@@ -2,8 +2,8 @@
 # The architecture, checked (docs/architecture.md, "Layers"):
 #  - arrows run one way: a file includes only headers of its own layer or a
 #    lower one (library: entries -> readers -> core; harness: cmd -> tools ->
-#    sim/simulation -> sim/newton -> sim/dynamics -> sim/ode -> host -> frames
-#    -> model -> base; the ODE solvers know nothing of the model);
+#    sim/simulation -> sim/newton -> sim/dynamics -> sim/ode -> host -> expr
+#    -> frames -> model -> base; the ODE solvers know nothing of the model);
 #  - the harness shares no code with the library it verifies: of the
 #    library's headers it includes only the solver ABI;
 #  - the harness has one global, the ABI's binding (host/abi.c);
@@ -23,13 +23,14 @@ rank_of() { # layer rank of a path inside a tree, or empty
     harness/base/*) echo 0 ;;
     harness/model/*) echo 1 ;;
     harness/frames/*) echo 2 ;;
-    harness/host/*) echo 3 ;;
-    harness/sim/ode/*) echo 4 ;;
-    harness/sim/dynamics/*) echo 5 ;;
-    harness/sim/newton/*) echo 6 ;;
-    harness/sim/simulation/*) echo 7 ;;
-    harness/tools/*) echo 8 ;;
-    harness/cmd/*) echo 9 ;;
+    harness/expr/*) echo 3 ;;
+    harness/host/*) echo 4 ;;
+    harness/sim/ode/*) echo 5 ;;
+    harness/sim/dynamics/*) echo 6 ;;
+    harness/sim/newton/*) echo 7 ;;
+    harness/sim/simulation/*) echo 8 ;;
+    harness/tools/*) echo 9 ;;
+    harness/cmd/*) echo 10 ;;
   esac
 }
 
