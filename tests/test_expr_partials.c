@@ -5,9 +5,10 @@
  * the values at kinks (the mean of the one-sided slopes, or 0 where a
  * function is flat or jumps) against the one-sided differences; only IF's
  * branch contributes; a partial that is not finite faults only where it is
- * used.
+ * used; one program evaluated by four threads at once.
  */
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -295,6 +296,60 @@ static void partials_that_are_not_finite(void **state)
         fixture.variables[k] = k + 1;
 }
 
+/* One program evaluated by four threads at once, each with variables of its
+ * own: the same values and partials as one thread gets, bit for bit (the
+ * program is read only; under ThreadSanitizer a write would be a race). */
+typedef struct worker {
+    const hx_expr_program *p;
+    const hx_frames *frames;
+    double variables[16];
+    double value, partials[8];
+    int failures;
+} worker;
+
+static void *work(void *arg)
+{
+    worker *w = arg;
+    const hx_expr_context c = {w->frames, w->variables};
+    double scratch[512], value, partials[8];
+    hx_expr_fault fault;
+    for (int k = 0; k < 2000; ++k) {
+        if (hx_expr_eval_partials(w->p, &c, &value, partials, scratch, &fault) != 0 ||
+            value != w->value || memcmp(partials, w->partials, sizeof partials) != 0)
+            ++w->failures;
+    }
+    return NULL;
+}
+
+static void threads_share_a_program(void **state)
+{
+    (void)state;
+    hx_expr_program *p = expr_compile(&fixture, "IMPACT(VARVAL(1), VARVAL(2), 1, 100, 2.3, 10,"
+                                                " 0.1) * AKISPL(VARVAL(3), VARVAL(4), 103, 1)"
+                                                " + CURVE(VARVAL(5), 1, 2, 2)");
+    assert_true(hx_expr_scratch_size(p) <= 512 && hx_expr_input_count(p) <= 8);
+    worker w[4];
+    pthread_t thread[4];
+    for (int t = 0; t < 4; ++t) {
+        memset(&w[t], 0, sizeof w[t]);
+        w[t].p = p, w[t].frames = &fixture.frames;
+        const double v[5] = {0.95 - 0.01 * t, -2.0 + t, 2.3 + 0.1 * t, 0.7, -0.5 + 0.2 * t};
+        memcpy(w[t].variables, v, sizeof v);
+        const hx_expr_context c = {&fixture.frames, w[t].variables};
+        double scratch[512];
+        hx_expr_fault fault;
+        assert_int_equal(hx_expr_eval_partials(p, &c, &w[t].value, w[t].partials, scratch,
+                                               &fault), 0);
+    }
+    for (int t = 0; t < 4; ++t)
+        assert_int_equal(pthread_create(&thread[t], NULL, work, &w[t]), 0);
+    for (int t = 0; t < 4; ++t) {
+        pthread_join(thread[t], NULL);
+        assert_int_equal(w[t].failures, 0);
+    }
+    hx_expr_free(p);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -305,6 +360,7 @@ int main(void)
         cmocka_unit_test(branches_and_time),
         cmocka_unit_test(kinks),
         cmocka_unit_test(partials_that_are_not_finite),
+        cmocka_unit_test(threads_share_a_program),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -73,8 +73,8 @@ int hx_expr_fail(hx_message *msg, const hx_expr_program *p, const hx_expr_fault 
     const int symbol = name[0] != '\0' && strchr("+-*/", name[0]) != NULL;
     char argument[48] = "";
     if (f->has_argument)
-        snprintf(argument, sizeof argument, " (%.17g)", f->argument);
-    return hx_fail(msg, "%s:%d:%d: %s%s%s%s%s: %s%s at t = %.17g", p->file, f->line, f->column,
+        snprintf(argument, sizeof argument, " (%.12g)", f->argument);
+    return hx_fail(msg, "%s:%d:%d: %s%s%s%s%s: %s%s at t = %.12g", p->file, f->line, f->column,
                    element != NULL ? element : "", element != NULL ? ": " : "",
                    symbol ? "'" : "", name, symbol ? "'" : "", f->what, argument, f->time);
 }
