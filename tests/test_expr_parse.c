@@ -370,6 +370,9 @@ static void unlinked_programs_fault(void **state)
     hx_expr_fault fault;
     assert_int_equal(hx_expr_eval(p, &c, &value, &fault), -1);
     assert_int_equal(fault.kind, HX_EXPR_FAULT_NOT_LINKED);
+    hx_expr_fail(&msg, p, &fault, NULL);
+    assert_string_equal(msg.text, "(text):1:1: the expression is not linked against a model"
+                        " (hx_expr_link) at t = 0");
     expr_fixture other;
     expr_open(&other, "other.xml", expr_function_model);
     assert_int_equal(hx_expr_link(p, other.model, &msg), 0);

@@ -69,12 +69,15 @@ int hx_expr_depth(const hx_expr_program *p)
 int hx_expr_fail(hx_message *msg, const hx_expr_program *p, const hx_expr_fault *f,
                  const char *element)
 {
+    /* "element: 'op': what (value) at t = time", each part there when it is */
+    char function[48] = "", argument[48] = "";
     const char *name = f->function != NULL ? f->function : "";
-    const int symbol = name[0] != '\0' && strchr("+-*/", name[0]) != NULL;
-    char argument[48] = "";
+    if (name[0] != '\0')
+        snprintf(function, sizeof function, strchr("+-*/", name[0]) != NULL ? "'%s': " : "%s: ",
+                 name);
     if (f->has_argument)
         snprintf(argument, sizeof argument, " (%.12g)", f->argument);
-    return hx_fail(msg, "%s:%d:%d: %s%s%s%s%s: %s%s at t = %.12g", p->file, f->line, f->column,
-                   element != NULL ? element : "", element != NULL ? ": " : "",
-                   symbol ? "'" : "", name, symbol ? "'" : "", f->what, argument, f->time);
+    return hx_fail(msg, "%s:%d:%d: %s%s%s%s%s at t = %.12g", p->file, f->line, f->column,
+                   element != NULL ? element : "", element != NULL ? ": " : "", function,
+                   f->what, argument, f->time);
 }
