@@ -286,6 +286,19 @@ static void partials_that_are_not_finite(void **state)
     assert_int_equal(hx_expr_eval_partials_forward(p, &c, &value, partials, scratch, &fault), 0);
     assert_close(partials[0], 1.0, 0, 0);
     hx_expr_free(p);
+    /* each term finite, their sum in one input not: a fault at the input (the fuzzer's
+     * find, fuzz/corpus/expr/partial_sum_overflow) */
+    fixture.variables[0] = 0.001, fixture.variables[1] = 1.0;
+    p = expr_compile(&fixture, "1e308*VARVAL(1) + 1e308*VARVAL(2)*VARVAL(1)");
+    assert_int_equal(hx_expr_eval(p, &c, &value, &fault), 0);
+    assert_close(value, 2e305, 1e-15, 0);
+    assert_int_equal(hx_expr_eval_partials(p, &c, &value, partials, scratch, &fault), -1);
+    assert_int_equal(fault.kind, HX_EXPR_FAULT_PARTIAL);
+    assert_string_equal(fault.function, "VARVAL");
+    assert_int_equal(fault.column, 7);
+    assert_int_equal(hx_expr_eval_partials_forward(p, &c, &value, partials, scratch, &fault), -1);
+    assert_int_equal(fault.kind, HX_EXPR_FAULT_PARTIAL);
+    hx_expr_free(p);
     /* a constant program has no inputs and no partials */
     p = expr_compile(&fixture, "2 * PI");
     assert_int_equal(hx_expr_input_count(p), 0);

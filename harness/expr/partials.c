@@ -70,6 +70,25 @@ static int unanswered(const hx_expr_program *p, const hx_expr_context *c, int pc
     return hx_expr_operand_fault(p, c, pc, fault);
 }
 
+/* The partials summed over an input's uses may overflow where each term is
+ * finite: 0, or -1 with the fault at the input's first place. */
+static int partials_finite(const hx_expr_program *p, const hx_expr_context *c,
+                           const double *partials, hx_expr_fault *fault)
+{
+    for (int k = 0; k < p->ninputs; ++k)
+        if (!isfinite(partials[k])) {
+            const hx_expr_input *in = &p->inputs[k];
+            fault->kind = HX_EXPR_FAULT_PARTIAL;
+            fault->function = in->kind == HX_EXPR_INPUT_TIME
+                                  ? "TIME" : hx_expr_function_at(in->function)->name;
+            fault->what = "the partial derivative in it is not finite (an overflow)";
+            fault->has_argument = 1, fault->argument = partials[k];
+            fault->line = in->line, fault->column = in->column, fault->time = c->frames->time;
+            return -1;
+        }
+    return 0;
+}
+
 /* The adjoint's tape in scratch: per value pushed, its adjoint, where its
  * local partials start and how many (those in arguments that depend on an
  * input), and the input it is (-1 for others); per such argument, its
@@ -199,7 +218,7 @@ int hx_expr_eval_partials(const hx_expr_program *p, const hx_expr_context *c, do
         for (int i = t.first[e], end = t.first[e] + t.count[e]; i < end; ++i)
             t.adjoint[t.operand[i]] += t.partial[i] * a;
     }
-    return 0;
+    return partials_finite(p, c, partials, fault);
 }
 
 int hx_expr_eval_partials_forward(const hx_expr_program *p, const hx_expr_context *c,
@@ -280,5 +299,5 @@ int hx_expr_eval_partials_forward(const hx_expr_program *p, const hx_expr_contex
     *value = stack[0];
     for (int k = 0; k < n; ++k)
         partials[k] = varies[0] ? gradient[k] : 0.0;
-    return 0;
+    return partials_finite(p, c, partials, fault);
 }
