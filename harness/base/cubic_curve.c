@@ -87,19 +87,20 @@ static void piece(const double *x, const double *y, const double *slope, int k, 
     out[2] = 2.0 * c2 + 6.0 * c3 * d;
 }
 
-void hx_cubic_curve(const double *x, const double *y, const double *slope, int n, int linear,
-                    double u, double out[3])
+/* Where u falls: on a straight continuation (linear, beyond the knots):
+ * 1, with the end knot in *k; else 0, with the piece in *k (x[k] <= u <
+ * x[k + 1]; the first piece before the knots, the last from the last knot
+ * on) and the knot to expand about in *about. */
+static int locate(const double *x, int n, int linear, double u, int *k, int *about)
 {
     const int end = u < x[0] ? 0 : u > x[n - 1] ? n - 1 : -1;
     if (end >= 0 && linear) {
-        out[0] = y[end] + slope[end] * (u - x[end]);
-        out[1] = slope[end];
-        out[2] = 0.0;
-        return;
+        *k = end;
+        return 1;
     }
     if (u >= x[n - 1]) { /* the last knot, or the last piece continued */
-        piece(x, y, slope, n - 2, n - 1, u, out);
-        return;
+        *k = n - 2, *about = n - 1;
+        return 0;
     }
     int lo = 0, hi = n - 1; /* x[lo] <= u < x[hi], or u before the first knot */
     while (hi - lo > 1) {
@@ -109,5 +110,30 @@ void hx_cubic_curve(const double *x, const double *y, const double *slope, int n
         else
             hi = mid;
     }
-    piece(x, y, slope, lo, lo, u, out);
+    *k = *about = lo;
+    return 0;
+}
+
+void hx_cubic_curve(const double *x, const double *y, const double *slope, int n, int linear,
+                    double u, double out[3])
+{
+    int piece_index, about;
+    if (locate(x, n, linear, u, &piece_index, &about) != 0) {
+        const int end = piece_index;
+        out[0] = y[end] + slope[end] * (u - x[end]);
+        out[1] = slope[end];
+        out[2] = 0.0;
+        return;
+    }
+    piece(x, y, slope, piece_index, about, u, out);
+}
+
+double hx_cubic_curve_third(const double *x, const double *y, const double *slope, int n,
+                            int linear, double u)
+{
+    int k, about;
+    if (locate(x, n, linear, u, &k, &about) != 0)
+        return 0.0;
+    const double h = x[k + 1] - x[k], m = (y[k + 1] - y[k]) / h;
+    return 6.0 * (slope[k] + slope[k + 1] - 2.0 * m) / (h * h);
 }

@@ -24,4 +24,9 @@ int hx_natural_cubic_slopes(const double *x, const double *y, int n, double *slo
 void hx_cubic_curve(const double *x, const double *y, const double *slope, int n, int linear,
                     double u, double out[3]);
 
+/* The curve's third derivative at u: the piece's (6 times its cubic
+ * coefficient), 0 on a straight continuation. */
+double hx_cubic_curve_third(const double *x, const double *y, const double *slope, int n,
+                            int linear, double u);
+
 #endif

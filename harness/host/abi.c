@@ -224,9 +224,10 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
     if (count < 0) {
         report_refused(c, &q, "not a function and argument list the harness answers (c_sysary: DISP TDISP"
                        " RDISP VEL TVEL RVEL, ARRAY of an IC Reference_Array; c_sysfnc: DX DY DZ DM"
-                       " AX AY AZ VX VY VZ WX WY WZ PSI THETA PHI YAW PITCH ROLL, DIF DIF1 of a"
-                       " Control_Diff; existing ids). Accelerations (ACC, RACC, ACCX ...) and other"
-                       " elements' forces (FX ... TZ) are not answered: docs/interface.md §5.1");
+                       " AX AY AZ PSI THETA PHI YAW PITCH ROLL INCANG VX VY VZ VM VR WX WY WZ WM,"
+                       " DIF DIF1 of a Control_Diff; existing ids). Accelerations (ACC, RACC, ACCX"
+                       " ...) and other elements' forces (FX ... TZ) are not answered:"
+                       " docs/interface.md §5.1");
         return -1;
     }
     if (c->dependency_pass) {

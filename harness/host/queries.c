@@ -6,20 +6,20 @@
 #include <string.h>
 
 #include "base/vecmath.h"
+#include "frames/measure_functions.h"
 #include "frames/measures.h"
 
-/* Function codes: the arrays, then the scalars (axis added to the base). */
+/* Function codes: the arrays, then the scalar measures (F_MEASURE plus the
+ * measure, frames/measure_functions.h), then DIF and DIF1. */
 enum {
-    F_DISP, F_TDISP, F_RDISP, F_VEL, F_TVEL, F_RVEL, F_ARRAY, F_DM,
-    F_DX, F_AX = F_DX + 3, F_VX = F_AX + 3, F_WX = F_VX + 3,
-    F_PSI = F_WX + 3, /* PSI THETA PHI: 3-1-3 angles of I relative to J */
-    F_YAW = F_PSI + 3, /* YAW PITCH ROLL: 3-2-1 angles of I relative to J */
-    F_DIF = F_YAW + 3, /* DIF, DIF1: a Control_Diff's state and its rate */
+    F_DISP, F_TDISP, F_RDISP, F_VEL, F_TVEL, F_RVEL, F_ARRAY,
+    F_MEASURE,
+    F_DIF = F_MEASURE + HX_MEASURE_COUNT, /* DIF, DIF1: a Control_Diff's state and its rate */
     F_DIF1,
     F_COUNT
 };
-static const int max_nsize[F_COUNT] = {3, 3, 2, 4, 4, 3, 1, 2, 3, 3, 3, 2, 2, 2, 4, 4, 4,
-                                       3, 3, 3, 2, 2, 2, 2, 2, 2, 1, 1};
+/* the most ids each array function and DIF, DIF1 take */
+static const int array_nsize[F_MEASURE] = {3, 3, 2, 4, 4, 3, 1};
 
 /* The name packed into an integer, one byte per character, as the library's
  * pointer may be to any text: a switch on it replaces string comparisons on
@@ -28,6 +28,7 @@ static const int max_nsize[F_COUNT] = {3, 3, 2, 4, 4, 3, 1, 2, 3, 3, 3, 2, 2, 2,
 #define PACK3(a, b, c) (PACK2(a, b) | (unsigned long long)(c) << 16)
 #define PACK4(a, b, c, d) (PACK3(a, b, c) | (unsigned long long)(d) << 24)
 #define PACK5(a, b, c, d, e) (PACK4(a, b, c, d) | (unsigned long long)(e) << 32)
+#define PACK6(a, b, c, d, e, f) (PACK5(a, b, c, d, e) | (unsigned long long)(f) << 40)
 
 static int function_code(unsigned long long name)
 {
@@ -38,30 +39,44 @@ static int function_code(unsigned long long name)
     case PACK3('V', 'E', 'L'): return F_VEL;
     case PACK4('T', 'V', 'E', 'L'): return F_TVEL;
     case PACK4('R', 'V', 'E', 'L'): return F_RVEL;
-    case PACK2('D', 'M'): return F_DM;
-    case PACK2('D', 'X'): return F_DX;
-    case PACK2('D', 'Y'): return F_DX + 1;
-    case PACK2('D', 'Z'): return F_DX + 2;
-    case PACK2('A', 'X'): return F_AX;
-    case PACK2('A', 'Y'): return F_AX + 1;
-    case PACK2('A', 'Z'): return F_AX + 2;
-    case PACK2('V', 'X'): return F_VX;
-    case PACK2('V', 'Y'): return F_VX + 1;
-    case PACK2('V', 'Z'): return F_VX + 2;
-    case PACK2('W', 'X'): return F_WX;
-    case PACK2('W', 'Y'): return F_WX + 1;
-    case PACK2('W', 'Z'): return F_WX + 2;
-    case PACK3('P', 'S', 'I'): return F_PSI;
-    case PACK5('T', 'H', 'E', 'T', 'A'): return F_PSI + 1;
-    case PACK3('P', 'H', 'I'): return F_PSI + 2;
-    case PACK3('Y', 'A', 'W'): return F_YAW;
-    case PACK5('P', 'I', 'T', 'C', 'H'): return F_YAW + 1;
-    case PACK4('R', 'O', 'L', 'L'): return F_YAW + 2;
     case PACK5('A', 'R', 'R', 'A', 'Y'): return F_ARRAY;
+    case PACK2('D', 'X'): return F_MEASURE + HX_MEASURE_DX;
+    case PACK2('D', 'Y'): return F_MEASURE + HX_MEASURE_DY;
+    case PACK2('D', 'Z'): return F_MEASURE + HX_MEASURE_DZ;
+    case PACK2('D', 'M'): return F_MEASURE + HX_MEASURE_DM;
+    case PACK2('A', 'X'): return F_MEASURE + HX_MEASURE_AX;
+    case PACK2('A', 'Y'): return F_MEASURE + HX_MEASURE_AY;
+    case PACK2('A', 'Z'): return F_MEASURE + HX_MEASURE_AZ;
+    case PACK3('P', 'S', 'I'): return F_MEASURE + HX_MEASURE_PSI;
+    case PACK5('T', 'H', 'E', 'T', 'A'): return F_MEASURE + HX_MEASURE_THETA;
+    case PACK3('P', 'H', 'I'): return F_MEASURE + HX_MEASURE_PHI;
+    case PACK3('Y', 'A', 'W'): return F_MEASURE + HX_MEASURE_YAW;
+    case PACK5('P', 'I', 'T', 'C', 'H'): return F_MEASURE + HX_MEASURE_PITCH;
+    case PACK4('R', 'O', 'L', 'L'): return F_MEASURE + HX_MEASURE_ROLL;
+    case PACK6('I', 'N', 'C', 'A', 'N', 'G'): return F_MEASURE + HX_MEASURE_INCANG;
+    case PACK2('V', 'X'): return F_MEASURE + HX_MEASURE_VX;
+    case PACK2('V', 'Y'): return F_MEASURE + HX_MEASURE_VY;
+    case PACK2('V', 'Z'): return F_MEASURE + HX_MEASURE_VZ;
+    case PACK2('V', 'M'): return F_MEASURE + HX_MEASURE_VM;
+    case PACK2('V', 'R'): return F_MEASURE + HX_MEASURE_VR;
+    case PACK2('W', 'X'): return F_MEASURE + HX_MEASURE_WX;
+    case PACK2('W', 'Y'): return F_MEASURE + HX_MEASURE_WY;
+    case PACK2('W', 'Z'): return F_MEASURE + HX_MEASURE_WZ;
+    case PACK2('W', 'M'): return F_MEASURE + HX_MEASURE_WM;
     case PACK3('D', 'I', 'F'): return F_DIF;
     case PACK4('D', 'I', 'F', '1'): return F_DIF1;
     default: return -1;
     }
+}
+
+/* The fewest and the most ids a function takes. */
+static void nsize_range(int code, int *least, int *most)
+{
+    *least = 1;
+    if (code >= F_MEASURE && code < F_DIF)
+        hx_measure_markers((hx_measure)(code - F_MEASURE), least, most);
+    else
+        *most = code < F_MEASURE ? array_nsize[code] : 1;
 }
 
 void hx_query_make(hx_query *q, const char *fnc, const int *ipar, int nsize, int is_array)
@@ -139,20 +154,15 @@ int hx_query_capacity(const hx_model *m)
     return most;
 }
 
-/* The 3-2-1 (yaw, pitch, roll) angles of a rotation matrix: R = Rz Ry Rx. */
-static void angles321(const double R[9], double a[3])
-{
-    a[0] = atan2(R[3], R[0]);
-    a[1] = atan2(-R[6], sqrt(R[0] * R[0] + R[3] * R[3]));
-    a[2] = atan2(R[7], R[8]);
-}
-
 int hx_answer(const hx_frames *fr, const hx_query *q, const int *ipar, double *values)
 {
     const int code = q->function, nsize = q->nsize;
     const int array_function = code >= F_DISP && code <= F_ARRAY;
-    if (fr == NULL || code < 0 || array_function != q->is_array || nsize < 1 ||
-        nsize > max_nsize[code] || ipar == NULL || ipar[0] == 0)
+    int least = 1, most = 0;
+    if (code >= 0)
+        nsize_range(code, &least, &most);
+    if (fr == NULL || code < 0 || array_function != q->is_array || nsize < least ||
+        nsize > most || ipar == NULL || ipar[0] == 0)
         return -1;
     if (code == F_ARRAY)
         return array_numbers(fr->model, ipar[0], values);
@@ -174,7 +184,6 @@ int hx_answer(const hx_frames *fr, const hx_query *q, const int *ipar, double *v
             return -1;
     }
     const hx_frame *I = f[0], *J = f[1], *K = f[2], *L = f[3];
-    double R[9], v[3];
     switch (code) {
     case F_DISP:
     case F_TDISP:
@@ -196,35 +205,10 @@ int hx_answer(const hx_frames *fr, const hx_query *q, const int *ipar, double *v
     case F_RVEL:
         hx_relative_angular_velocity(I, J, K, values);
         return 3;
-    case F_DM:
-        v3_sub(v, I->p, J->p);
-        values[0] = v3_norm(v);
-        return 1;
     default:
-        break;
+        values[0] = hx_measure_value((hx_measure)(code - F_MEASURE), f);
+        return 1;
     }
-    if (code >= F_PSI) {
-        double angles[3];
-        hx_relative_rotation(I, J, R);
-        if (code < F_YAW)
-            hx_euler313(R, angles);
-        else
-            angles321(R, angles);
-        values[0] = angles[(code - F_PSI) % 3];
-    } else if (code < F_AX) {
-        hx_displacement(I, J, K, v);
-        values[0] = v[code - F_DX];
-    } else if (code < F_VX) {
-        hx_relative_rotation(I, J, R);
-        values[0] = hx_projection_angle(R, code - F_AX);
-    } else if (code < F_WX) {
-        hx_relative_velocity(I, J, K, L, v);
-        values[0] = v[code - F_VX];
-    } else {
-        hx_relative_angular_velocity(I, J, K, v);
-        values[0] = v[code - F_WX];
-    }
-    return 1;
 }
 
 int hx_answer_family(const hx_frames *fr, char family, const int ipar[4], double v[3])

@@ -1,8 +1,8 @@
 /*
  * The state queries a library may make (docs/interface.md §5): c_sysary's
- * DISP, TDISP, RDISP, VEL, TVEL, RVEL and c_sysfnc's DX DY DZ DM AX AY AZ VX
- * VY VZ WX WY WZ, with their marker arguments, and the answers computed from
- * a state.
+ * DISP, TDISP, RDISP, VEL, TVEL, RVEL, ARRAY and c_sysfnc's scalar measures
+ * (frames/measure_functions.h), DIF and DIF1, with their arguments, and the
+ * answers computed from a state.
  */
 #ifndef HX_HOST_QUERIES_H
 #define HX_HOST_QUERIES_H

@@ -143,6 +143,14 @@ int hx_model_spline(const hx_model *m, int id)
     return -1;
 }
 
+int hx_model_curve(const hx_model *m, int id)
+{
+    for (int k = 0; k < m->ncurves; ++k)
+        if (m->curves[k].id == id)
+            return k;
+    return -1;
+}
+
 static void free_user_call(hx_user_call *u)
 {
     free(u->dll_name);
@@ -185,6 +193,9 @@ void hx_model_free(hx_model *m)
         free(m->splines[k].cubic_slope);
     }
     free(m->splines);
+    for (int k = 0; k < m->ncurves; ++k)
+        free(m->curves[k].points);
+    free(m->curves);
     free(m->variables);
     free(m->arrays);
     free(m->stateeqns);

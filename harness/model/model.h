@@ -209,6 +209,20 @@ typedef struct hx_spline {
     int line;
 } hx_spline;
 
+/* A curve (docs/interface.md §8.4): a B-spline of `order` over control
+ * points, a three-dimensional curve of the parameter alpha in [-1, 1], as
+ * Adams' CURVE statement defines one; CURVE(alpha, iord, comp, id) evaluates
+ * it. Filled by no reader yet (model/curve.h checks one and fits one to
+ * points on it). */
+typedef struct hx_curve {
+    int id;
+    int order;      /* 2 to 8; 4, the cubic, is the statement's default */
+    int closed;     /* the last point repeats the first and the curve closes smoothly */
+    int npoints;    /* control points */
+    double *points; /* 3 npoints: x y z of each control point */
+    int line;
+} hx_curve;
+
 typedef struct hx_model {
     char *path;
     char *dir;               /* folder of the model file */
@@ -248,6 +262,8 @@ typedef struct hx_model {
     int marker_slot_count;
     hx_spline *splines;
     int nsplines;
+    hx_curve *curves;
+    int ncurves;
 } hx_model;
 
 /* Reads a model; warnings go to `warnings` (may be NULL). Returns NULL with
@@ -281,5 +297,7 @@ const char *hx_routine_element_name(enum hx_routine_kind kind);
 const char *hx_force_element_name(const hx_force *f);
 /* Index of the Reference_Spline with this id, or -1. */
 int hx_model_spline(const hx_model *m, int id);
+/* Index of the curve with this id, or -1. */
+int hx_model_curve(const hx_model *m, int id);
 
 #endif

@@ -1,4 +1,4 @@
-/* Numbers and STEP/STEP5 of TIME (time_function.h). */
+/* Numbers and STEP/STEP5 of TIME (time_function.h); the steps are base/transition.h's. */
 #include "model/time_function.h"
 
 #include <ctype.h>
@@ -8,28 +8,16 @@
 #include <string.h>
 #include <strings.h>
 
-static double fraction(double x, double x0, double x1, int *outside)
-{
-    *outside = x <= x0 ? -1 : x >= x1 ? 1 : 0;
-    return *outside ? 0.0 : (x - x0) / (x1 - x0);
-}
+#include "base/transition.h"
 
 double hx_step(double x, double x0, double h0, double x1, double h1)
 {
-    int outside;
-    const double a = fraction(x, x0, x1, &outside);
-    if (outside)
-        return outside < 0 ? h0 : h1;
-    return h0 + (h1 - h0) * a * a * (3.0 - 2.0 * a);
+    return hx_transition(HX_TRANSITION_STEP, x, x0, h0, x1, h1, 0);
 }
 
 double hx_step5(double x, double x0, double h0, double x1, double h1)
 {
-    int outside;
-    const double a = fraction(x, x0, x1, &outside);
-    if (outside)
-        return outside < 0 ? h0 : h1;
-    return h0 + (h1 - h0) * a * a * a * (10.0 + a * (-15.0 + 6.0 * a));
+    return hx_transition(HX_TRANSITION_STEP5, x, x0, h0, x1, h1, 0);
 }
 
 double hx_time_function_at(const hx_time_function *f, double t)

@@ -1,0 +1,134 @@
+/* What an evaluation takes from its context and the model (operands.h). */
+#include "expr/operands.h"
+
+#include <math.h>
+
+#include "frames/measure_functions.h"
+#include "model/curve.h"
+#include "model/expr/functions.h"
+#include "model/spline_surface.h"
+
+static int fault_of(hx_expr_fault *f, hx_expr_fault_kind kind, const char *function,
+                    const char *what, int has_argument, double argument)
+{
+    f->kind = kind, f->function = function, f->what = what;
+    f->has_argument = has_argument, f->argument = argument;
+    return -1;
+}
+
+int hx_expr_operands_ready(const hx_expr_program *p, const hx_expr_context *c,
+                           hx_expr_fault *fault)
+{
+    if (p->model != NULL && c != NULL && c->frames != NULL && c->frames->model == p->model)
+        return 1;
+    fault_of(fault, HX_EXPR_FAULT_NOT_LINKED, "", p->model == NULL
+             ? "the expression is not linked against a model (hx_expr_link)"
+             : "the frames are not of the model the expression is linked against", 0, 0.0);
+    fault->line = p->nops > 0 ? p->places[0].line : 0;
+    fault->column = p->nops > 0 ? p->places[0].column : 0;
+    fault->time = c != NULL && c->frames != NULL ? c->frames->time : 0.0;
+    return 0;
+}
+
+/* A variable's value, from the caller's array. */
+static int variable(const hx_expr_context *c, const hx_expr_input *in, double *value,
+                    hx_expr_fault *fault)
+{
+    const char *name = hx_expr_function_at(in->function)->name;
+    if (c->variables == NULL)
+        return fault_of(fault, HX_EXPR_FAULT_INPUT, name, "no variables' values were given to"
+                        " read it from", 0, 0.0);
+    *value = c->variables[in->variable];
+    return 0;
+}
+
+int hx_expr_operand_input(const hx_expr_program *p, const hx_expr_context *c, int k,
+                          double *value, hx_expr_fault *fault)
+{
+    const hx_expr_input *in = &p->inputs[k];
+    const hx_frames *fr = c->frames;
+    switch (in->kind) {
+    case HX_EXPR_INPUT_TIME: *value = fr->time; break;
+    case HX_EXPR_INPUT_MEASURE: {
+        hx_frame scratch[4];
+        const hx_frame *f[4];
+        for (int j = 0; j < 4; ++j)
+            f[j] = hx_frames_marker(fr, in->index[j], &scratch[j]);
+        *value = hx_measure_value((hx_measure)in->measure, f);
+        break;
+    }
+    case HX_EXPR_INPUT_VARVAL:
+        if (variable(c, in, value, fault) != 0)
+            return -1;
+        break;
+    case HX_EXPR_INPUT_DIF:
+    case HX_EXPR_INPUT_DIF1:
+        *value = fr->diffs[2 * in->index[0] + (in->kind == HX_EXPR_INPUT_DIF1)];
+        break;
+    default: { /* HX_EXPR_INPUT_ARYVAL: an IC array's number, or a U array's variable */
+        if (in->variable >= 0) {
+            if (variable(c, in, value, fault) != 0)
+                return -1;
+        } else {
+            *value = p->model->arrays[in->index[0]].numbers[in->ids[1] - 1];
+        }
+        break;
+    }
+    }
+    if (!isfinite(*value))
+        return fault_of(fault, HX_EXPR_FAULT_INPUT,
+                        in->kind == HX_EXPR_INPUT_TIME ? "TIME"
+                                                       : hx_expr_function_at(in->function)->name,
+                        "its value is not finite", 1, *value);
+    return 0;
+}
+
+int hx_expr_operand_model(const hx_expr_program *p, const hx_expr_op *op, const double *args,
+                          double *value, double *partials, hx_expr_fault *fault)
+{
+    const hx_expr_model_call *call = &p->calls[op->a];
+    const char *name = hx_expr_function_at(call->function)->name;
+    double v;
+    if (op->code == HX_OP_SPLINE) {
+        const hx_spline *s = &p->model->splines[call->index];
+        const hx_spline_method method = call->function == HX_FN_AKISPL ? HX_SPLINE_AKIMA
+                                                                        : HX_SPLINE_CUBIC;
+        double d[6];
+        hx_spline_surface(s, method, args[0], args[1], d);
+        /* the value, f_x or f_xx, and its partials in x and z */
+        static const int at[3][3] = {{0, 1, 2}, {1, 3, 4}, {3, -1, -1}};
+        v = d[at[call->order][0]];
+        if (partials != NULL) {
+            if (call->order < 2) {
+                partials[0] = d[at[call->order][1]], partials[1] = d[at[call->order][2]];
+            } else {
+                double third[2];
+                hx_spline_surface_third(s, method, args[0], args[1], third);
+                partials[0] = third[0], partials[1] = third[1];
+            }
+        }
+    } else {
+        const hx_curve *curve = &p->model->curves[call->index];
+        if (!curve->closed && !(args[0] >= -1.0 && args[0] <= 1.0))
+            return fault_of(fault, HX_EXPR_FAULT_DOMAIN, name, "its alpha is outside [-1, 1]",
+                            1, args[0]);
+        double d[4];
+        hx_curve_at(curve, args[0], call->component, d);
+        v = d[call->order];
+        if (partials != NULL)
+            partials[0] = d[call->order + 1];
+    }
+    if (!isfinite(v))
+        return fault_of(fault, HX_EXPR_FAULT_NOT_FINITE, name, "its result is not finite", 0,
+                        0.0);
+    *value = v;
+    return 0;
+}
+
+int hx_expr_operand_fault(const hx_expr_program *p, const hx_expr_context *c, int pc,
+                          hx_expr_fault *fault)
+{
+    fault->line = p->places[pc].line, fault->column = p->places[pc].column;
+    fault->time = c->frames->time;
+    return -1;
+}

@@ -1,0 +1,112 @@
+/*
+ * Function expressions in the Adams/MotionSolve language (docs/interface.md
+ * §8): the text parsed once into a compact, immutable program, its ids
+ * resolved against a model, and the list of what it reads. The evaluator is
+ * the layer above the frames (expr/evaluate.h).
+ */
+#ifndef HX_MODEL_EXPR_EXPR_H
+#define HX_MODEL_EXPR_EXPR_H
+
+#include <stddef.h>
+
+#include "base/message.h"
+#include "model/model.h"
+
+typedef struct hx_expr_program hx_expr_program;
+
+/* Where the text starts: the file it came from, its line and column (from
+ * 1); the text's own newlines move the line on. */
+typedef struct hx_expr_source {
+    const char *file;
+    int line, column;
+} hx_expr_source;
+
+/* What a program reads (docs/interface.md §8.6): TIME, a measure of markers,
+ * a Reference_Variable's value, a Control_Diff's state or rate, a
+ * component of a Reference_Array. Each distinct one is listed once. */
+typedef enum hx_expr_input_kind {
+    HX_EXPR_INPUT_TIME,
+    HX_EXPR_INPUT_MEASURE,
+    HX_EXPR_INPUT_VARVAL,
+    HX_EXPR_INPUT_DIF,
+    HX_EXPR_INPUT_DIF1,
+    HX_EXPR_INPUT_ARYVAL
+} hx_expr_input_kind;
+
+typedef struct hx_expr_input {
+    hx_expr_input_kind kind;
+    int function;     /* its function (model/expr/functions.h: HX_FN_DX ...), -1 for TIME */
+    int measure;      /* a measure: frames/measure_functions.h's hx_measure */
+    int ids[4];       /* as written, 0 for those left out: the markers of a measure; the
+                       * element's id (and ARYVAL's component) of the others */
+    int nids;         /* how many were written */
+    /* after hx_expr_link: */
+    int index[4];     /* a measure: the markers' indices (-1: the world's origin and axes);
+                       * VARVAL: the variable's index; DIF, DIF1: the Control_Diff's slot;
+                       * ARYVAL: the array's index */
+    int variable;     /* the variable it reads (VARVAL, ARYVAL of a U array), else -1 */
+    int line, column; /* its first place in the text */
+} hx_expr_input;
+
+/* A fault of an evaluation (or of folding a constant at parse time): what,
+ * in which function, at which op's place. */
+typedef enum hx_expr_fault_kind {
+    HX_EXPR_FAULT_NONE,
+    HX_EXPR_FAULT_DIVISION_BY_ZERO,
+    HX_EXPR_FAULT_DOMAIN,          /* an argument outside the function's domain */
+    HX_EXPR_FAULT_NOT_FINITE,      /* a result that is not finite (overflow) */
+    HX_EXPR_FAULT_INPUT,           /* an input that is not finite, or not given */
+    HX_EXPR_FAULT_PARTIAL,         /* a partial derivative that is not finite */
+    HX_EXPR_FAULT_UNANSWERED,      /* a function the harness does not answer yet */
+    HX_EXPR_FAULT_NOT_LINKED       /* evaluated before hx_expr_link, or with another model */
+} hx_expr_fault_kind;
+
+typedef struct hx_expr_fault {
+    hx_expr_fault_kind kind;
+    const char *function; /* the operator or function: "/", "LOG", "DM" */
+    const char *what;     /* "division by zero", "its argument is negative" */
+    double argument;      /* the value at fault, when has_argument */
+    int has_argument;
+    int line, column;     /* the op's place in the text */
+    double time;          /* the evaluation's time */
+} hx_expr_fault;
+
+/* Parses text (length bytes; it need not end with a NUL) into a program.
+ * Returns NULL with "file:line:column: what" in msg on an error: an unknown
+ * function or name, a wrong argument count, unbalanced parentheses, a
+ * missing operand, an empty expression, USER(...) (the readers' to handle),
+ * an id that is not a whole number. */
+hx_expr_program *hx_expr_parse(const char *text, size_t length, const hx_expr_source *where,
+                               hx_message *msg);
+
+/* Resolves the program's ids against model m (marker, variable, Control_Diff,
+ * array, spline and curve ids to indices). Returns 0, or -1 with
+ * "file:line:column: what" naming the id that m does not define, or the
+ * function the harness does not answer yet. The program then evaluates
+ * with frames of m only. */
+int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg);
+
+void hx_expr_free(hx_expr_program *p);
+
+/* What it reads: hx_expr_input_count entries. */
+int hx_expr_input_count(const hx_expr_program *p);
+const hx_expr_input *hx_expr_inputs(const hx_expr_program *p);
+/* "DM(20,10)", "TIME", "VARVAL(3)" */
+const char *hx_expr_input_text(const hx_expr_input *in, char *text, size_t size);
+
+/* 1 with *value when the whole program is one constant, else 0. */
+int hx_expr_constant(const hx_expr_program *p, double *value);
+/* The file the text came from, as hx_expr_parse was given it. */
+const char *hx_expr_file(const hx_expr_program *p);
+/* The count of ops (after folding) and the stack depth it needs. */
+int hx_expr_op_count(const hx_expr_program *p);
+int hx_expr_depth(const hx_expr_program *p);
+
+/* "file:line:column: what at t = time" for a fault of an evaluation (the
+ * function, what, and the value at fault when there is one) into msg;
+ * returns -1. element, when not NULL, comes before what ("model.adm:12:34:
+ * SFORCE/1: LOG: its argument is not above 0 (-2.5) at t = 0.25"). */
+int hx_expr_fail(hx_message *msg, const hx_expr_program *p, const hx_expr_fault *f,
+                 const char *element);
+
+#endif

@@ -1,0 +1,120 @@
+/*
+ * A program's ids resolved against a model (expr.h): markers, variables,
+ * Control_Diffs, arrays, splines and curves by id to their indices, each id
+ * the model does not define named with its place in the text; a function
+ * the harness does not answer yet is refused here.
+ */
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "model/curve.h"
+#include "model/expr/functions.h"
+#include "model/expr/program.h"
+
+static int fail_at(hx_expr_program *p, hx_message *msg, int line, int column, const char *fmt,
+                   ...) __attribute__((format(printf, 5, 6)));
+
+static int fail_at(hx_expr_program *p, hx_message *msg, int line, int column, const char *fmt,
+                   ...)
+{
+    char what[HX_MESSAGE_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    p->model = NULL;
+    return hx_fail(msg, "%s:%d:%d: %s", p->file, line, column, what);
+}
+
+static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
+                      hx_message *msg)
+{
+    char text[96];
+    hx_expr_input_text(in, text, sizeof text);
+    const int id = in->ids[0];
+    in->variable = -1;
+    switch (in->kind) {
+    case HX_EXPR_INPUT_TIME: return 0;
+    case HX_EXPR_INPUT_MEASURE:
+        for (int k = 0; k < 4; ++k) {
+            in->index[k] = in->ids[k] == 0 ? -1 : hx_model_marker(m, in->ids[k]);
+            if (in->ids[k] != 0 && in->index[k] < 0)
+                return fail_at(p, msg, in->line, in->column, "%s: no Reference_Marker %d in the"
+                               " model", text, in->ids[k]);
+        }
+        return 0;
+    case HX_EXPR_INPUT_VARVAL:
+        if ((in->index[0] = in->variable = hx_model_variable(m, id)) >= 0)
+            return 0;
+        if (hx_model_routine(m, HX_ROUTINE_VARIABLE, id) >= 0)
+            return fail_at(p, msg, in->line, in->column, "%s: Reference_Variable %d is computed"
+                           " by a user subroutine (VARSUB), whose value expressions cannot read"
+                           " yet", text, id);
+        return fail_at(p, msg, in->line, in->column, "%s: no Reference_Variable %d in the model",
+                       text, id);
+    case HX_EXPR_INPUT_DIF:
+    case HX_EXPR_INPUT_DIF1: {
+        const int k = hx_model_routine(m, HX_ROUTINE_DIFF, id);
+        if (k < 0)
+            return fail_at(p, msg, in->line, in->column, "%s: no Control_Diff %d in the model",
+                           text, id);
+        in->index[0] = m->routines[k].slot;
+        return 0;
+    }
+    default: { /* HX_EXPR_INPUT_ARYVAL */
+        const int k = hx_model_array(m, id), component = in->ids[1];
+        if (k < 0)
+            return fail_at(p, msg, in->line, in->column, "%s: no Reference_Array %d in the"
+                           " model", text, id);
+        const hx_array *a = &m->arrays[k];
+        if (component > a->count)
+            return fail_at(p, msg, in->line, in->column, "%s: Reference_Array %d has %d"
+                           " component%s", text, id, a->count, a->count == 1 ? "" : "s");
+        if (a->type == HX_ARRAY_U) {
+            in->variable = a->variables[component - 1];
+        } else if (a->type != HX_ARRAY_IC) {
+            return fail_at(p, msg, in->line, in->column, "%s: Reference_Array %d is of type %s,"
+                           " whose values expressions cannot read yet (IC and U arrays only)",
+                           text, id, a->type == HX_ARRAY_X ? "X" : "Y");
+        }
+        in->index[0] = k;
+        return 0;
+    }
+    }
+}
+
+int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg)
+{
+    p->model = NULL;
+    for (int k = 0; k < p->nops; ++k) {
+        const hx_expr_op *op = &p->ops[k];
+        const hx_expr_place *at = &p->places[k];
+        const hx_expr_function *f = hx_expr_function_at(op->function);
+        if (op->code == HX_OP_UNANSWERED)
+            return fail_at(p, msg, at->line, at->column, "%s is not answered by the harness yet:"
+                           " %s", f->name, f->why);
+        if (op->code != HX_OP_SPLINE && op->code != HX_OP_CURVE)
+            continue;
+        hx_expr_model_call *c = &p->calls[op->a];
+        if (op->code == HX_OP_SPLINE) {
+            c->index = hx_model_spline(m, c->id);
+            if (c->index < 0)
+                return fail_at(p, msg, at->line, at->column, "%s: no Reference_Spline %d in the"
+                               " model", f->name, c->id);
+        } else {
+            c->index = hx_model_curve(m, c->id);
+            if (c->index < 0)
+                return fail_at(p, msg, at->line, at->column, "CURVE: no curve %d in the model",
+                               c->id);
+            hx_message why;
+            if (hx_curve_check(&m->curves[c->index], &why) != 0)
+                return fail_at(p, msg, at->line, at->column, "CURVE: %s", why.text);
+        }
+    }
+    for (int k = 0; k < p->ninputs; ++k)
+        if (link_input(p, &p->inputs[k], m, msg) != 0)
+            return -1;
+    p->model = m;
+    return 0;
+}
