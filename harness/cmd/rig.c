@@ -185,7 +185,7 @@ int hx_command_rig(int argc, char **argv)
         return 1;
     }
     r.s = &s;
-    char csv_path[4096], prefix[4096] = "";
+    char prefix[4096] = "", csv_path[sizeof prefix + 8]; /* room for prefix ".csv" */
     if (plot != NULL)
         hx_session_path(&s, plot, prefix, sizeof prefix);
     if (out != NULL)
