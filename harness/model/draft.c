@@ -1,4 +1,6 @@
 /* The draft model's diagnostics and growing arrays (draft.h). */
+#include <libgen.h>
+#include <limits.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -57,4 +59,44 @@ void *hx_draft_push(hx_draft *d, void **array, int *count, int *capacity, size_t
     *capacity = grown;
     *count = needed;
     return (char *)*array + size * (size_t)(needed - 1);
+}
+
+int hx_draft_open(hx_draft *d, const char *path, int from_text, FILE *warnings, hx_message *msg)
+{
+    memset(d, 0, sizeof *d);
+    d->path = path;
+    d->warnings = warnings;
+    d->msg = msg;
+    hx_model *m = d->m = calloc(1, sizeof *m);
+    if (m == NULL)
+        return hx_fail(msg, "out of memory");
+    m->ground = -1;
+    for (int k = 0; k < HX_UNIT_COUNT; ++k)
+        m->unit_scales[k] = 1.0;
+    char real[PATH_MAX];
+    m->path = strdup(!from_text && realpath(path, real) != NULL ? real : path);
+    char *copy = m->path != NULL ? strdup(m->path) : NULL;
+    m->dir = copy != NULL ? strdup(dirname(copy)) : NULL;
+    free(copy);
+    return m->path == NULL || m->dir == NULL ? hx_fail(msg, "out of memory") : 0;
+}
+
+hx_model *hx_draft_finish(hx_draft *d, int status)
+{
+    if (status == 0 && d->m != NULL)
+        status = hx_draft_resolve(d);
+    free(d->rmarkers);
+    free(d->rbodies);
+    free(d->rjoints);
+    free(d->rcouplers);
+    free(d->rforces);
+    free(d->rloads);
+    free(d->rstateeqns);
+    hx_model *m = d->m;
+    d->m = NULL;
+    if (status != 0) {
+        hx_model_free(m);
+        return NULL;
+    }
+    return m;
 }

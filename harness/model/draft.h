@@ -1,7 +1,7 @@
 /*
  * A model under construction, private to the model layer: the XML reader
  * fills it element by element (elements.c, from the descriptions of
- * xml_schema.h), then the resolve passes (resolve.c) turn the ids the
+ * xml_schema.h), and so does the dataset reader (adm/), then the resolve passes (resolve.c) turn the ids the
  * elements name into indices and frames, and the model is handed over.
  */
 #ifndef HX_MODEL_DRAFT_H
@@ -48,8 +48,15 @@ typedef struct hx_draft {
     raw_stateeqn *rstateeqns; /* parallel to m->stateeqns */
     int cap_markers, cap_bodies, cap_joints, cap_couplers, cap_forces, cap_loads, cap_strings;
     int cap_variables, cap_arrays, cap_stateeqns, cap_routines;
-    int cap_splines;
+    int cap_splines, cap_pinputs, cap_poutputs, cap_expressions;
 } hx_draft;
+
+/* Starts a draft of a new model read from path (from_text: the text is in
+ * memory, path only names it); 0, or -1 with msg (out of memory). */
+int hx_draft_open(hx_draft *d, const char *path, int from_text, FILE *warnings, hx_message *msg);
+/* Ends a draft: resolves it when status is 0, frees the raw arrays; the
+ * model, or NULL (the model freed) when status or the resolve failed. */
+hx_model *hx_draft_finish(hx_draft *d, int status);
 
 /* The first error wins: "file:line: what"; the reader then stops (draft.c). */
 void hx_draft_fail(hx_draft *d, int line, const char *fmt, ...)

@@ -185,6 +185,15 @@ void hx_model_free(hx_model *m)
         free(m->splines[k].cubic_slope);
     }
     free(m->splines);
+    for (int k = 0; k < m->npinputs; ++k)
+        free(m->pinputs[k].variable_ids);
+    for (int k = 0; k < m->npoutputs; ++k)
+        free(m->poutputs[k].variable_ids);
+    free(m->pinputs);
+    free(m->poutputs);
+    for (int k = 0; k < m->nexpressions; ++k)
+        free(m->expressions[k].text);
+    free(m->expressions);
     free(m->variables);
     free(m->arrays);
     free(m->stateeqns);
