@@ -24,6 +24,12 @@ const char *hx_adm_joint_type(const hx_adm_entry *e)
 
 int hx_adm_build_joint(hx_adm_reader *r, hx_adm_entry *e)
 {
+    int ntypes = 0;
+    for (size_t k = 0; k < sizeof joint_types / sizeof joint_types[0]; ++k)
+        ntypes += hx_adm_has(e, joint_types[k]);
+    if (ntypes != 1)
+        return hx_adm_fail(r, e, e->line, "give the joint's type, one of REVOLUTE, TRANSLATIONAL,"
+                           " CYLINDRICAL, SPHERICAL, ... (%d given)", ntypes);
     hx_adm_element el;
     hx_adm_element_init(&el, "Constraint_Joint");
     hx_adm_element_text(&el, "type", hx_adm_joint_type(e));

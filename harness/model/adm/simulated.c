@@ -67,7 +67,7 @@ static const char *why_not(hx_adm_reader *r, const hx_adm_entry *e, char *why, s
     if (is(e, "JOINT")) {
         const char *type = hx_adm_joint_type(e);
         if (type == NULL)
-            return why; /* the builder's error */
+            return why; /* the builder's error: no type */
         if (strcmp(type, "REVOLUTE") != 0 && strcmp(type, "TRANSLATIONAL") != 0)
             snprintf(why, size, "a %s joint, which the harness does not simulate yet (it"
                      " simulates REVOLUTE and TRANSLATIONAL joints whose J marker is on ground)",

@@ -213,6 +213,8 @@ static int parse_item(hx_adm_source *src, hx_adm_statement *st, size_t s, size_t
             b[e] = '\0';
             return 0;
         }
+        if (k > s && is_blank(b[k]))
+            return fail_at(src, st, k, msg, "expected ',' after the statement's id");
     }
     size_t k = s;
     if (isalpha((unsigned char)b[k]) || b[k] == '_') {
