@@ -75,9 +75,9 @@ static int axes_from_points(const double z_point[3], const double x_point[3], in
         return -1;
     }
     v3_scale(second, second, 1.0 / n2);
+    /* the axes made orthonormal as direction cosines are (orientation.h) */
     v3_cross(y, z, x);
-    const double M[9] = {x[0], y[0], z[0], x[1], y[1], z[1], x[2], y[2], z[2]};
-    memcpy(R, M, sizeof M);
+    hx_axes_from_xy(x, y, R);
     return 0;
 }
 
