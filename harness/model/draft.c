@@ -92,6 +92,7 @@ hx_model *hx_draft_finish(hx_draft *d, int status)
     free(d->rforces);
     free(d->rloads);
     free(d->rstateeqns);
+    free(d->marker_slots);
     hx_model *m = d->m;
     d->m = NULL;
     if (status != 0) {
@@ -99,4 +100,50 @@ hx_model *hx_draft_finish(hx_draft *d, int status)
         return NULL;
     }
     return m;
+}
+
+static unsigned marker_slot(int id, int slots)
+{
+    return ((unsigned)id * 2654435761u) & (unsigned)(slots - 1);
+}
+
+int hx_draft_find_marker(const hx_draft *d, int id)
+{
+    if (d->nmarker_slots == 0)
+        return -1;
+    for (unsigned s = marker_slot(id, d->nmarker_slots);; s = (s + 1) & (unsigned)(d->nmarker_slots - 1)) {
+        const int k = d->marker_slots[s];
+        if (k < 0 || d->m->markers[k].id == id)
+            return k;
+    }
+}
+
+int hx_draft_enter_marker(hx_draft *d)
+{
+    const hx_model *m = d->m;
+    if (2 * m->nmarkers > d->nmarker_slots) { /* grown and filled again: a load under half */
+        const int slots = d->nmarker_slots ? 4 * d->nmarker_slots : 64;
+        int *grown = malloc(sizeof(int) * (size_t)slots);
+        if (grown == NULL) {
+            hx_draft_fail(d, 0, "out of memory");
+            return -1;
+        }
+        free(d->marker_slots);
+        d->marker_slots = grown;
+        d->nmarker_slots = slots;
+        for (int s = 0; s < slots; ++s)
+            grown[s] = -1;
+        for (int k = 0; k < m->nmarkers - 1; ++k) {
+            unsigned s = marker_slot(m->markers[k].id, slots);
+            while (grown[s] >= 0)
+                s = (s + 1) & (unsigned)(slots - 1);
+            grown[s] = k;
+        }
+    }
+    const int k = m->nmarkers - 1;
+    unsigned s = marker_slot(m->markers[k].id, d->nmarker_slots);
+    while (d->marker_slots[s] >= 0)
+        s = (s + 1) & (unsigned)(d->nmarker_slots - 1);
+    d->marker_slots[s] = k;
+    return 0;
 }

@@ -49,6 +49,8 @@ typedef struct hx_draft {
     int cap_markers, cap_bodies, cap_joints, cap_couplers, cap_forces, cap_loads, cap_strings;
     int cap_variables, cap_arrays, cap_stateeqns, cap_routines;
     int cap_splines, cap_pinputs, cap_poutputs, cap_expressions;
+    int *marker_slots;    /* open addressing over the markers read so far, by id */
+    int nmarker_slots;
 } hx_draft;
 
 /* Starts a draft of a new model read from path (from_text: the text is in
@@ -68,6 +70,12 @@ void hx_draft_warn(hx_draft *d, int line, const char *fmt, ...)
  * array, when raw is not NULL); NULL when out of memory (the draft failed). */
 void *hx_draft_push(hx_draft *d, void **array, int *count, int *capacity, size_t size,
                     void **raw, size_t raw_size);
+
+/* The index of the marker read so far with this id, or -1; and the marker
+ * just pushed entered (a model of thousands of markers checks each new id
+ * without a pass over all); hx_draft_enter_marker is 0, or -1 (failed). */
+int hx_draft_find_marker(const hx_draft *d, int id);
+int hx_draft_enter_marker(hx_draft *d);
 
 /* The resolve passes; 0, or -1 with the draft failed. */
 int hx_draft_resolve(hx_draft *d);

@@ -33,7 +33,7 @@ static int spec_index(const hx_adm_spec *spec)
 static const hx_adm_spec *spec_named(const char *name)
 {
     for (int k = 0; k < hx_adm_statement_count; ++k)
-        if (strcmp(hx_adm_statements[k].name, name) == 0)
+        if (hx_adm_statements[k].name[0] == name[0] && strcmp(hx_adm_statements[k].name, name) == 0)
             return &hx_adm_statements[k];
     return NULL;
 }

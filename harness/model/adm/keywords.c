@@ -29,7 +29,7 @@ int hx_adm_keyword_count(const hx_adm_spec *spec)
 int hx_adm_keyword_index(const hx_adm_spec *spec, const char *name)
 {
     for (int k = 0; spec->keywords != NULL && spec->keywords[k].name != NULL; ++k)
-        if (strcmp(spec->keywords[k].name, name) == 0)
+        if (spec->keywords[k].name[0] == name[0] && strcmp(spec->keywords[k].name, name) == 0)
             return k;
     return -1;
 }
@@ -53,7 +53,10 @@ static int match(const char *text, const char *const *names, const unsigned char
 {
     const size_t len = strlen(text);
     int found = -1, count = 0, by_abbrev = -1, nby_abbrev = 0;
+    const int first = toupper((unsigned char)text[0]);
     for (int k = 0; k < n; ++k) {
+        if (toupper((unsigned char)names[k][0]) != first)
+            continue;
         if (strcasecmp(names[k], text) == 0)
             return k;
         if (len > 0 && strncasecmp(names[k], text, len) == 0) {
@@ -161,15 +164,26 @@ static int is_word(const char *text)
 }
 
 /* The values of one argument into v by the keyword's kind. */
-static int read_values(const hx_adm_keyword *kw, const hx_adm_statement *st,
-                       const hx_adm_argument *a, hx_adm_value *v, int *line, hx_message *msg)
+#define HEAD (sizeof(double) > sizeof(char *) ? sizeof(double) : sizeof(char *))
+
+/* The bytes an argument's values take in the statement's block. */
+static size_t value_bytes(const hx_adm_argument *a)
 {
-    const int n = a->count;
+    return (HEAD + 2 * sizeof(int)) * (size_t)(a->count > 0 ? a->count : 1);
+}
+
+static int read_values(const hx_adm_keyword *kw, const hx_adm_statement *st,
+                       const hx_adm_argument *a, hx_adm_value *v, char *block, int *line,
+                       hx_message *msg)
+{
+    const int n = a->count, slots = n > 0 ? n : 1;
     v->count = n;
-    v->value_lines = malloc(sizeof(int) * (size_t)n);
-    v->value_columns = malloc(sizeof(int) * (size_t)n);
-    if (v->value_lines == NULL || v->value_columns == NULL)
-        return hx_fail(msg, "out of memory");
+    /* its part of the statement's block: the numbers (or texts), then each
+     * value's line and column */
+    v->numbers = (double *)block;
+    v->texts = (char **)block;
+    v->value_lines = (int *)(block + HEAD * (size_t)slots);
+    v->value_columns = v->value_lines + slots;
     for (int i = 0; i < n; ++i) {
         v->value_lines[i] = st->values[a->first + i].line;
         v->value_columns[i] = st->values[a->first + i].column;
@@ -180,12 +194,10 @@ static int read_values(const hx_adm_keyword *kw, const hx_adm_statement *st,
         size_t total = 1;
         for (int i = 0; i < n; ++i)
             total += strlen(st->values[a->first + i].text) + 2;
-        v->texts = malloc(sizeof(char *));
+        v->numbers = NULL;
         char *joined = malloc(total);
-        if (v->texts == NULL || joined == NULL) {
-            free(joined);
+        if (joined == NULL)
             return hx_fail(msg, "out of memory");
-        }
         joined[0] = '\0';
         for (int i = 0; i < n; ++i) {
             if (i > 0)
@@ -211,9 +223,7 @@ static int read_values(const hx_adm_keyword *kw, const hx_adm_statement *st,
         return hx_fail(msg, "%s takes %d to %d values, not %d", kw->name, kw->min, kw->max, n);
     }
     if (kw->kind == HX_ADM_WORD || kw->kind == HX_ADM_ROUTINE) {
-        v->texts = malloc(sizeof(char *) * (size_t)n);
-        if (v->texts == NULL)
-            return hx_fail(msg, "out of memory");
+        v->numbers = NULL;
         for (int i = 0; i < n; ++i) {
             const hx_adm_token *t = &st->values[a->first + i];
             v->texts[i] = t->text;
@@ -225,9 +235,7 @@ static int read_values(const hx_adm_keyword *kw, const hx_adm_statement *st,
         }
         return 0;
     }
-    v->numbers = malloc(sizeof(double) * (size_t)n);
-    if (v->numbers == NULL)
-        return hx_fail(msg, "out of memory");
+    v->texts = NULL;
     for (int i = 0; i < n; ++i) {
         const hx_adm_token *t = &st->values[a->first + i];
         const int status = parse_number(t->text, kw->kind == HX_ADM_ANGLE, &v->numbers[i]);
@@ -269,6 +277,14 @@ int hx_adm_check(const hx_adm_spec *spec, const hx_adm_statement *st, hx_adm_val
         names[k] = spec->keywords[k].name;
         abbrev[k] = spec->keywords[k].abbrev;
     }
+    /* one block for every value of the statement, kept in the spare last slot */
+    size_t bytes = 0;
+    for (int i = 0; i < st->nargs; ++i)
+        bytes += value_bytes(&st->args[i]);
+    char *block = malloc(bytes > 0 ? bytes : 1);
+    if (block == NULL)
+        return hx_fail(msg, "out of memory");
+    values[nk].block = block;
     for (int i = 0; i < st->nargs; ++i) {
         const hx_adm_argument *a = &st->args[i];
         *line = a->keyword.line;
@@ -301,8 +317,9 @@ int hx_adm_check(const hx_adm_spec *spec, const hx_adm_statement *st, hx_adm_val
         }
         if (!a->has_equals)
             return hx_fail(msg, "%s needs a value (%s=...)", kw->name, kw->name);
-        if (read_values(kw, st, a, v, line, msg) != 0)
+        if (read_values(kw, st, a, v, block, line, msg) != 0)
             return -1;
+        block += value_bytes(a);
     }
     *line = st->line;
     for (int k = 0; k < nk; ++k)
@@ -318,12 +335,10 @@ void hx_adm_values_free(const hx_adm_spec *spec, hx_adm_value *values)
     const int nk = hx_adm_keyword_count(spec);
     for (int k = 0; k < nk; ++k) {
         const hx_adm_kind kind = spec->keywords[k].kind;
-        if ((kind == HX_ADM_EXPR || kind == HX_ADM_TEXT) && values[k].texts != NULL)
+        if ((kind == HX_ADM_EXPR || kind == HX_ADM_TEXT) && values[k].texts != NULL &&
+            values[k].count > 0)
             free(values[k].texts[0]);
-        free(values[k].texts);
-        free(values[k].numbers);
-        free(values[k].value_lines);
-        free(values[k].value_columns);
     }
+    free(values[nk].block);
     free(values);
 }

@@ -42,6 +42,8 @@ typedef struct hx_adm_value {
     double *numbers;       /* ID, INT, REAL, ANGLE (radians) */
     char **texts;          /* WORD, TEXT, EXPR, ROUTINE */
     int *value_lines, *value_columns; /* where each value begins */
+    void *block;           /* the slot after the last keyword's: the allocation every
+                            * value of the statement lies in */
 } hx_adm_value;
 
 /* How a statement is taken. */

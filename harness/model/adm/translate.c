@@ -27,9 +27,8 @@ void hx_adm_element_number(hx_adm_element *el, const char *attr, double x)
 {
     if (el->n == HX_ADM_MAX_ATTRS)
         return;
-    snprintf(el->storage[el->n], sizeof el->storage[0], "%.17g", x);
     el->attr[el->n] = attr;
-    el->text[el->n] = el->storage[el->n];
+    el->text[el->n] = NULL; /* formatted when the attribute is read as text */
     el->number[el->n] = x;
     el->n++;
 }
@@ -124,6 +123,13 @@ int hx_adm_element_build(hx_adm_reader *r, const hx_adm_entry *e, hx_adm_element
             break;
         }
         x.value[k].present = 1;
+        if (el->text[i] == NULL) { /* a number: the builders read numeric attributes as numbers */
+            if (x.spec[k].kind == HX_ATTR_TEXT || x.spec[k].kind == HX_ATTR_IGNORED)
+                snprintf(el->storage[i], sizeof el->storage[0], "%.17g", el->number[i]);
+            else
+                el->storage[i][0] = '\0';
+            el->text[i] = el->storage[i];
+        }
         x.value[k].text = el->text[i];
         x.value[k].number = el->number[i];
         if (x.spec[k].kind == HX_ATTR_BOOL)
