@@ -124,7 +124,9 @@ static void continuation_lines_and_comments(void **state)
                           "MARKER/21, PART = 2, REULER = 90D,\n"
                           ", 0D, 0D\n"
                           "SFORCE/1, ROTATION, I=21, J=10, FUNCTION=STEP(TIME,\n"
-                          ", 0, 0, 1, 5)   ! a comma inside parentheses marks the continuation only\n"
+                          ", 0, 0, 1, 5)   ! after a comma, the continuation's marks it only\n"
+                          "SFORCE/2, ROTATION, I=21, J=10, FUNCTION=STEP(TIME, 0, 0\n"
+                          ", 1, 6)         ! elsewhere a comma is a comma, in parentheses too\n"
                           "STRING/5, STRING=\"a!b, c\" ! quoted: no comment, no separator\n"
                           "END\n");
     const hx_body *b = &m->bodies[hx_model_body(m, 2)];
@@ -134,6 +136,8 @@ static void continuation_lines_and_comments(void **state)
     assert_close(marker(m, 21)->R0[3], 1.0, 0, 1e-16); /* x axis turned onto y */
     assert_int_equal(m->loads[0].value.kind, 1);       /* STEP */
     assert_close(m->loads[0].value.a[3], 5.0, 0, 0);
+    assert_close(m->loads[1].value.a[2], 1.0, 0, 0);
+    assert_close(m->loads[1].value.a[3], 6.0, 0, 0);
     assert_string_equal(hx_model_string(m, 5), "a!b, c");
     hx_model_free(m);
     expect_error(HEAD ", MASS=2\nEND\n", "lang.adm:2:", "continuation line", "no statement");

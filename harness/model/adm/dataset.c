@@ -256,8 +256,10 @@ static int take_statement(hx_adm_reader *r, hx_adm_statement *st)
             return -1;
         }
     }
-    if (spec->role == HX_ADM_END)
+    if (spec->role == HX_ADM_END) {
+        hx_adm_values_free(spec, values);
         return 1;
+    }
     hx_adm_entry *e = push_entry(r);
     if (e == NULL) {
         hx_adm_values_free(spec, values);

@@ -7,9 +7,10 @@
  * to the end of the line; blank lines and comment lines may stand anywhere.
  * Arguments are separated by commas outside parentheses, and by '\' (the
  * separator of F1=..\F2=.. and FX=..\FY=..). A continuation line's comma
- * separates arguments, except where the text before it cannot end an
- * argument (an open parenthesis, '=', an operator, a comma): there it only
- * marks the continuation and reads as a blank.
+ * is a comma (between arguments, or between a function's arguments inside
+ * parentheses), except where no comma can stand, after '(', '=', an
+ * operator or another comma: there it only marks the continuation and reads
+ * as a blank.
  */
 #include "model/adm/statement.h"
 
@@ -113,7 +114,7 @@ static int append(hx_adm_statement *st, const char *p, size_t n, int line, int c
             --k;
         const char last = k > 0 ? st->buffer[k - 1] : '/';
         memcpy(st->buffer + start, p, n);
-        if (p[0] == ',' && (st->depth > 0 || strchr("=+-*/^(,:\\", last) != NULL))
+        if (p[0] == ',' && strchr("=+-*/^(,:\\", last) != NULL)
             st->buffer[start] = ' ';
     } else {
         memcpy(st->buffer, p, n);
@@ -121,15 +122,6 @@ static int append(hx_adm_statement *st, const char *p, size_t n, int line, int c
     st->length += n;
     st->buffer[st->length] = '\0';
     st->segments[st->nsegments++] = (hx_adm_segment){start, line, column};
-    int quoted = 0;
-    for (size_t k = 0; k < n; ++k) {
-        if (p[k] == '"')
-            quoted = !quoted;
-        else if (!quoted && p[k] == '(')
-            st->depth++;
-        else if (!quoted && p[k] == ')' && st->depth > 0)
-            st->depth--;
-    }
     return 0;
 }
 
@@ -303,7 +295,7 @@ static int parse(hx_adm_source *src, hx_adm_statement *st, hx_message *msg)
 
 int hx_adm_statement_next(hx_adm_source *src, hx_adm_statement *st, hx_message *msg)
 {
-    st->nargs = st->nvalues = st->nsegments = st->depth = 0;
+    st->nargs = st->nvalues = st->nsegments = 0;
     st->length = 0;
     st->has_id = 0;
     st->id = 0;

@@ -46,7 +46,6 @@ typedef struct hx_adm_statement {
     size_t length, capacity;
     hx_adm_segment *segments;
     int nsegments, cap_segments;
-    int depth;              /* open parentheses at the end of the buffer */
 } hx_adm_statement;
 
 /* A dataset's or a command file's text, line by line. */
