@@ -78,6 +78,11 @@ static const struct {
     {"MOTION/3, JOINT=1, FUNCTION=USER(1)", {"errors.adm:7:", "MOTION/3:", "JOINT=1 (column 17) names no JOINT", ""}},
     {"PART/3, MASS=1, CM=30, IP=1,1,1, VM=0\nMARKER/30, PART=3",
      {"errors.adm:7:", "PART/3:", "VM 0", "not an id (a positive integer)"}},
+    {"GFORCE/3, I=21, JFLOAT=10, FUNCTION=3.5",
+     {"errors.adm:7:", "GFORCE/3:", "FUNCTION=3.5: a GFORCE's FUNCTION is USER(...)", ""}},
+    {"COUPLER/3, JOINTS=1, 2, FUNCTION=2*TIME\nJOINT/1, REVOLUTE, I=20, J=10\n"
+     "PART/3, MASS=1, CM=30, IP=1,1,1\nMARKER/30, PART=3\nJOINT/2, REVOLUTE, I=30, J=10",
+     {"errors.adm:7:", "COUPLER/3:", "FUNCTION=2*TIME: expected USER(...)", ""}},
     {"VARIABLE/3, FUNCTION=USER(1), ROUTINE=lib::A\\", {"errors.adm:", "", "", ""}},
 };
 

@@ -197,6 +197,33 @@ static void value_lists_and_counts(void **state)
     expect_error(HEAD GROUND "MARKER 11, PART=1\nEND\n", "lang.adm:4:", "expected '/'");
 }
 
+static void format_by_content(void **state)
+{
+    (void)state;
+    /* a dataset named .xml is a dataset; XML named .adm is XML, with a byte-order mark
+     * and blanks before it; each malformed one gets its own reader's message */
+    hx_message msg;
+    hx_model *m = hx_model_read(test_write_file("dataset.xml", HEAD GROUND "END\n"), NULL, &msg);
+    assert_non_null(m);
+    hx_model_free(m);
+    m = hx_model_read(test_write_file("model.adm", "\xEF\xBB\xBF \n <MotionSolve><Model>"
+                                      "<Body_Ground id=\"1\"/></Model></MotionSolve>\n"),
+                      NULL, &msg);
+    assert_non_null(m);
+    assert_int_equal(m->nbodies, 1);
+    hx_model_free(m);
+    assert_null(hx_model_read(test_write_file("broken.adm", "<MotionSolve><Model>\n"), NULL, &msg));
+    assert_contains(msg.text, "broken.adm:", "malformed XML");
+    assert_null(hx_model_read(test_write_file("broken.xml", HEAD "PART/1, GROUND,, (\n"), NULL,
+                              &msg));
+    assert_contains(msg.text, "broken.xml:2:", "PART/1:", "GROUND is a flag");
+    assert_null(strstr(msg.text, "XML"));
+    static const char bad[] = "title\nPART/1 GROUND\nEND\n";
+    assert_null(hx_model_parse(bad, sizeof bad - 1, "p.adm", NULL, &msg));
+    assert_contains(msg.text, "p.adm:2:", "expected ',' after the statement's id");
+    assert_null(strstr(msg.text, "malformed XML"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -207,6 +234,7 @@ int main(void)
         cmocka_unit_test(title_blank_lines_tabs_and_end),
         cmocka_unit_test(crlf_line_ends),
         cmocka_unit_test(value_lists_and_counts),
+        cmocka_unit_test(format_by_content),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -81,6 +81,9 @@ int hx_adm_build_coupler(hx_adm_reader *r, hx_adm_entry *e)
                                      k ? ", " : "", scales->numbers[k]);
         hx_adm_element_text(&el, "coefficients", coefficients);
     } else {
+        if (!hx_adm_is_user(hx_adm_text(e, "FUNCTION")))
+            return hx_adm_fail(r, e, hx_adm_get(e, "FUNCTION")->line, "FUNCTION=%s: expected"
+                               " USER(...) (COUSUB)", hx_adm_text(e, "FUNCTION"));
         static const char *const der[] = {"usrsub_der1_name", "usrsub_der2_name", NULL};
         if (hx_adm_element_user(r, e, &el, der) != 0)
             return -1;

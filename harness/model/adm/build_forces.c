@@ -28,6 +28,10 @@ int hx_adm_build_gforce(hx_adm_reader *r, hx_adm_entry *e)
     const char *function = hx_adm_text(e, "FUNCTION");
     hx_adm_element el;
     if (function != NULL) {
+        if (!hx_adm_is_user(function))
+            return hx_adm_fail(r, e, hx_adm_get(e, "FUNCTION")->line, "FUNCTION=%s: a %s's"
+                               " FUNCTION is USER(...); its components are FX=..\\FY=..",
+                               function, name);
         if (ncomponents > 0)
             return hx_adm_fail(r, e, e->line, "FUNCTION=USER(...) and components (FX=..\\FY=..):"
                                " give one of them");
@@ -94,6 +98,10 @@ int hx_adm_build_field(hx_adm_reader *r, hx_adm_entry *e)
 
 int hx_adm_build_force_stateeqn(hx_adm_reader *r, hx_adm_entry *e)
 {
+    const char *function = hx_adm_text(e, "FUNCTION");
+    if (!hx_adm_is_user(function))
+        return hx_adm_fail(r, e, hx_adm_get(e, "FUNCTION")->line, "FUNCTION=%s: expected"
+                           " USER(...) (YFOSUB)", function);
     hx_adm_element el;
     hx_adm_element_init(&el, "Force_StateEqn");
     hx_adm_element_text(&el, "type", "USERSUB");
