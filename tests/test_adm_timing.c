@@ -1,12 +1,14 @@
 /*
  * How long the dataset reader takes on a dataset of 10 000 statements
  * (2000 parts, each with three markers, one on a continuation chain, and a
- * user GFORCE to ground): printed, never asserted (docs/performance.md,
- * "Reading a dataset"). It checks only that the model was read whole.
+ * user GFORCE to ground): printed, wall and CPU time, never asserted
+ * (docs/performance.md, "Reading a dataset"). It checks only that the model
+ * was read whole.
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "base/clock.h"
 #include "model/model.h"
@@ -41,18 +43,27 @@ static char *generate(size_t *length, int *statements)
     return text;
 }
 
+/* This thread's CPU time: on a machine shared with other jobs the wall time
+ * also counts the time others held the cores. */
+static double cpu_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
 static void ten_thousand_statements(void **state)
 {
     (void)state;
     size_t length;
     int statements;
     char *text = generate(&length, &statements);
-    double best = 1e30;
+    double best = 1e30, best_cpu = 1e30;
     for (int round = 0; round < 20; ++round) {
         hx_message msg;
-        const double t0 = hx_seconds();
+        const double t0 = hx_seconds(), c0 = cpu_seconds();
         hx_model *m = hx_model_parse(text, length, "timing.adm", NULL, &msg);
-        const double t = hx_seconds() - t0;
+        const double t = hx_seconds() - t0, c = cpu_seconds() - c0;
         if (m == NULL)
             fail_msg("%s", msg.text);
         assert_int_equal(m->nbodies, PARTS + 1);
@@ -60,9 +71,10 @@ static void ten_thousand_statements(void **state)
         assert_int_equal(m->nmarkers, 3 * PARTS + 1);
         hx_model_free(m);
         best = t < best ? t : best;
+        best_cpu = c < best_cpu ? c : best_cpu;
     }
-    printf("read a dataset of %d statements (%zu bytes) in %.1f ms (best of 20)\n", statements,
-           length, 1e3 * best);
+    printf("read a dataset of %d statements (%zu bytes) in %.1f ms, %.1f ms of CPU (best of 20)\n",
+           statements, length, 1e3 * best, 1e3 * best_cpu);
     free(text);
 }
 

@@ -233,7 +233,7 @@ static void every_twin_runs_as_its_xml(void **state)
     char names[64][64];
     const int n = list_examples(names, 64);
     for (int k = 0; k < n; ++k) {
-        char model[2][512], csv[2][512];
+        char model[2][4224], csv[2][4224]; /* the temporary folder and a name */
         const char *const ext[2] = {"xml", "adm"};
         char *text[2];
         size_t size[2];

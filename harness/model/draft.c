@@ -2,6 +2,7 @@
 #include <libgen.h>
 #include <limits.h>
 #include <stdarg.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -93,6 +94,7 @@ hx_model *hx_draft_finish(hx_draft *d, int status)
     free(d->rloads);
     free(d->rstateeqns);
     free(d->marker_slots);
+    free(d->body_slots);
     hx_model *m = d->m;
     d->m = NULL;
     if (status != 0) {
@@ -102,48 +104,85 @@ hx_model *hx_draft_finish(hx_draft *d, int status)
     return m;
 }
 
-static unsigned marker_slot(int id, int slots)
+static unsigned id_slot(int id, int slots)
 {
     return ((unsigned)id * 2654435761u) & (unsigned)(slots - 1);
 }
 
-int hx_draft_find_marker(const hx_draft *d, int id)
+/* The index among count items (ids at id_of(k)) with this id, or -1. */
+static int find_id(const int *slots, int nslots, int id, const void *items, size_t size,
+                   size_t id_offset)
 {
-    if (d->nmarker_slots == 0)
+    if (nslots == 0)
         return -1;
-    for (unsigned s = marker_slot(id, d->nmarker_slots);; s = (s + 1) & (unsigned)(d->nmarker_slots - 1)) {
-        const int k = d->marker_slots[s];
-        if (k < 0 || d->m->markers[k].id == id)
+    for (unsigned s = id_slot(id, nslots);; s = (s + 1) & (unsigned)(nslots - 1)) {
+        const int k = slots[s];
+        if (k < 0)
+            return -1;
+        int other;
+        memcpy(&other, (const char *)items + size * (size_t)k + id_offset, sizeof other);
+        if (other == id)
             return k;
     }
 }
 
-int hx_draft_enter_marker(hx_draft *d)
+/* Enters the last of count items; the table regrown (load under half). */
+static int enter_id(hx_draft *d, int **slots, int *nslots, const void *items, int count,
+                    size_t size, size_t id_offset)
 {
-    const hx_model *m = d->m;
-    if (2 * m->nmarkers > d->nmarker_slots) { /* grown and filled again: a load under half */
-        const int slots = d->nmarker_slots ? 4 * d->nmarker_slots : 64;
-        int *grown = malloc(sizeof(int) * (size_t)slots);
+    if (2 * count > *nslots) {
+        const int n = *nslots ? 4 * *nslots : 64;
+        int *grown = malloc(sizeof(int) * (size_t)n);
         if (grown == NULL) {
             hx_draft_fail(d, 0, "out of memory");
             return -1;
         }
-        free(d->marker_slots);
-        d->marker_slots = grown;
-        d->nmarker_slots = slots;
-        for (int s = 0; s < slots; ++s)
+        free(*slots);
+        *slots = grown;
+        *nslots = n;
+        for (int s = 0; s < n; ++s)
             grown[s] = -1;
-        for (int k = 0; k < m->nmarkers - 1; ++k) {
-            unsigned s = marker_slot(m->markers[k].id, slots);
+        count--; /* the earlier items again, then the last below */
+        for (int k = 0; k <= count; ++k) {
+            int id;
+            memcpy(&id, (const char *)items + size * (size_t)k + id_offset, sizeof id);
+            unsigned s = id_slot(id, n);
             while (grown[s] >= 0)
-                s = (s + 1) & (unsigned)(slots - 1);
+                s = (s + 1) & (unsigned)(n - 1);
             grown[s] = k;
         }
+        return 0;
     }
-    const int k = m->nmarkers - 1;
-    unsigned s = marker_slot(m->markers[k].id, d->nmarker_slots);
-    while (d->marker_slots[s] >= 0)
-        s = (s + 1) & (unsigned)(d->nmarker_slots - 1);
-    d->marker_slots[s] = k;
+    const int k = count - 1;
+    int id;
+    memcpy(&id, (const char *)items + size * (size_t)k + id_offset, sizeof id);
+    unsigned s = id_slot(id, *nslots);
+    while ((*slots)[s] >= 0)
+        s = (s + 1) & (unsigned)(*nslots - 1);
+    (*slots)[s] = k;
     return 0;
+}
+
+int hx_draft_find_marker(const hx_draft *d, int id)
+{
+    return find_id(d->marker_slots, d->nmarker_slots, id, d->m->markers, sizeof(hx_marker),
+                   offsetof(hx_marker, id));
+}
+
+int hx_draft_enter_marker(hx_draft *d)
+{
+    return enter_id(d, &d->marker_slots, &d->nmarker_slots, d->m->markers, d->m->nmarkers,
+                    sizeof(hx_marker), offsetof(hx_marker, id));
+}
+
+int hx_draft_find_body(const hx_draft *d, int id)
+{
+    return find_id(d->body_slots, d->nbody_slots, id, d->m->bodies, sizeof(hx_body),
+                   offsetof(hx_body, id));
+}
+
+int hx_draft_enter_body(hx_draft *d)
+{
+    return enter_id(d, &d->body_slots, &d->nbody_slots, d->m->bodies, d->m->nbodies,
+                    sizeof(hx_body), offsetof(hx_body, id));
 }

@@ -51,6 +51,8 @@ typedef struct hx_draft {
     int cap_splines, cap_pinputs, cap_poutputs, cap_expressions;
     int *marker_slots;    /* open addressing over the markers read so far, by id */
     int nmarker_slots;
+    int *body_slots;      /* the same over the bodies */
+    int nbody_slots;
 } hx_draft;
 
 /* Starts a draft of a new model read from path (from_text: the text is in
@@ -72,10 +74,14 @@ void *hx_draft_push(hx_draft *d, void **array, int *count, int *capacity, size_t
                     void **raw, size_t raw_size);
 
 /* The index of the marker read so far with this id, or -1; and the marker
- * just pushed entered (a model of thousands of markers checks each new id
- * without a pass over all); hx_draft_enter_marker is 0, or -1 (failed). */
+ * just pushed entered (a model of thousands of markers checks each new id,
+ * and finds each marker's body, without a pass over all);
+ * hx_draft_enter_marker is 0, or -1 (failed). */
 int hx_draft_find_marker(const hx_draft *d, int id);
 int hx_draft_enter_marker(hx_draft *d);
+/* The same for bodies. */
+int hx_draft_find_body(const hx_draft *d, int id);
+int hx_draft_enter_body(hx_draft *d);
 
 /* The resolve passes; 0, or -1 with the draft failed. */
 int hx_draft_resolve(hx_draft *d);

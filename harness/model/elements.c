@@ -129,7 +129,7 @@ static void build_string(hx_draft *d, const hx_element_read *e)
 static hx_body *push_body(hx_draft *d, const hx_element_read *e)
 {
     hx_model *m = d->m;
-    if (hx_model_body(m, e->id) >= 0) {
+    if (hx_draft_find_body(d, e->id) >= 0) {
         hx_draft_fail(d, e->line, "%s %d: a body with this id is already defined", e->name, e->id);
         return NULL;
     }
@@ -138,6 +138,8 @@ static hx_body *push_body(hx_draft *d, const hx_element_read *e)
     if (b == NULL)
         return NULL;
     b->id = e->id;
+    if (hx_draft_enter_body(d) != 0)
+        return NULL;
     b->joint = -1;
     b->cg_marker = -1;
     b->line = e->line;
