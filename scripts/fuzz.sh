@@ -16,7 +16,7 @@ if [ "${1:-}" = "--fixed" ]; then fixed=1; else seconds=${1:-20}; fi
 CC=clang "$root/scripts/build.sh" build-fuzz -DUSRSUB_FUZZ=ON -DUSRSUB_TESTS=OFF
 mkdir -p "$root/build-fuzz/artifacts"
 # inputs per target in --fixed mode (about 20 s each on the reference machine)
-declare -A fixed_runs=([teimorbit]=50000 [user_lists]=1500000 [model_xml]=500000 [model_adm]=70000)
+declare -A fixed_runs=([teimorbit]=50000 [user_lists]=1500000 [model_xml]=500000 [model_adm]=150000)
 for target in teimorbit user_lists model_xml model_adm; do
   if [ "$fixed" -eq 1 ]; then
     work=$(mktemp -d)
