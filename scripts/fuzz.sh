@@ -16,8 +16,8 @@ if [ "${1:-}" = "--fixed" ]; then fixed=1; else seconds=${1:-20}; fi
 CC=clang "$root/scripts/build.sh" build-fuzz -DUSRSUB_FUZZ=ON -DUSRSUB_TESTS=OFF
 mkdir -p "$root/build-fuzz/artifacts"
 # inputs per target in --fixed mode (about 20 s each on the reference machine)
-declare -A fixed_runs=([teimorbit]=50000 [user_lists]=1500000 [model_xml]=500000 [expr]=500000)
-for target in teimorbit user_lists model_xml expr; do
+declare -A fixed_runs=([teimorbit]=50000 [user_lists]=1500000 [model_xml]=500000 [expr]=500000 [model_adm]=150000)
+for target in teimorbit user_lists model_xml expr model_adm; do
   if [ "$fixed" -eq 1 ]; then
     work=$(mktemp -d)
     limits=(-seed=1 -runs="${fixed_runs[$target]}" -max_total_time=300)

@@ -1,7 +1,7 @@
 /*
  * A model under construction, private to the model layer: the XML reader
  * fills it element by element (elements.c, from the descriptions of
- * xml_schema.h), then the resolve passes (resolve.c) turn the ids the
+ * xml_schema.h), and so does the dataset reader (adm/), then the resolve passes (resolve.c) turn the ids the
  * elements name into indices and frames, and the model is handed over.
  */
 #ifndef HX_MODEL_DRAFT_H
@@ -48,8 +48,19 @@ typedef struct hx_draft {
     raw_stateeqn *rstateeqns; /* parallel to m->stateeqns */
     int cap_markers, cap_bodies, cap_joints, cap_couplers, cap_forces, cap_loads, cap_strings;
     int cap_variables, cap_arrays, cap_stateeqns, cap_routines;
-    int cap_splines;
+    int cap_splines, cap_pinputs, cap_poutputs, cap_expressions;
+    int *marker_slots;    /* open addressing over the markers read so far, by id */
+    int nmarker_slots;
+    int *body_slots;      /* the same over the bodies */
+    int nbody_slots;
 } hx_draft;
+
+/* Starts a draft of a new model read from path (from_text: the text is in
+ * memory, path only names it); 0, or -1 with msg (out of memory). */
+int hx_draft_open(hx_draft *d, const char *path, int from_text, FILE *warnings, hx_message *msg);
+/* Ends a draft: resolves it when status is 0, frees the raw arrays; the
+ * model, or NULL (the model freed) when status or the resolve failed. */
+hx_model *hx_draft_finish(hx_draft *d, int status);
 
 /* The first error wins: "file:line: what"; the reader then stops (draft.c). */
 void hx_draft_fail(hx_draft *d, int line, const char *fmt, ...)
@@ -61,6 +72,16 @@ void hx_draft_warn(hx_draft *d, int line, const char *fmt, ...)
  * array, when raw is not NULL); NULL when out of memory (the draft failed). */
 void *hx_draft_push(hx_draft *d, void **array, int *count, int *capacity, size_t size,
                     void **raw, size_t raw_size);
+
+/* The index of the marker read so far with this id, or -1; and the marker
+ * just pushed entered (a model of thousands of markers checks each new id,
+ * and finds each marker's body, without a pass over all);
+ * hx_draft_enter_marker is 0, or -1 (failed). */
+int hx_draft_find_marker(const hx_draft *d, int id);
+int hx_draft_enter_marker(hx_draft *d);
+/* The same for bodies. */
+int hx_draft_find_body(const hx_draft *d, int id);
+int hx_draft_enter_body(hx_draft *d);
 
 /* The resolve passes; 0, or -1 with the draft failed. */
 int hx_draft_resolve(hx_draft *d);

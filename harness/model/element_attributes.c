@@ -1,12 +1,16 @@
 /* An element's attributes as read, by name (xml_schema.h). */
+#include <ctype.h>
 #include <strings.h>
 
 #include "model/xml_schema.h"
 
 int hx_attr_find(const hx_element_read *e, const char *name)
 {
-    for (int k = 0; k < e->nspec; ++k)
-        if (strcasecmp(e->spec[k].name, name) == 0)
+    const int first = tolower((unsigned char)name[0]);
+    for (int k = 0; k < e->nspec; ++k) /* the first letters compared first: builders look
+                                         * attributes up by name many times an element */
+        if (tolower((unsigned char)e->spec[k].name[0]) == first &&
+            strcasecmp(e->spec[k].name, name) == 0)
             return k;
     return -1;
 }

@@ -129,7 +129,7 @@ static void build_string(hx_draft *d, const hx_element_read *e)
 static hx_body *push_body(hx_draft *d, const hx_element_read *e)
 {
     hx_model *m = d->m;
-    if (hx_model_body(m, e->id) >= 0) {
+    if (hx_draft_find_body(d, e->id) >= 0) {
         hx_draft_fail(d, e->line, "%s %d: a body with this id is already defined", e->name, e->id);
         return NULL;
     }
@@ -138,6 +138,8 @@ static hx_body *push_body(hx_draft *d, const hx_element_read *e)
     if (b == NULL)
         return NULL;
     b->id = e->id;
+    if (hx_draft_enter_body(d) != 0)
+        return NULL;
     b->joint = -1;
     b->cg_marker = -1;
     b->line = e->line;
@@ -227,12 +229,12 @@ static const hx_attr_spec marker_attrs[] = {
 static void build_marker(hx_draft *d, const hx_element_read *e)
 {
     hx_model *m = d->m;
-    for (int k = 0; k < m->nmarkers; ++k)
-        if (m->markers[k].id == e->id) {
-            hx_draft_fail(d, e->line, "Reference_Marker %d is defined twice (line %d)", e->id,
-                          m->markers[k].line);
-            return;
-        }
+    const int earlier = hx_draft_find_marker(d, e->id);
+    if (earlier >= 0) {
+        hx_draft_fail(d, e->line, "Reference_Marker %d is defined twice (line %d)", e->id,
+                      m->markers[earlier].line);
+        return;
+    }
     const char *body_type = hx_attr_text(e, "body_type");
     if (body_type != NULL && strcasecmp(body_type, "RIGIDBODY") != 0) {
         hx_draft_fail(d, e->line, "Reference_Marker %d: body_type %s is not supported (RIGIDBODY"
@@ -252,6 +254,8 @@ static void build_marker(hx_draft *d, const hx_element_read *e)
     raw_marker *rm = &d->rmarkers[m->nmarkers - 1];
     mk->id = e->id;
     mk->line = e->line;
+    if (hx_draft_enter_marker(d) != 0)
+        return;
     rm->body_id = hx_attr_int(e, "body_id", 0);
     rm->rm_id = hx_attr_int(e, "rm_id", 0);
     rm->pos[0] = hx_attr_number(e, "pos_x", 0.0);

@@ -196,6 +196,15 @@ void hx_model_free(hx_model *m)
     for (int k = 0; k < m->ncurves; ++k)
         free(m->curves[k].points);
     free(m->curves);
+    for (int k = 0; k < m->npinputs; ++k)
+        free(m->pinputs[k].variable_ids);
+    for (int k = 0; k < m->npoutputs; ++k)
+        free(m->poutputs[k].variable_ids);
+    free(m->pinputs);
+    free(m->poutputs);
+    for (int k = 0; k < m->nexpressions; ++k)
+        free(m->expressions[k].text);
+    free(m->expressions);
     free(m->variables);
     free(m->arrays);
     free(m->stateeqns);

@@ -222,6 +222,25 @@ typedef struct hx_curve {
     double *points; /* 3 npoints: x y z of each control point */
     int line;
 } hx_curve;
+/* A controls plant's inputs or outputs (an Adams dataset's PINPUT or
+ * POUTPUT, docs/interface.md §9): the VARIABLE ids, in order. */
+typedef struct hx_plant_port {
+    int id;
+    int nvariables;
+    int *variable_ids;
+    int line;
+} hx_plant_port;
+
+/* An expression a dataset gives (FUNCTION=, FX=, ...) that the harness does
+ * not evaluate yet, kept as written for the expression engine: the
+ * statement, its id, the keyword, the text and where it begins. */
+typedef struct hx_model_expression {
+    char statement[16];
+    int id;
+    char keyword[16];
+    char *text;
+    int line, column;
+} hx_model_expression;
 
 typedef struct hx_model {
     char *path;
@@ -264,9 +283,16 @@ typedef struct hx_model {
     int nsplines;
     hx_curve *curves;
     int ncurves;
+    /* read from an Adams dataset only (docs/interface.md §9) */
+    double suggested_error;  /* its INTEGRATOR's ERROR, the tolerance it suggests; 0: none */
+    hx_plant_port *pinputs, *poutputs;
+    int npinputs, npoutputs;
+    hx_model_expression *expressions; /* those of its unsimulated elements */
+    int nexpressions;
 } hx_model;
 
-/* Reads a model; warnings go to `warnings` (may be NULL). Returns NULL with
+/* Reads a model, MotionSolve XML or an Adams dataset, chosen by the text
+ * (model_read.c); warnings go to `warnings` (may be NULL). Returns NULL with
  * "file:line: what" in msg on an error. */
 hx_model *hx_model_read(const char *path, FILE *warnings, hx_message *msg);
 /* The same from text in memory; name stands for the file in messages, and the

@@ -44,16 +44,23 @@ static int from_cosines(const hx_element_read *e, double R[9], hx_message *why)
             if (fabs(RtR[3 * i + j] - (i == j)) > 1e-6)
                 return hx_fail(why, "the direction cosines a00..a22 are not orthonormal (column"
                                " %d . column %d = %g)", i, j, RtR[3 * i + j]);
-    double x[3] = {R[0], R[3], R[6]}, y[3] = {R[1], R[4], R[7]}, z[3];
-    v3_scale(x, x, 1.0 / v3_norm(x));
-    v3_cross(z, x, y);
+    const double x[3] = {R[0], R[3], R[6]}, y[3] = {R[1], R[4], R[7]};
+    const double given_z[3] = {R[2], R[5], R[8]};
+    hx_axes_from_xy(x, y, R);
+    if (v3_dot((double[3]){R[2], R[5], R[8]}, given_z) < 0.0)
+        return hx_fail(why, "the direction cosines form a left-handed frame");
+    return 0;
+}
+
+void hx_axes_from_xy(const double x_in[3], const double y_in[3], double R[9])
+{
+    double x[3], y[3], z[3];
+    v3_scale(x, x_in, 1.0 / v3_norm(x_in));
+    v3_cross(z, x, y_in);
     v3_scale(z, z, 1.0 / v3_norm(z));
     v3_cross(y, z, x);
-    if (v3_dot(z, (double[3]){R[2], R[5], R[8]}) < 0.0)
-        return hx_fail(why, "the direction cosines form a left-handed frame");
     const double Rn[9] = {x[0], y[0], z[0], x[1], y[1], z[1], x[2], y[2], z[2]};
     memcpy(R, Rn, sizeof Rn);
-    return 0;
 }
 
 static int from_parameters(const hx_element_read *e, double R[9], hx_message *why)

@@ -17,6 +17,12 @@
  * -1 with why (mixed forms, a form refused, numbers that are not a rotation). */
 int hx_marker_orientation(const hx_element_read *e, double R[9], hx_message *why);
 
+/* The axes of an x direction and a direction in the x-y plane on its
+ * positive y side: x made unit, z = x cross y made unit, y = z cross x, as
+ * the direction cosines are made orthonormal (the dataset's ZP/XP markers
+ * end the same way, so that the same axes give the same bits). */
+void hx_axes_from_xy(const double x[3], const double y[3], double R[9]);
+
 /* R = Rz(psi) Rx(theta) Rz(phi). */
 void hx_rotation_313(double psi, double theta, double phi, double R[9]);
 

@@ -23,7 +23,7 @@ static int resolve_marker(hx_draft *r, int k)
         return -1;
     }
     rm->state = 1;
-    mk->body = hx_model_body(m, rm->body_id);
+    mk->body = hx_draft_find_body(r, rm->body_id);
     if (mk->body < 0) {
         hx_draft_fail(r, mk->line, "Reference_Marker %d: body_id %d is not a Body_Rigid or Body_Ground",
              mk->id, rm->body_id);

@@ -9,7 +9,6 @@
  */
 #include <errno.h>
 #include <expat.h>
-#include <libgen.h>
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
@@ -17,6 +16,7 @@
 #include <strings.h>
 #include <sys/stat.h>
 
+#include "model/readers.h"
 #include "model/xml_schema.h"
 
 typedef struct xml_reader {
@@ -273,49 +273,17 @@ static int parse_source(xml_reader *r, const char *text, size_t length)
 static hx_model *read_model(const char *path, const char *text, size_t length, FILE *warnings,
                             hx_message *msg)
 {
-    hx_model *m = calloc(1, sizeof *m);
-    if (m == NULL) {
-        hx_fail(msg, "out of memory");
-        return NULL;
-    }
-    m->ground = -1;
-    for (int k = 0; k < HX_UNIT_COUNT; ++k)
-        m->unit_scales[k] = 1.0;
-    char real[PATH_MAX];
-    m->path = strdup(text == NULL && realpath(path, real) != NULL ? real : path);
-    char *copy = m->path != NULL ? strdup(m->path) : NULL;
-    m->dir = copy != NULL ? strdup(dirname(copy)) : NULL;
-    free(copy);
     xml_reader r;
     memset(&r, 0, sizeof r);
-    r.d = (hx_draft){.m = m, .path = path, .warnings = warnings, .msg = msg};
-    int status = (m->path == NULL || m->dir == NULL) ? hx_fail(msg, "out of memory") : 0;
+    int status = hx_draft_open(&r.d, path, text != NULL, warnings, msg);
     if (status == 0)
         status = parse_source(&r, text, length);
-    if (status == 0)
-        status = hx_draft_resolve(&r.d);
-    free(r.d.rmarkers);
-    free(r.d.rbodies);
-    free(r.d.rjoints);
-    free(r.d.rcouplers);
-    free(r.d.rforces);
-    free(r.d.rloads);
-    free(r.d.rstateeqns);
     free(r.text);
-    if (status != 0) {
-        hx_model_free(m);
-        return NULL;
-    }
-    return m;
+    return hx_draft_finish(&r.d, status);
 }
 
-hx_model *hx_model_read(const char *path, FILE *warnings, hx_message *msg)
+hx_model *hx_xml_read(const char *path, const char *text, size_t length, FILE *warnings,
+                      hx_message *msg)
 {
-    return read_model(path, NULL, 0, warnings, msg);
-}
-
-hx_model *hx_model_parse(const char *text, size_t length, const char *name, FILE *warnings,
-                         hx_message *msg)
-{
-    return read_model(name, text != NULL ? text : "", text != NULL ? length : 0, warnings, msg);
+    return read_model(path, text, length, warnings, msg);
 }

@@ -1,0 +1,118 @@
+/*
+ * JOINT, COUPLER and MOTION (docs/interface.md §9.4) into Constraint_Joint,
+ * Constraint_Coupler and Motion_Joint. Which joints the harness simulates
+ * is decided before (simulated.c): here every entry built is one it holds.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "model/adm/translate.h"
+
+/* The joint types of the JOINT table, in its order. */
+static const char *const joint_types[] = {"REVOLUTE", "TRANSLATIONAL", "CYLINDRICAL", "SPHERICAL",
+                                          "UNIVERSAL", "HOOKE", "CONVEL", "FIXED", "PLANAR",
+                                          "RACKPIN", "SCREW", "PARALLEL_AXES", "PERPENDICULAR",
+                                          "INLINE", "INPLANE", "ORIENTATION"};
+
+const char *hx_adm_joint_type(const hx_adm_entry *e)
+{
+    for (size_t k = 0; k < sizeof joint_types / sizeof joint_types[0]; ++k)
+        if (hx_adm_has(e, joint_types[k]))
+            return joint_types[k];
+    return NULL;
+}
+
+int hx_adm_build_joint(hx_adm_reader *r, hx_adm_entry *e)
+{
+    int ntypes = 0;
+    for (size_t k = 0; k < sizeof joint_types / sizeof joint_types[0]; ++k)
+        ntypes += hx_adm_has(e, joint_types[k]);
+    if (ntypes != 1)
+        return hx_adm_fail(r, e, e->line, "give the joint's type, one of REVOLUTE, TRANSLATIONAL,"
+                           " CYLINDRICAL, SPHERICAL, ... (%d given)", ntypes);
+    hx_adm_element el;
+    hx_adm_element_init(&el, "Constraint_Joint");
+    hx_adm_element_text(&el, "type", hx_adm_joint_type(e));
+    hx_adm_element_number(&el, "i_marker_id", hx_adm_ref(e, "I"));
+    hx_adm_element_number(&el, "j_marker_id", hx_adm_ref(e, "J"));
+    return hx_adm_element_build(r, e, &el, NULL);
+}
+
+int hx_adm_build_coupler(hx_adm_reader *r, hx_adm_entry *e)
+{
+    const hx_adm_value *joints = hx_adm_get(e, "JOINTS");
+    hx_adm_element el;
+    hx_adm_element_init(&el, "Constraint_Coupler");
+    static const char *const joint_attrs[] = {"joint1_id", "joint2_id", "joint3_id"};
+    static const char *const freedom_attrs[] = {"freedom_1", "freedom_2", "freedom_3"};
+    for (int k = 0; k < joints->count; ++k)
+        hx_adm_element_number(&el, joint_attrs[k], joints->numbers[k]);
+    /* TYPE=T:R[:R]: each joint's freedom */
+    const char *type = hx_adm_text(e, "TYPE");
+    static const char *const letters[] = {"T", "R"};
+    if (type != NULL) {
+        int k = 0;
+        for (const char *p = type; *p != '\0'; ++k) {
+            const size_t n = strcspn(p, ":");
+            const int t = n == 1 && (*p == 'T' || *p == 't') ? 0
+                          : n == 1 && (*p == 'R' || *p == 'r') ? 1 : -1;
+            if (t < 0 || k >= joints->count)
+                return hx_adm_fail(r, e, hx_adm_get(e, "TYPE")->line, "TYPE=%s: expected T or R"
+                                   " for each of its %d joints (TYPE=T:R)", type, joints->count);
+            hx_adm_element_text(&el, freedom_attrs[k], letters[t]);
+            p += n + (p[n] == ':');
+        }
+        if (k != joints->count)
+            return hx_adm_fail(r, e, hx_adm_get(e, "TYPE")->line, "TYPE=%s names %d freedoms for"
+                               " %d joints", type, k, joints->count);
+    }
+    const hx_adm_value *scales = hx_adm_get(e, "SCALES");
+    const int user = hx_adm_has(e, "FUNCTION");
+    if (user == scales->present)
+        return hx_adm_fail(r, e, e->line, "give SCALES or FUNCTION=USER(...) (one of them)");
+    char coefficients[160] = "";
+    if (scales->present) {
+        if (scales->count != joints->count)
+            return hx_adm_fail(r, e, scales->line, "SCALES gives %d numbers for %d joints",
+                               scales->count, joints->count);
+        size_t used = 0;
+        for (int k = 0; k < scales->count; ++k)
+            used += (size_t)snprintf(coefficients + used, sizeof coefficients - used, "%s%.17g",
+                                     k ? ", " : "", scales->numbers[k]);
+        hx_adm_element_text(&el, "coefficients", coefficients);
+    } else {
+        if (!hx_adm_is_user(hx_adm_text(e, "FUNCTION")))
+            return hx_adm_fail(r, e, hx_adm_get(e, "FUNCTION")->line, "FUNCTION=%s: expected"
+                               " USER(...) (COUSUB)", hx_adm_text(e, "FUNCTION"));
+        static const char *const der[] = {"usrsub_der1_name", "usrsub_der2_name", NULL};
+        if (hx_adm_element_user(r, e, &el, der) != 0)
+            return -1;
+    }
+    return hx_adm_element_build(r, e, &el, NULL);
+}
+
+int hx_adm_build_motion(hx_adm_reader *r, hx_adm_entry *e)
+{
+    hx_adm_element el;
+    hx_adm_element_init(&el, "Motion_Joint");
+    hx_adm_element_text(&el, "type", "USERSUB");
+    hx_adm_element_number(&el, "joint_id", hx_adm_ref(e, "JOINT"));
+    if (hx_adm_has(e, "TRANSLATION") && hx_adm_has(e, "ROTATION"))
+        return hx_adm_fail(r, e, e->line, "TRANSLATION and ROTATION: give one");
+    if (hx_adm_has(e, "TRANSLATION"))
+        hx_adm_element_text(&el, "motion_type", "T");
+    if (hx_adm_has(e, "ROTATION"))
+        hx_adm_element_text(&el, "motion_type", "R");
+    const int d = hx_adm_has(e, "DISPLACEMENT"), v = hx_adm_has(e, "VELOCITY"),
+              a = hx_adm_has(e, "ACCELERATION");
+    if (d + v + a > 1)
+        return hx_adm_fail(r, e, e->line, "DISPLACEMENT, VELOCITY and ACCELERATION: give one");
+    hx_adm_element_text(&el, "val_type", v ? "V" : a ? "A" : "D");
+    if (hx_adm_has(e, "ICDISP"))
+        hx_adm_element_number(&el, "ic_disp", hx_adm_number(e, "ICDISP", 0, 0.0));
+    if (hx_adm_has(e, "ICVEL"))
+        hx_adm_element_number(&el, "ic_vel", hx_adm_number(e, "ICVEL", 0, 0.0));
+    if (hx_adm_element_user(r, e, &el, NULL) != 0)
+        return -1;
+    return hx_adm_element_build(r, e, &el, NULL);
+}

@@ -1,0 +1,127 @@
+/*
+ * The force statements (docs/interface.md §9.5): GFORCE, VFORCE and VTORQUE
+ * into Force_Vector_TwoBody (ForceAndTorque, ForceOnly, TorqueOnly) with a
+ * user routine, or, given by components the harness evaluates (numbers,
+ * STEP and STEP5 of TIME) with JFLOAT on ground, into the one-body load
+ * that is the same force; SFORCE into Force_Scalar_TwoBody; FIELD into
+ * Force_Field; FORCE_STATEEQN (this harness's statement for MotionSolve's
+ * Force_StateEqn) into Force_StateEqn.
+ */
+#include <string.h>
+
+#include "model/adm/translate.h"
+
+static const char *const components[6] = {"FX", "FY", "FZ", "TX", "TY", "TZ"};
+static const char *const component_attrs[6] = {"fx_expression", "fy_expression",
+                                               "fz_expression", "tx_expression",
+                                               "ty_expression", "tz_expression"};
+
+int hx_adm_build_gforce(hx_adm_reader *r, hx_adm_entry *e)
+{
+    const char *name = e->spec->name;
+    const int part = strcmp(name, "GFORCE") == 0 ? 0 : strcmp(name, "VFORCE") == 0 ? 1 : 2;
+    static const char *const xml_types[3] = {"ForceAndTorque", "ForceOnly", "TorqueOnly"};
+    static const char *const load_types[3] = {"FORCEANDTORQUE", "FORCEONLY", "TORQUEONLY"};
+    int ncomponents = 0;
+    for (int k = 0; k < 6; ++k)
+        ncomponents += hx_adm_has(e, components[k]);
+    const char *function = hx_adm_text(e, "FUNCTION");
+    hx_adm_element el;
+    if (function != NULL) {
+        if (!hx_adm_is_user(function))
+            return hx_adm_fail(r, e, hx_adm_get(e, "FUNCTION")->line, "FUNCTION=%s: a %s's"
+                               " FUNCTION is USER(...); its components are FX=..\\FY=..",
+                               function, name);
+        if (ncomponents > 0)
+            return hx_adm_fail(r, e, e->line, "FUNCTION=USER(...) and components (FX=..\\FY=..):"
+                               " give one of them");
+        hx_adm_element_init(&el, "Force_Vector_TwoBody");
+        hx_adm_element_text(&el, "type", xml_types[part]);
+        hx_adm_element_number(&el, "i_marker_id", hx_adm_ref(e, "I"));
+        hx_adm_element_number(&el, "j_floating_marker_id", hx_adm_ref(e, "JFLOAT"));
+        if (hx_adm_has(e, "RM"))
+            hx_adm_element_number(&el, "ref_marker_id", hx_adm_ref(e, "RM"));
+        if (hx_adm_element_user(r, e, &el, NULL) != 0)
+            return -1;
+        return hx_adm_element_build(r, e, &el, NULL);
+    }
+    if (ncomponents == 0)
+        return hx_adm_fail(r, e, e->line, "no force: give FUNCTION=USER(...) or its components");
+    /* components of time with the reaction on ground (simulated.c checked both) */
+    hx_adm_element_init(&el, "Force_Vector_OneBody");
+    hx_adm_element_text(&el, "type", load_types[part]);
+    hx_adm_element_number(&el, "marker_id", hx_adm_ref(e, "I"));
+    if (hx_adm_has(e, "RM"))
+        hx_adm_element_number(&el, "ref_marker_id", hx_adm_ref(e, "RM"));
+    for (int k = 0; k < 6; ++k)
+        if (hx_adm_has(e, components[k]))
+            hx_adm_element_text(&el, component_attrs[k], hx_adm_text(e, components[k]));
+    return hx_adm_element_build(r, e, &el, NULL);
+}
+
+int hx_adm_build_sforce(hx_adm_reader *r, hx_adm_entry *e)
+{
+    const int translation = hx_adm_has(e, "TRANSLATION"), rotation = hx_adm_has(e, "ROTATION");
+    if (translation == rotation)
+        return hx_adm_fail(r, e, e->line, "give TRANSLATION (a force along the line from J to I)"
+                           " or ROTATION (a torque about J's z axis)");
+    hx_adm_element el;
+    hx_adm_element_init(&el, "Force_Scalar_TwoBody");
+    hx_adm_element_text(&el, "type", translation ? "FORCE" : "TORQUE");
+    hx_adm_element_number(&el, "i_marker_id", hx_adm_ref(e, "I"));
+    hx_adm_element_number(&el, "j_marker_id", hx_adm_ref(e, "J"));
+    if (hx_adm_has(e, "ACTIONONLY"))
+        hx_adm_element_text(&el, "is_action_only", "TRUE");
+    const char *function = hx_adm_text(e, "FUNCTION");
+    if (hx_adm_is_user(function)) {
+        if (hx_adm_element_user(r, e, &el, NULL) != 0)
+            return -1;
+    } else {
+        if (hx_adm_has(e, "ROUTINE"))
+            return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
+                               " FUNCTION=USER(...)");
+        hx_adm_element_text(&el, "val_expression", function);
+    }
+    return hx_adm_element_build(r, e, &el, NULL);
+}
+
+int hx_adm_build_field(hx_adm_reader *r, hx_adm_entry *e)
+{
+    hx_adm_element el;
+    hx_adm_element_init(&el, "Force_Field");
+    hx_adm_element_number(&el, "i_marker_id", hx_adm_ref(e, "I"));
+    hx_adm_element_number(&el, "j_marker_id", hx_adm_ref(e, "J"));
+    if (hx_adm_element_user(r, e, &el, NULL) != 0)
+        return -1;
+    return hx_adm_element_build(r, e, &el, NULL);
+}
+
+int hx_adm_build_force_stateeqn(hx_adm_reader *r, hx_adm_entry *e)
+{
+    const char *function = hx_adm_text(e, "FUNCTION");
+    if (!hx_adm_is_user(function))
+        return hx_adm_fail(r, e, hx_adm_get(e, "FUNCTION")->line, "FUNCTION=%s: expected"
+                           " USER(...) (YFOSUB)", function);
+    hx_adm_element el;
+    hx_adm_element_init(&el, "Force_StateEqn");
+    hx_adm_element_text(&el, "type", "USERSUB");
+    const hx_adm_entry *x = hx_adm_find(r, "ARRAY", hx_adm_ref(e, "X"));
+    if (!hx_adm_has(x, "X"))
+        return hx_adm_fail(r, e, hx_adm_get(e, "X")->line, "X=%d is not an X ARRAY", x->id);
+    hx_adm_element_number(&el, "x_array_id", x->id);
+    hx_adm_element_number(&el, "num_state", hx_adm_number(x, "SIZE", 0, 0.0));
+    if (hx_adm_has(e, "U"))
+        hx_adm_element_number(&el, "u_array_id", hx_adm_ref(e, "U"));
+    if (hx_adm_has(e, "IC"))
+        hx_adm_element_number(&el, "ic_array_id", hx_adm_ref(e, "IC"));
+    hx_adm_element_number(&el, "i_marker_id", hx_adm_ref(e, "I"));
+    hx_adm_element_number(&el, "j_floating_marker_id", hx_adm_ref(e, "JFLOAT"));
+    hx_adm_element_number(&el, "ref_marker_id", hx_adm_ref(e, "RM"));
+    if (hx_adm_has(e, "STATIC_HOLD"))
+        hx_adm_element_text(&el, "is_static_hold", "TRUE");
+    static const char *const der[] = {"usrsub_der1_name", "usrsub_der2_name", "usrsub_der3_name",
+                                      "usrsub_der4_name", NULL};
+    if (hx_adm_element_user(r, e, &el, der) != 0)
+        return -1;
+    return hx_adm_element_build(r, e, &el, NULL);
+}

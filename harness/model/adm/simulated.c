@@ -1,0 +1,177 @@
+/*
+ * Which statements the harness simulates (docs/interface.md §9.8), decided
+ * once every statement is read and before any is built: a joint the model
+ * holds (REVOLUTE or TRANSLATIONAL, its J marker on ground, its I on a part
+ * no other joint holds, no initial conditions), elements given by
+ * expressions the harness evaluates itself (a number, STEP and STEP5 of
+ * TIME, one measure for a VARIABLE) or by a user routine; then what names an
+ * element that is not simulated (the COUPLER or MOTION of such a joint, the
+ * ARRAY of such a VARIABLE, the FORCE_STATEEQN of such an ARRAY). Each is
+ * named in a warning with its line and why, and counted as the XML reader
+ * counts an element it does not model.
+ */
+#include <ctype.h>
+#include <string.h>
+#include <strings.h>
+
+#include "model/adm/reader.h"
+#include "model/time_function.h"
+#include "model/variable_expression.h"
+
+int hx_adm_is_user(const char *expression)
+{
+    if (expression == NULL)
+        return 0;
+    const char *p = expression;
+    while (isspace((unsigned char)*p))
+        ++p;
+    if (strncasecmp(p, "USER", 4) != 0)
+        return 0;
+    p += 4;
+    while (isspace((unsigned char)*p))
+        ++p;
+    return *p == '(';
+}
+
+int hx_adm_is_time_function(const char *expression)
+{
+    hx_time_function f;
+    return expression != NULL && hx_parse_time_function(expression, &f) == 0;
+}
+
+static int is(const hx_adm_entry *e, const char *name)
+{
+    return strcmp(e->spec->name, name) == 0;
+}
+
+/* The part of a marker named by an ID keyword of e, or NULL. */
+static const hx_adm_entry *part_of(const hx_adm_reader *r, const hx_adm_entry *e, const char *kw)
+{
+    const hx_adm_entry *mk = hx_adm_find(r, "MARKER", hx_adm_ref(e, kw));
+    return mk != NULL ? hx_adm_find(r, "PART", hx_adm_ref(mk, "PART")) : NULL;
+}
+
+static int on_ground(const hx_adm_reader *r, const hx_adm_entry *e, const char *kw)
+{
+    const hx_adm_entry *p = part_of(r, e, kw);
+    return p != NULL && hx_adm_has(p, "GROUND");
+}
+
+/* Why an entry is not simulated on its own ("" when it is). */
+static const char *why_not(hx_adm_reader *r, const hx_adm_entry *e, char *why, size_t size)
+{
+    why[0] = '\0';
+    if (e->spec->role == HX_ADM_UNSIMULATED)
+        return snprintf(why, size, "%s", e->spec->why), why;
+    const char *function = hx_adm_text(e, "FUNCTION");
+    if (is(e, "JOINT")) {
+        const char *type = hx_adm_joint_type(e);
+        if (type == NULL)
+            return why; /* the builder's error: no type */
+        if (strcmp(type, "REVOLUTE") != 0 && strcmp(type, "TRANSLATIONAL") != 0)
+            snprintf(why, size, "a %s joint, which the harness does not simulate yet (it"
+                     " simulates REVOLUTE and TRANSLATIONAL joints whose J marker is on ground)",
+                     type);
+        else if (!on_ground(r, e, "J") || on_ground(r, e, "I"))
+            snprintf(why, size, "its J marker is not on ground (or its I marker is): the harness"
+                     " simulates joints of a part to ground only, yet");
+        else if (hx_adm_has(e, "IC") || hx_adm_has(e, "ICTRAN") || hx_adm_has(e, "ICROT"))
+            snprintf(why, size, "initial conditions on a joint (IC, ICTRAN, ICROT), which the"
+                     " harness does not apply");
+        else {
+            const hx_adm_entry *part = part_of(r, e, "I");
+            for (const hx_adm_entry *o = r->entries; o < e; ++o)
+                if (is(o, "JOINT") && !o->unsimulated && part_of(r, o, "I") == part) {
+                    char label[48];
+                    snprintf(why, size, "a second joint on PART/%d (the first: %s), which the"
+                             " harness does not simulate yet", part->id,
+                             hx_adm_label(o, label, sizeof label));
+                    break;
+                }
+        }
+    } else if (is(e, "MOTION")) {
+        if (!hx_adm_has(e, "JOINT"))
+            snprintf(why, size, "a motion between markers (I, J), which the harness does not"
+                     " simulate yet (it simulates a joint's MOTION)");
+        else if (!hx_adm_is_user(function))
+            snprintf(why, size, "a FUNCTION expression, which this harness does not evaluate yet");
+    } else if (is(e, "DIFF") || is(e, "FIELD")) {
+        if (is(e, "FIELD") && function == NULL)
+            snprintf(why, size, "a linear FIELD (KMATRIX, CMATRIX, ...), which the harness does"
+                     " not simulate yet (it runs FIELD=USER(...), FIESUB)");
+        else if (!hx_adm_is_user(function))
+            snprintf(why, size, "a FUNCTION expression, which this harness does not evaluate yet");
+    } else if (is(e, "SFORCE")) {
+        if (!hx_adm_is_user(function) && !hx_adm_is_time_function(function))
+            snprintf(why, size, "a FUNCTION expression, which this harness does not evaluate yet");
+    } else if (is(e, "VARIABLE")) {
+        hx_variable v;
+        hx_message m;
+        if (!hx_adm_is_user(function) && hx_parse_variable_expression(function, &v, &m) != 0)
+            snprintf(why, size, "a FUNCTION expression, which this harness does not evaluate yet"
+                     " (it evaluates one measure such as DX(20,10,10), or a number)");
+    } else if (is(e, "GFORCE") || is(e, "VFORCE") || is(e, "VTORQUE")) {
+        if (function == NULL) {
+            static const char *const components[6] = {"FX", "FY", "FZ", "TX", "TY", "TZ"};
+            for (int k = 0; k < 6; ++k)
+                if (hx_adm_has(e, components[k]) &&
+                    !hx_adm_is_time_function(hx_adm_text(e, components[k]))) {
+                    snprintf(why, size, "a %s expression, which this harness does not evaluate"
+                             " yet", components[k]);
+                    return why;
+                }
+            if (!on_ground(r, e, "JFLOAT"))
+                snprintf(why, size, "components given by expressions between two parts (JFLOAT"
+                         " not on ground), which the harness does not simulate yet");
+        }
+    }
+    return why;
+}
+
+/* An element that names one not simulated: why, or "". */
+static const char *why_named(hx_adm_reader *r, const hx_adm_entry *e, char *why, size_t size)
+{
+    why[0] = '\0';
+    const hx_adm_keyword *kw = e->spec->keywords;
+    for (int k = 0; kw != NULL && kw[k].name != NULL; ++k) {
+        if (kw[k].kind != HX_ADM_ID || kw[k].refers == NULL || !e->values[k].present ||
+            strcmp(kw[k].refers, "MARKER") == 0 || strcmp(kw[k].refers, "PART") == 0)
+            continue;
+        for (int i = 0; i < e->values[k].count; ++i) {
+            const hx_adm_entry *o = hx_adm_find(r, kw[k].refers, (int)e->values[k].numbers[i]);
+            if (o != NULL && o->unsimulated) {
+                char label[48];
+                snprintf(why, size, "it names %s, which is not simulated",
+                         hx_adm_label(o, label, sizeof label));
+                return why;
+            }
+        }
+    }
+    return why;
+}
+
+int hx_adm_decide_simulated(hx_adm_reader *r)
+{
+    char why[320];
+    for (int k = 0; k < r->nentries; ++k) {
+        hx_adm_entry *e = &r->entries[k];
+        if (e->spec->role != HX_ADM_BUILD && e->spec->role != HX_ADM_UNSIMULATED)
+            continue;
+        if (why_not(r, e, why, sizeof why)[0] != '\0')
+            hx_adm_unsimulated(r, e, "%s", why);
+    }
+    for (int changed = 1; changed;) { /* what names those, and what names that, ... */
+        changed = 0;
+        for (int k = 0; k < r->nentries; ++k) {
+            hx_adm_entry *e = &r->entries[k];
+            if (e->unsimulated || e->spec->role != HX_ADM_BUILD || e->spec->keywords == NULL ||
+                is(e, "PINPUT") || is(e, "POUTPUT"))
+                continue;
+            if (why_named(r, e, why, sizeof why)[0] != '\0') {
+                hx_adm_unsimulated(r, e, "%s", why);
+                changed = 1;
+            }
+        }
+    }
+    return r->d->failed ? -1 : 0;
+}
