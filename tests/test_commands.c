@@ -190,6 +190,18 @@ static void an_output_that_cannot_be_created_fails_at_once(void **state)
     assert_int_equal(c.status, 1);
     assert_contains(c.err, "usrsub-harness rig", "/proc/nonexistent", strerror(ENOENT));
     assert_null(strstr(c.out, "rig:"));
+
+    /* a plot prefix too long for the names the rig adds to it: refused, not cut */
+    char prefix[4200];
+    memset(prefix, 'p', sizeof prefix - 1);
+    prefix[sizeof prefix - 1] = '\0';
+    run_command(hx_command_rig, (const char *const[]){"rig", EXAMPLES_DIR "/bushing_coupling.xml",
+                                                     "--element", "1", "--circle", "5,6.2832", "--end",
+                                                     "1", "--step", "0.005", "--plot", prefix, NULL},
+                &c);
+    assert_int_equal(c.status, 2);
+    assert_contains(c.err, "usrsub-harness rig", "--plot pppp", "the path is too long");
+    assert_null(strstr(c.out, "rig:"));
 }
 
 static void bench_refuses_its_output_before_the_sweep(void **state)
