@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "expr/evaluate.h"
 #include "model/model.h"
 #include "test_support.h"
 
@@ -134,10 +135,22 @@ static void continuation_lines_and_comments(void **state)
     assert_close(b->inertia[8], 3.0, 0, 0);
     assert_close(marker(m, 20)->pos0[2], 3.0, 0, 0);
     assert_close(marker(m, 21)->R0[3], 1.0, 0, 1e-16); /* x axis turned onto y */
-    assert_int_equal(m->loads[0].value.kind, 1);       /* STEP */
-    assert_close(m->loads[0].value.a[3], 5.0, 0, 0);
-    assert_close(m->loads[1].value.a[2], 1.0, 0, 0);
-    assert_close(m->loads[1].value.a[3], 6.0, 0, 0);
+    /* STEP(TIME, 0, 0, 1, 5) and STEP(TIME, 0, 0, 1, 6), read across their continuations:
+     * at t = 1 their ends, at t = 0.5 half way (the cubic step's middle) */
+    hx_frames fr;
+    assert_int_equal(hx_frames_init(&fr, m), 0);
+    const hx_expr_context c = {&fr, NULL};
+    static const double at[2][2] = {{1.0, 0.5}, {5.0, 2.5}}, at6[2] = {6.0, 3.0};
+    for (int i = 0; i < 2; ++i) {
+        double v0, v1;
+        hx_expr_fault f;
+        fr.time = at[0][i];
+        assert_int_equal(hx_expr_eval(m->loads[0].value, &c, &v0, &f), 0);
+        assert_int_equal(hx_expr_eval(m->loads[1].value, &c, &v1, &f), 0);
+        assert_close(v0, at[1][i], 0, 1e-15);
+        assert_close(v1, at6[i], 0, 1e-15);
+    }
+    hx_frames_free(&fr);
     assert_string_equal(hx_model_string(m, 5), "a!b, c");
     hx_model_free(m);
     expect_error(HEAD ", MASS=2\nEND\n", "lang.adm:2:", "continuation line", "no statement");

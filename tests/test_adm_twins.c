@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "model/expr/expr.h"
 #include "model/model.h"
 #include "sim_support.h"
 #include "test_support.h"
@@ -36,6 +37,21 @@ static void same_user(const hx_user_call *a, const hx_user_call *b)
 }
 
 /* Every field that matters, to the bit (memory equal). */
+/* Two loads' expressions the same program: both absent, or the same ops,
+ * inputs and stack, and the same constant when they are one. */
+static void same_program(const hx_expr_program *a, const hx_expr_program *b)
+{
+    assert_int_equal(a == NULL, b == NULL);
+    if (a == NULL)
+        return;
+    assert_int_equal(hx_expr_op_count(a), hx_expr_op_count(b));
+    assert_int_equal(hx_expr_input_count(a), hx_expr_input_count(b));
+    assert_int_equal(hx_expr_depth(a), hx_expr_depth(b));
+    double x = 0.0, y = 0.0;
+    assert_int_equal(hx_expr_constant(a, &x), hx_expr_constant(b, &y));
+    assert_memory_equal(&x, &y, sizeof x);
+}
+
 static void same_model(const hx_model *a, const hx_model *b)
 {
     SAME(has_units);
@@ -109,9 +125,11 @@ static void same_model(const hx_model *a, const hx_model *b)
         assert_int_equal(x->j_marker, y->j_marker);
         assert_int_equal(x->ref_marker, y->ref_marker);
         assert_int_equal(x->action_only, y->action_only);
-        assert_memory_equal(x->force, y->force, sizeof x->force);
-        assert_memory_equal(x->torque, y->torque, sizeof x->torque);
-        assert_memory_equal(&x->value, &y->value, sizeof x->value);
+        for (int i = 0; i < 3; ++i) {
+            same_program(x->force[i], y->force[i]);
+            same_program(x->torque[i], y->torque[i]);
+        }
+        same_program(x->value, y->value);
     }
     assert_int_equal(a->nstrings, b->nstrings);
     for (int k = 0; k < a->nstrings; ++k) {

@@ -10,6 +10,7 @@
 #include <strings.h>
 
 #include "base/vecmath.h"
+#include "model/load_elements.h"
 #include "model/orientation.h"
 #include "model/units.h"
 #include "model/routine_elements.h"
@@ -395,13 +396,46 @@ static hx_force *push_vector_user_force(hx_draft *d, const hx_element_read *e, c
     return f;
 }
 
+static int names_a_user_routine(const hx_element_read *e)
+{
+    return hx_attr_present(e, "usrsub_param_string") || hx_attr_present(e, "usrsub_dll_name");
+}
+
+/* An element given both a user routine and a value of its own (value_attr):
+ * which one a solver takes is not documented, so neither is guessed. */
+static void refuse_routine_and_value(hx_draft *d, const hx_element_read *e, const char *value_attr)
+{
+    hx_draft_fail(d, e->line, "%s %d: %s = \"%s\" and a user routine (usrsub_param_string,"
+                  " usrsub_dll_name): give one of them", e->name, e->id, value_attr,
+                  hx_attr_text(e, value_attr));
+}
+
 static const hx_attr_spec force_vector_attrs[] = {
     ID, REQUIRED("type", HX_ATTR_TEXT), REQUIRED("i_marker_id", HX_ATTR_INT),
     REQUIRED("j_floating_marker_id", HX_ATTR_INT), INT("ref_marker_id"), IGNORED("body1_id"),
-    IGNORED("body2_id"), IGNORED("ref_body_id"), USER_CALL, END};
+    IGNORED("body2_id"), IGNORED("ref_body_id"), TEXT("fx_expression"), TEXT("fy_expression"),
+    TEXT("fz_expression"), TEXT("tx_expression"), TEXT("ty_expression"), TEXT("tz_expression"),
+    USER_CALL, END};
 
+/* With a user routine (GFOSUB, VFOSUB, VTOSUB), or by expressions: a load
+ * on I whose reaction J's body takes (load_elements.h). */
 static void build_force_vector(hx_draft *d, const hx_element_read *e)
 {
+    static const char *const comps[6] = {"fx_expression", "fy_expression", "fz_expression",
+                                         "tx_expression", "ty_expression", "tz_expression"};
+    int given = -1;
+    for (int k = 0; k < 6 && given < 0; ++k)
+        if (hx_attr_present(e, comps[k]))
+            given = k;
+    if (given >= 0) {
+        if (names_a_user_routine(e))
+            refuse_routine_and_value(d, e, comps[given]);
+        else
+            hx_build_vector_load(d, e, hx_attr_int(e, "i_marker_id", 0),
+                                 hx_attr_int(e, "j_floating_marker_id", 0),
+                                 hx_attr_int(e, "ref_marker_id", 0));
+        return;
+    }
     push_vector_user_force(d, e, hx_attr_text(e, "type"), hx_attr_int(e, "i_marker_id", 0),
                            hx_attr_int(e, "j_floating_marker_id", 0),
                            hx_attr_int(e, "ref_marker_id", 0));
@@ -422,37 +456,6 @@ static void build_force_field(hx_draft *d, const hx_element_read *e)
     hx_draft_user_call(d, e, &f->user);
 }
 
-static hx_load *push_load(hx_draft *d, const hx_element_read *e, enum hx_load_kind kind)
-{
-    hx_model *m = d->m;
-    hx_load *l = hx_draft_push(d, (void **)&m->loads, &m->nloads, &d->cap_loads, sizeof *l,
-                               (void **)&d->rloads, sizeof(raw_refs));
-    if (l != NULL) {
-        l->id = e->id;
-        l->kind = kind;
-        l->line = e->line;
-    }
-    return l;
-}
-
-/* A load attribute: a number or STEP/STEP5(TIME, t0, h0, t1, h1). */
-static int load_value(hx_draft *d, const hx_element_read *e, const char *name,
-                      hx_time_function *f)
-{
-    const char *text = hx_attr_text(e, name);
-    if (text == NULL) {
-        memset(f, 0, sizeof *f);
-        return 0;
-    }
-    if (hx_parse_time_function(text, f) != 0) {
-        hx_draft_fail(d, e->line, "%s %d: %s = \"%s\": the harness reads a number or"
-                      " STEP(TIME, t0, h0, t1, h1) / STEP5(...) with t1 >= t0", e->name, e->id,
-                      name, text);
-        return -1;
-    }
-    return 0;
-}
-
 static const hx_attr_spec vector_load_attrs[] = {
     ID, TEXT("type"), REQUIRED("marker_id", HX_ATTR_INT), INT("ref_marker_id"),
     TEXT("fx_expression"), TEXT("fy_expression"), TEXT("fz_expression"), TEXT("tx_expression"),
@@ -471,20 +474,6 @@ static void build_vector_user_load(hx_draft *d, const hx_element_read *e)
         f->one_body = 1;
 }
 
-static int names_a_user_routine(const hx_element_read *e)
-{
-    return hx_attr_present(e, "usrsub_param_string") || hx_attr_present(e, "usrsub_dll_name");
-}
-
-/* An element given both a user routine and a value of its own (value_attr):
- * which one a solver takes is not documented, so neither is guessed. */
-static void refuse_routine_and_value(hx_draft *d, const hx_element_read *e, const char *value_attr)
-{
-    hx_draft_fail(d, e->line, "%s %d: %s = \"%s\" and a user routine (usrsub_param_string,"
-                  " usrsub_dll_name): give one of them", e->name, e->id, value_attr,
-                  hx_attr_text(e, value_attr));
-}
-
 static void build_vector_load(hx_draft *d, const hx_element_read *e)
 {
     static const char *const comps[6] = {"fx_expression", "fy_expression", "fz_expression",
@@ -498,15 +487,8 @@ static void build_vector_load(hx_draft *d, const hx_element_read *e)
         build_vector_user_load(d, e);
         return;
     }
-    hx_load *l = push_load(d, e, HX_LOAD_VECTOR);
-    if (l == NULL)
-        return;
-    for (int k = 0; k < 6; ++k)
-        if (load_value(d, e, comps[k], k < 3 ? &l->force[k] : &l->torque[k - 3]) != 0)
-            return;
-    raw_refs *refs = &d->rloads[d->m->nloads - 1];
-    refs->ids[0] = hx_attr_int(e, "marker_id", 0);
-    refs->ids[2] = hx_attr_int(e, "ref_marker_id", 0);
+    hx_build_vector_load(d, e, hx_attr_int(e, "marker_id", 0), 0,
+                         hx_attr_int(e, "ref_marker_id", 0));
 }
 
 static const hx_attr_spec scalar_load_attrs[] = {
@@ -555,15 +537,7 @@ static void build_scalar_load(hx_draft *d, const hx_element_read *e)
                       " missing", e->id);
         return;
     }
-    hx_load *l = push_load(d, e, torque ? HX_LOAD_SCALAR_TORQUE : HX_LOAD_SCALAR_FORCE);
-    if (l == NULL)
-        return;
-    l->action_only = hx_attr_number(e, "is_action_only", 0.0) != 0.0;
-    if (load_value(d, e, value, &l->value) != 0)
-        return;
-    raw_refs *refs = &d->rloads[d->m->nloads - 1];
-    refs->ids[0] = hx_attr_int(e, "i_marker_id", 0);
-    refs->ids[1] = hx_attr_int(e, "j_marker_id", 0);
+    hx_build_scalar_load(d, e, torque, value);
 }
 
 /* ---- the table ------------------------------------------------------------------------------- */

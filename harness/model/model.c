@@ -4,6 +4,8 @@
 #include <stdlib.h>
 #include <strings.h>
 
+#include "model/expr/expr.h"
+
 int hx_model_marker(const hx_model *m, int id)
 {
     if (m->marker_slot_count == 0)
@@ -90,6 +92,13 @@ const char *hx_force_element_name(const hx_force *f)
     if (f->one_body)
         return "Force_Vector_OneBody";
     return f->part >= HX_OUTPUT_SCALAR_FORCE ? "Force_Scalar_TwoBody" : "Force_Vector_TwoBody";
+}
+
+const char *hx_load_element_name(const hx_load *l)
+{
+    if (l->kind != HX_LOAD_VECTOR)
+        return "Force_Scalar_TwoBody";
+    return l->j_marker >= 0 ? "Force_Vector_TwoBody" : "Force_Vector_OneBody";
 }
 
 int hx_model_routine(const hx_model *m, enum hx_routine_kind kind, int id)
@@ -213,6 +222,14 @@ void hx_model_free(hx_model *m)
     free(m->joints);
     free(m->couplers);
     free(m->forces);
+    for (int k = 0; k < m->nloads; ++k) {
+        hx_load *l = &m->loads[k];
+        for (int i = 0; i < 3; ++i) {
+            hx_expr_free(l->force[i]);
+            hx_expr_free(l->torque[i]);
+        }
+        hx_expr_free(l->value);
+    }
     free(m->loads);
     free(m->strings);
     free(m->marker_slots);

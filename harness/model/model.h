@@ -11,9 +11,11 @@
 #include <stdio.h>
 
 #include "base/message.h"
-#include "model/time_function.h"
 #include "model/units.h"
 #include "usrsub/solver_abi.h"
+
+/* A function expression parsed and linked (model/expr/expr.h). */
+typedef struct hx_expr_program hx_expr_program;
 
 typedef struct hx_user_call {
     char *dll_name;     /* usrsub_dll_name; NULL when absent or "NULL" */
@@ -105,7 +107,8 @@ typedef struct hx_force {
 int hx_force_output_axes(const hx_force *f);
 
 enum hx_load_kind {
-    HX_LOAD_VECTOR,        /* Force_Vector_OneBody: force/torque at a marker */
+    HX_LOAD_VECTOR,        /* Force_Vector_OneBody, or Force_Vector_TwoBody by expressions:
+                            * force/torque at a marker */
     HX_LOAD_SCALAR_TORQUE, /* Force_Scalar_TwoBody TORQUE: about J's z axis */
     HX_LOAD_SCALAR_FORCE   /* Force_Scalar_TwoBody FORCE: along the line I-J */
 };
@@ -113,9 +116,12 @@ enum hx_load_kind {
 typedef struct hx_load {
     int id;
     enum hx_load_kind kind;
-    int i_marker, j_marker, ref_marker; /* indices, -1 when not used */
-    hx_time_function force[3], torque[3]; /* vector loads, in ref_marker axes */
-    hx_time_function value;               /* scalar loads */
+    int i_marker, j_marker, ref_marker; /* indices, -1 when not used; a vector load's j_marker
+                                         * (Force_Vector_TwoBody) takes the reaction */
+    /* the expressions (docs/interface.md §8), linked against the model; NULL: a
+     * component left out, 0 */
+    hx_expr_program *force[3], *torque[3]; /* vector loads, in ref_marker axes */
+    hx_expr_program *value;                /* scalar loads */
     int action_only;
     int line;
 } hx_load;
@@ -321,6 +327,9 @@ int hx_model_routine(const hx_model *m, enum hx_routine_kind kind, int id);
 const char *hx_routine_element_name(enum hx_routine_kind kind);
 /* "Force_Vector_TwoBody", "Force_Vector_OneBody", "Force_Scalar_TwoBody" or "Force_Field". */
 const char *hx_force_element_name(const hx_force *f);
+/* "Force_Vector_OneBody", "Force_Vector_TwoBody" (by expressions) or "Force_Scalar_TwoBody";
+ * j_marker must be resolved. */
+const char *hx_load_element_name(const hx_load *l);
 /* Index of the Reference_Spline with this id, or -1. */
 int hx_model_spline(const hx_model *m, int id);
 /* Index of the curve with this id, or -1. */

@@ -10,6 +10,7 @@
 
 #include "base/vecmath.h"
 #include "model/draft.h"
+#include "model/load_elements.h"
 
 static int resolve_marker(hx_draft *r, int k)
 {
@@ -287,13 +288,18 @@ static int resolve_forces(hx_draft *r)
     for (int k = 0; k < m->nloads; ++k) {
         hx_load *l = &m->loads[k];
         const raw_refs *refs = &r->rloads[k];
-        const char *owner = l->kind == HX_LOAD_VECTOR ? "Force_Vector_OneBody" : "Force_Scalar_TwoBody";
+        const int two_body = l->kind == HX_LOAD_VECTOR && refs->ids[1] != 0;
+        const char *owner = l->kind != HX_LOAD_VECTOR ? "Force_Scalar_TwoBody"
+                            : two_body                ? "Force_Vector_TwoBody"
+                                                      : "Force_Vector_OneBody";
         l->j_marker = l->ref_marker = -1;
         if (marker_ref(r, refs->ids[0], l->line, owner, l->id,
-                       l->kind == HX_LOAD_VECTOR ? "marker_id" : "i_marker_id", &l->i_marker) != 0)
+                       l->kind == HX_LOAD_VECTOR && !two_body ? "marker_id" : "i_marker_id",
+                       &l->i_marker) != 0)
             return -1;
-        if (l->kind != HX_LOAD_VECTOR &&
-            marker_ref(r, refs->ids[1], l->line, owner, l->id, "j_marker_id", &l->j_marker) != 0)
+        if ((l->kind != HX_LOAD_VECTOR || two_body) &&
+            marker_ref(r, refs->ids[1], l->line, owner, l->id,
+                       two_body ? "j_floating_marker_id" : "j_marker_id", &l->j_marker) != 0)
             return -1;
         if (l->kind == HX_LOAD_VECTOR && refs->ids[2] != 0 &&
             marker_ref(r, refs->ids[2], l->line, owner, l->id, "ref_marker_id", &l->ref_marker) != 0)
@@ -361,7 +367,7 @@ int hx_draft_resolve(hx_draft *r)
             return -1;
     if (build_marker_index(r) != 0 || resolve_bodies(r) != 0 || resolve_joints(r) != 0 ||
         resolve_couplers(r) != 0 || resolve_forces(r) != 0 || hx_draft_resolve_stateeqns(r) != 0 ||
-        hx_draft_resolve_routines(r) != 0)
+        hx_draft_resolve_routines(r) != 0 || hx_draft_link_loads(r) != 0)
         return -1;
     track_markers(m);
     return 0;

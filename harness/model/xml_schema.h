@@ -37,6 +37,8 @@ typedef struct hx_element_read {
         int present;
         double number;    /* REAL, INT, BOOL (1 TRUE, 0 FALSE) */
         const char *text; /* as written */
+        int line, column; /* where the text begins, when its reader knows (a dataset's
+                           * expression); 0: the element's line, column 1 of the value */
     } value[HX_MAX_ATTRS];
 } hx_element_read;
 

@@ -1,9 +1,9 @@
 /*
  * The force statements (docs/interface.md §9.5): GFORCE, VFORCE and VTORQUE
  * into Force_Vector_TwoBody (ForceAndTorque, ForceOnly, TorqueOnly) with a
- * user routine, or, given by components the harness evaluates (numbers,
- * STEP and STEP5 of TIME) with JFLOAT on ground, into the one-body load
- * that is the same force; SFORCE into Force_Scalar_TwoBody; FIELD into
+ * user routine, or, given by components (function expressions), into
+ * Force_Vector_TwoBody by expressions, or, with JFLOAT on ground, into the
+ * one-body load that is the same force; SFORCE into Force_Scalar_TwoBody; FIELD into
  * Force_Field; FORCE_STATEEQN (this harness's statement for MotionSolve's
  * Force_StateEqn) into Force_StateEqn.
  */
@@ -47,15 +47,24 @@ int hx_adm_build_gforce(hx_adm_reader *r, hx_adm_entry *e)
     }
     if (ncomponents == 0)
         return hx_adm_fail(r, e, e->line, "no force: give FUNCTION=USER(...) or its components");
-    /* components of time with the reaction on ground (simulated.c checked both) */
-    hx_adm_element_init(&el, "Force_Vector_OneBody");
-    hx_adm_element_text(&el, "type", load_types[part]);
-    hx_adm_element_number(&el, "marker_id", hx_adm_ref(e, "I"));
+    /* components: the reaction on JFLOAT's part, or lost to ground */
+    const hx_adm_entry *jfloat = hx_adm_find(r, "MARKER", hx_adm_ref(e, "JFLOAT"));
+    const hx_adm_entry *jpart = jfloat != NULL ? hx_adm_find(r, "PART", hx_adm_ref(jfloat, "PART"))
+                                               : NULL;
+    if (jpart != NULL && hx_adm_has(jpart, "GROUND")) {
+        hx_adm_element_init(&el, "Force_Vector_OneBody");
+        hx_adm_element_text(&el, "type", load_types[part]);
+        hx_adm_element_number(&el, "marker_id", hx_adm_ref(e, "I"));
+    } else {
+        hx_adm_element_init(&el, "Force_Vector_TwoBody");
+        hx_adm_element_text(&el, "type", xml_types[part]);
+        hx_adm_element_number(&el, "i_marker_id", hx_adm_ref(e, "I"));
+        hx_adm_element_number(&el, "j_floating_marker_id", hx_adm_ref(e, "JFLOAT"));
+    }
     if (hx_adm_has(e, "RM"))
         hx_adm_element_number(&el, "ref_marker_id", hx_adm_ref(e, "RM"));
     for (int k = 0; k < 6; ++k)
-        if (hx_adm_has(e, components[k]))
-            hx_adm_element_text(&el, component_attrs[k], hx_adm_text(e, components[k]));
+        hx_adm_element_expression(&el, component_attrs[k], e, components[k]);
     return hx_adm_element_build(r, e, &el, NULL);
 }
 
@@ -80,7 +89,7 @@ int hx_adm_build_sforce(hx_adm_reader *r, hx_adm_entry *e)
         if (hx_adm_has(e, "ROUTINE"))
             return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
                                " FUNCTION=USER(...)");
-        hx_adm_element_text(&el, "val_expression", function);
+        hx_adm_element_expression(&el, "val_expression", e, "FUNCTION");
     }
     return hx_adm_element_build(r, e, &el, NULL);
 }

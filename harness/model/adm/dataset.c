@@ -356,13 +356,23 @@ static void name_statement(hx_adm_reader *r, hx_message *msg)
         return;
     char *end;
     const long line = strtol(msg->text + n + 1, &end, 10);
+    /* an expression's "file:line:column: ": the statement it is in may have begun
+     * lines before (the last to begin at or before it) */
+    const int column = end[0] == ':' && end[1] >= '0' && end[1] <= '9';
+    if (column)
+        strtol(end + 1, &end, 10);
     if (end == msg->text + n + 1 || strncmp(end, ": ", 2) != 0)
         return;
+    int within = -1;
+    for (int k = 0; column && k < r->nentries; ++k)
+        if (r->entries[k].line <= line)
+            within = k;
     for (int k = 0; k < r->nentries; ++k) {
         const hx_adm_entry *e = &r->entries[k];
         char label[48];
         hx_adm_label(e, label, sizeof label);
-        if (e->line != line || strncmp(end + 2, label, strlen(label)) == 0)
+        if ((column ? k != within : e->line != line) ||
+            strncmp(end + 2, label, strlen(label)) == 0)
             continue;
         snprintf(head, sizeof head, "%.*s: %s: %s", (int)(end - msg->text), msg->text, label,
                  end + 2);

@@ -62,10 +62,6 @@ void hx_adm_note(hx_adm_reader *r, int line, const char *fmt, ...)
 
 /* 1 when the expression is USER(...). */
 int hx_adm_is_user(const char *expression);
-/* 1 when the harness evaluates the expression itself as a load's value: a
- * number, STEP or STEP5 of TIME (model/time_function.h), as the XML reader
- * does. */
-int hx_adm_is_time_function(const char *expression);
 /* The type flag of a JOINT (REVOLUTE, ...), NULL when none is given. */
 const char *hx_adm_joint_type(const hx_adm_entry *e);
 

@@ -2,9 +2,9 @@
  * Which statements the harness simulates (docs/interface.md §9.8), decided
  * once every statement is read and before any is built: a joint the model
  * holds (REVOLUTE or TRANSLATIONAL, its J marker on ground, its I on a part
- * no other joint holds, no initial conditions), elements given by
- * expressions the harness evaluates itself (a number, STEP and STEP5 of
- * TIME, one measure for a VARIABLE) or by a user routine; then what names an
+ * no other joint holds, no initial conditions), forces given by function
+ * expressions (docs/interface.md §8) or by a user routine, a VARIABLE by one
+ * measure or a user routine; then what names an
  * element that is not simulated (the COUPLER or MOTION of such a joint, the
  * ARRAY of such a VARIABLE, the FORCE_STATEEQN of such an ARRAY). Each is
  * named in a warning with its line and why, and counted as the XML reader
@@ -15,7 +15,6 @@
 #include <strings.h>
 
 #include "model/adm/reader.h"
-#include "model/time_function.h"
 #include "model/variable_expression.h"
 
 int hx_adm_is_user(const char *expression)
@@ -31,12 +30,6 @@ int hx_adm_is_user(const char *expression)
     while (isspace((unsigned char)*p))
         ++p;
     return *p == '(';
-}
-
-int hx_adm_is_time_function(const char *expression)
-{
-    hx_time_function f;
-    return expression != NULL && hx_parse_time_function(expression, &f) == 0;
 }
 
 static int is(const hx_adm_entry *e, const char *name)
@@ -101,29 +94,12 @@ static const char *why_not(hx_adm_reader *r, const hx_adm_entry *e, char *why, s
                      " not simulate yet (it runs FIELD=USER(...), FIESUB)");
         else if (!hx_adm_is_user(function))
             snprintf(why, size, "a FUNCTION expression, which this harness does not evaluate yet");
-    } else if (is(e, "SFORCE")) {
-        if (!hx_adm_is_user(function) && !hx_adm_is_time_function(function))
-            snprintf(why, size, "a FUNCTION expression, which this harness does not evaluate yet");
     } else if (is(e, "VARIABLE")) {
         hx_variable v;
         hx_message m;
         if (!hx_adm_is_user(function) && hx_parse_variable_expression(function, &v, &m) != 0)
             snprintf(why, size, "a FUNCTION expression, which this harness does not evaluate yet"
                      " (it evaluates one measure such as DX(20,10,10), or a number)");
-    } else if (is(e, "GFORCE") || is(e, "VFORCE") || is(e, "VTORQUE")) {
-        if (function == NULL) {
-            static const char *const components[6] = {"FX", "FY", "FZ", "TX", "TY", "TZ"};
-            for (int k = 0; k < 6; ++k)
-                if (hx_adm_has(e, components[k]) &&
-                    !hx_adm_is_time_function(hx_adm_text(e, components[k]))) {
-                    snprintf(why, size, "a %s expression, which this harness does not evaluate"
-                             " yet", components[k]);
-                    return why;
-                }
-            if (!on_ground(r, e, "JFLOAT"))
-                snprintf(why, size, "components given by expressions between two parts (JFLOAT"
-                         " not on ground), which the harness does not simulate yet");
-        }
     }
     return why;
 }

@@ -20,7 +20,19 @@ void hx_adm_element_text(hx_adm_element *el, const char *attr, const char *text)
     el->attr[el->n] = attr;
     el->text[el->n] = text;
     el->number[el->n] = 0.0;
+    el->line[el->n] = el->column[el->n] = 0;
     el->n++;
+}
+
+void hx_adm_element_expression(hx_adm_element *el, const char *attr, const hx_adm_entry *e,
+                               const char *keyword)
+{
+    const hx_adm_value *v = hx_adm_get(e, keyword);
+    if (!v->present || el->n == HX_ADM_MAX_ATTRS)
+        return;
+    hx_adm_element_text(el, attr, v->texts[0]);
+    el->line[el->n - 1] = v->value_lines[0];
+    el->column[el->n - 1] = v->value_columns[0];
 }
 
 void hx_adm_element_number(hx_adm_element *el, const char *attr, double x)
@@ -30,6 +42,7 @@ void hx_adm_element_number(hx_adm_element *el, const char *attr, double x)
     el->attr[el->n] = attr;
     el->text[el->n] = NULL; /* formatted when the attribute is read as text */
     el->number[el->n] = x;
+    el->line[el->n] = el->column[el->n] = 0;
     el->n++;
 }
 
@@ -132,6 +145,8 @@ int hx_adm_element_build(hx_adm_reader *r, const hx_adm_entry *e, hx_adm_element
         }
         x.value[k].text = el->text[i];
         x.value[k].number = el->number[i];
+        x.value[k].line = el->line[i];
+        x.value[k].column = el->column[i];
         if (x.spec[k].kind == HX_ATTR_BOOL)
             x.value[k].number = strcmp(el->text[i], "TRUE") == 0;
     }

@@ -17,11 +17,16 @@ typedef struct hx_adm_element {
     const char *attr[HX_ADM_MAX_ATTRS];
     const char *text[HX_ADM_MAX_ATTRS];
     double number[HX_ADM_MAX_ATTRS];
+    int line[HX_ADM_MAX_ATTRS], column[HX_ADM_MAX_ATTRS]; /* an expression's place, else 0 */
     char storage[HX_ADM_MAX_ATTRS][32];
 } hx_adm_element;
 
 void hx_adm_element_init(hx_adm_element *el, const char *name);
 void hx_adm_element_text(hx_adm_element *el, const char *attr, const char *text);
+/* An expression: the entry's keyword's text, with where it begins (for the
+ * engine's file:line:column); nothing when the keyword is absent. */
+void hx_adm_element_expression(hx_adm_element *el, const char *attr, const hx_adm_entry *e,
+                               const char *keyword);
 void hx_adm_element_number(hx_adm_element *el, const char *attr, double x);
 /* usrsub_param_string from the entry's FUNCTION=USER(...), usrsub_dll_name and
  * usrsub_fnc_name from its ROUTINE=[library::]name, and the further

@@ -143,8 +143,8 @@ int hx_dynamics_evaluate(const hx_dynamics *d, hx_dynamics_data *dd, double t, c
     hx_dynamics_kinematics(d, dd, t, y);
     memset(dd->force, 0, sizeof(double) * 3 * (size_t)nb);
     memset(dd->torque, 0, sizeof(double) * 3 * (size_t)nb);
-    ydot[d->load_work] = hx_loads_apply(d, dd, t);
-    if (hx_element_forces_apply(d, dd, (ask & HX_EVALUATE_PARTIALS) != 0,
+    if (hx_loads_apply(d, dd, &ydot[d->load_work]) != 0 ||
+        hx_element_forces_apply(d, dd, (ask & HX_EVALUATE_PARTIALS) != 0,
                                 &ydot[d->element_work]) != 0 ||
         hx_stateeqns_apply(d, dd, y, ydot) != 0)
         return -1;

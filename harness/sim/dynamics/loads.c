@@ -1,17 +1,31 @@
 /* Gravity and the model's loads on the bodies (loads.h). */
 #include "sim/dynamics/loads.h"
 
-#include "base/vecmath.h"
-#include "sim/dynamics/bodies.h"
+#include <stdio.h>
 
-static double value_at(const hx_time_function *f, double t)
+#include "base/vecmath.h"
+#include "expr/evaluate.h"
+#include "sim/dynamics/bodies.h"
+#include "sim/dynamics/failure.h"
+
+/* A component's value at fr: a component left out is 0. */
+static int value_at(const hx_load *l, const hx_expr_program *p, const hx_frames *fr,
+                    double *value, hx_message *msg)
 {
-    /* components left out are constant zeros: skip them */
-    return f->kind == 0 ? f->a[0] : hx_time_function_at(f, t);
+    *value = 0.0;
+    if (p == NULL)
+        return 0;
+    const hx_expr_context c = {fr, NULL}; /* load expressions read no variables (linked so) */
+    hx_expr_fault fault;
+    if (hx_expr_eval(p, &c, value, &fault) == 0)
+        return 0;
+    char element[64];
+    snprintf(element, sizeof element, "%s %d", hx_load_element_name(l), l->id);
+    return hx_expr_fail(msg, p, &fault, element);
 }
 
-void hx_load_share_at(const hx_model *m, const hx_frames *fr, double t, int k,
-                      hx_load_share *share)
+int hx_load_share_at(const hx_model *m, const hx_frames *fr, int k, hx_load_share *share,
+                     hx_message *msg)
 {
     const hx_load *l = &m->loads[k];
     hx_frame scratch[3];
@@ -22,19 +36,30 @@ void hx_load_share_at(const hx_model *m, const hx_frames *fr, double t, int k,
     double *F = share->F[0], *T = share->T[0];
     if (l->kind == HX_LOAD_VECTOR) {
         double f[3], tq[3];
-        for (int i = 0; i < 3; ++i) {
-            f[i] = value_at(&l->force[i], t);
-            tq[i] = value_at(&l->torque[i], t);
-        }
+        for (int i = 0; i < 3; ++i)
+            if (value_at(l, l->force[i], fr, &f[i], msg) != 0 ||
+                value_at(l, l->torque[i], fr, &tq[i], msg) != 0)
+                return -1;
         const hx_frame *ref = hx_frames_marker(fr, l->ref_marker, &scratch[2]);
         m3_apply(F, ref->R, f);
         m3_apply(T, ref->R, tq);
-        return;
+        if (l->j_marker < 0)
+            return 0;
+        /* a Force_Vector_TwoBody: the reaction on J's body at the same point, as a
+         * user force element's (element_forces.c) */
+        share->count = 2;
+        share->body[1] = m->markers[l->j_marker].body;
+        v3_copy(share->point[1], I->p);
+        v3_scale(share->F[1], F, -1.0);
+        v3_scale(share->T[1], T, -1.0);
+        return 0;
     }
     const hx_frame *J = hx_frames_marker(fr, l->j_marker, &scratch[1]);
     v3_set(F, 0, 0, 0);
     v3_set(T, 0, 0, 0);
-    const double value = hx_time_function_at(&l->value, t);
+    double value;
+    if (value_at(l, l->value, fr, &value, msg) != 0)
+        return -1;
     if (l->kind == HX_LOAD_SCALAR_TORQUE) {
         v3_set(T, J->R[2] * value, J->R[5] * value, J->R[8] * value);
     } else {
@@ -45,27 +70,61 @@ void hx_load_share_at(const hx_model *m, const hx_frames *fr, double t, int k,
             v3_scale(F, r, value / len); /* positive pushes I away from J */
     }
     if (l->action_only)
-        return;
+        return 0;
     share->count = 2;
     share->body[1] = m->markers[l->j_marker].body;
     v3_copy(share->point[1], J->p);
     v3_scale(share->F[1], F, -1.0);
     v3_scale(share->T[1], T, -1.0);
+    return 0;
 }
 
-double hx_loads_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t)
+int hx_load_bodies(const hx_model *m, int k, int *bodies)
+{
+    const hx_load *l = &m->loads[k];
+    int n = 0;
+    const int other = l->kind == HX_LOAD_VECTOR ? l->ref_marker : l->j_marker;
+    const int named[3] = {l->i_marker, other, l->kind == HX_LOAD_VECTOR ? l->j_marker : -1};
+    for (int i = 0; i < 3; ++i)
+        if (named[i] >= 0)
+            bodies[n++] = m->markers[named[i]].body;
+    const hx_expr_program *programs[7] = {l->force[0],  l->force[1],  l->force[2], l->torque[0],
+                                          l->torque[1], l->torque[2], l->value};
+    for (int p = 0; p < 7; ++p) {
+        if (programs[p] == NULL)
+            continue;
+        const hx_expr_input *in = hx_expr_inputs(programs[p]);
+        for (int j = 0; j < hx_expr_input_count(programs[p]); ++j)
+            for (int i = 0; i < in[j].nids && i < 4; ++i)
+                if (in[j].kind == HX_EXPR_INPUT_MEASURE && in[j].index[i] >= 0)
+                    bodies[n++] = m->markers[in[j].index[i]].body;
+    }
+    int distinct = 0; /* in the order first named */
+    for (int i = 0; i < n; ++i) {
+        int seen = 0;
+        for (int j = 0; j < distinct && !seen; ++j)
+            seen = bodies[j] == bodies[i];
+        if (!seen)
+            bodies[distinct++] = bodies[i];
+    }
+    return distinct;
+}
+
+int hx_loads_apply(const hx_dynamics *d, hx_dynamics_data *dd, double *power)
 {
     const hx_model *m = d->m;
     for (int k = 0; k < m->nbodies; ++k)
         if (d->dof[k].kind != HX_DOF_GROUND)
             v3_axpy(dd->force + 3 * k, m->bodies[k].mass / d->ucf, m->gravity);
-    double power = 0.0;
+    *power = 0.0;
     for (int k = 0; k < m->nloads; ++k) {
         hx_load_share share;
-        hx_load_share_at(m, &dd->frames, t, k, &share);
+        hx_message msg;
+        if (hx_load_share_at(m, &dd->frames, k, &share, &msg) != 0)
+            return hx_dynamics_fail(dd, "%s", msg.text);
         for (int i = 0; i < share.count; ++i)
-            power += hx_bodies_apply_load(d, dd, share.body[i], share.point[i], share.F[i],
-                                          share.T[i], 1.0);
+            *power += hx_bodies_apply_load(d, dd, share.body[i], share.point[i], share.F[i],
+                                           share.T[i], 1.0);
     }
-    return power;
+    return 0;
 }

@@ -13,12 +13,26 @@ typedef struct hx_load_share {
     double point[2][3], F[2][3], T[2][3];
 } hx_load_share;
 
-/* Load k at frames fr and time t. */
-void hx_load_share_at(const hx_model *m, const hx_frames *fr, double t, int k,
-                      hx_load_share *share);
+/* Load k at frames fr (at their time): its expressions evaluated
+ * (docs/interface.md §8). 0, or -1 with "file:line:column: element: what at
+ * t = ..." in msg when an expression faults (a division by zero, a value
+ * that is not finite, ...). */
+int hx_load_share_at(const hx_model *m, const hx_frames *fr, int k, hx_load_share *share,
+                     hx_message *msg);
 
-/* The forces stage's gravity and loads at time t at dd->frames, onto the
- * bodies; returns their power. */
-double hx_loads_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t);
+/* The most bodies hx_load_bodies lists: the three markers the load names and
+ * the four of each of its expressions' inputs. */
+#define HX_LOAD_BODIES_MAX (3 + 7 * 64 * 4)
+
+/* The bodies load k depends on, each once (ground included): those of the
+ * markers it names (I, J or the reference marker) and of every marker its
+ * expressions measure, known from the parse (docs/interface.md §8.6).
+ * Returns their count; bodies holds HX_LOAD_BODIES_MAX. */
+int hx_load_bodies(const hx_model *m, int k, int *bodies);
+
+/* The forces stage's gravity and loads at dd->frames, onto the bodies, and
+ * their power; 0, or -1 with the failure recorded in dd (an expression's
+ * fault). */
+int hx_loads_apply(const hx_dynamics *d, hx_dynamics_data *dd, double *power);
 
 #endif

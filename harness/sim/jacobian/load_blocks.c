@@ -1,9 +1,10 @@
 /*
- * The loads' blocks of the Newton matrix (newton_matrix.h): each load by
- * central differences of that load alone, on the columns of the bodies its
- * markers sit on (loads are few; their time functions need no partials).
+ * The loads' blocks of the Jacobian (jacobian.h): each load by central
+ * differences of that load alone, on the columns of the bodies its markers
+ * sit on and of those its expressions measure (hx_load_bodies).
  */
 #include "base/vecmath.h"
+#include "sim/dynamics/failure.h"
 #include "sim/dynamics/loads.h"
 #include "sim/jacobian/jacobian_parts.h"
 
@@ -19,17 +20,15 @@ static void wrench(const hx_load_share *share, int i, const hx_frames *fr, doubl
 
 int hx_load_blocks(hx_jacobian *jac, double t, const double *y)
 {
-    (void)y;
+    (void)t, (void)y; /* the moved frames hold the time */
     const hx_dynamics *d = jac->d;
     const hx_model *m = d->m;
     for (int k = 0; k < m->nloads; ++k) {
-        const hx_load *l = &m->loads[k];
-        const int other = l->kind == HX_LOAD_VECTOR ? l->ref_marker : l->j_marker;
-        const int bodies[2] = {m->markers[l->i_marker].body,
-                               other >= 0 ? m->markers[other].body : -1};
-        for (int i = 0; i < 2; ++i) {
+        int bodies[HX_LOAD_BODIES_MAX];
+        const int nbodies = hx_load_bodies(m, k, bodies);
+        for (int i = 0; i < nbodies; ++i) {
             const int b = bodies[i];
-            if (b < 0 || d->dof[b].kind == HX_DOF_GROUND || (i == 1 && b == bodies[0]))
+            if (d->dof[b].kind == HX_DOF_GROUND)
                 continue;
             int columns[13];
             const int count = hx_jacobian_body_columns(d, b, columns);
@@ -41,7 +40,12 @@ int hx_load_blocks(hx_jacobian *jac, double t, const double *y)
                 for (int side = 0; side < 2; ++side) {
                     jac->y[c] = keep + (side == 0 ? h : -h);
                     hx_jacobian_move_body(jac, b, jac->y);
-                    hx_load_share_at(d->m, &jac->moved, t, k, &share[side]);
+                    hx_message msg;
+                    if (hx_load_share_at(d->m, &jac->moved, k, &share[side], &msg) != 0) {
+                        jac->y[c] = keep;
+                        hx_jacobian_restore_body(jac, b);
+                        return hx_dynamics_fail(&jac->dd, "%s", msg.text);
+                    }
                     for (int a = 0; a < share[side].count; ++a)
                         wrench(&share[side], a, &jac->moved, W[side][a], W[side][a] + 3);
                 }

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sim/dynamics/loads.h"
 #include "sim/dynamics/stateeqns.h"
 #include "sim/jacobian/jacobian_parts.h"
 
@@ -151,10 +152,11 @@ int hx_jacobian_pattern(hx_jacobian *jac, hx_message *msg)
     }
     for (int k = 0; k < m->nloads; ++k) {
         const hx_load *l = &m->loads[k];
-        const int other = l->kind == HX_LOAD_VECTOR ? l->ref_marker : l->j_marker;
-        const int bodies[2] = {body_of(m, l->i_marker), body_of(m, other)};
-        const int reacted = l->kind != HX_LOAD_VECTOR && !l->action_only;
-        bodies_by_bodies(&p, d, bodies, reacted ? 2 : 1, bodies, 2);
+        int bodies[HX_LOAD_BODIES_MAX];
+        const int nbodies = hx_load_bodies(m, k, bodies);
+        const int reacted = l->kind == HX_LOAD_VECTOR ? l->j_marker >= 0 : !l->action_only;
+        const int rows[2] = {body_of(m, l->i_marker), body_of(m, l->j_marker)};
+        bodies_by_bodies(&p, d, rows, reacted ? 2 : 1, bodies, nbodies);
     }
     for (int k = 0; k < m->nstateeqns; ++k)
         state_element(&p, d, k);
