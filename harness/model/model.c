@@ -4,6 +4,8 @@
 #include <stdlib.h>
 #include <strings.h>
 
+#include "model/expr/expr.h"
+
 int hx_model_marker(const hx_model *m, int id)
 {
     if (m->marker_slot_count == 0)
@@ -205,6 +207,10 @@ void hx_model_free(hx_model *m)
     for (int k = 0; k < m->nexpressions; ++k)
         free(m->expressions[k].text);
     free(m->expressions);
+    for (int k = 0; k < m->nrequests; ++k)
+        for (int j = 0; j < 8; ++j)
+            hx_expr_free(m->requests[k].f[j]);
+    free(m->requests);
     free(m->variables);
     free(m->arrays);
     free(m->stateeqns);
