@@ -432,7 +432,7 @@ static void output_only_elements_are_skipped_silently(void **state)
     (void)state;
     char xml[2048];
     snprintf(xml, sizeof xml, HEAD "%s"
-             "<Post_Request id=\"1\" type=\"EXPRESSION\" f2=\"DX(20)\"/>\n"
+             "<Post_Request id=\"1\" type=\"EXPRESSION\" expr2=\"DX(20)\"/>\n"
              "<Post_Graphic id=\"2\" type=\"Sphere\" cm_id=\"20\" radius=\"1\"/>\n"
              "<Param_Simulation sim_type=\"TRANSIENT\"/>\n"
              "<Param_Transient integrator_type=\"VSTIFF_DASPK\"/>\n"
@@ -442,6 +442,7 @@ static void output_only_elements_are_skipped_silently(void **state)
     assert_true(warnings == NULL || warnings[0] == '\0');
     assert_int_equal(m->nwarnings, 0);
     assert_int_equal(m->nunsimulated, 0);
+    assert_int_equal(m->nrequests, 1); /* read, output only (docs/interface.md §7.13) */
     free(warnings);
     hx_model_free(m);
 }

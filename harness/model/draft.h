@@ -49,6 +49,7 @@ typedef struct hx_draft {
     int cap_markers, cap_bodies, cap_joints, cap_couplers, cap_forces, cap_loads, cap_strings;
     int cap_variables, cap_arrays, cap_stateeqns, cap_routines;
     int cap_splines, cap_pinputs, cap_poutputs, cap_expressions;
+    int cap_requests;
     int *marker_slots;    /* open addressing over the markers read so far, by id */
     int nmarker_slots;
     int *body_slots;      /* the same over the bodies */
@@ -91,5 +92,8 @@ int hx_draft_resolve_stateeqns(hx_draft *d);
 /* The routines' pass (routine_elements.c): Motion_Joint's joints, after the
  * joints; 0 or -1. */
 int hx_draft_resolve_routines(hx_draft *d);
+/* The requests' pass (request_elements.c): their markers' indices, their
+ * expressions linked against the model; 0 or -1. */
+int hx_draft_resolve_requests(hx_draft *d);
 
 #endif

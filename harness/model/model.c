@@ -214,6 +214,10 @@ void hx_model_free(hx_model *m)
     for (int k = 0; k < m->nexpressions; ++k)
         free(m->expressions[k].text);
     free(m->expressions);
+    for (int k = 0; k < m->nrequests; ++k)
+        for (int j = 0; j < 8; ++j)
+            hx_expr_free(m->requests[k].f[j]);
+    free(m->requests);
     free(m->variables);
     free(m->arrays);
     free(m->stateeqns);

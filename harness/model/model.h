@@ -237,6 +237,24 @@ typedef struct hx_plant_port {
     int line;
 } hx_plant_port;
 
+/* A request the harness answers itself (docs/interface.md §7.13): eight
+ * values at each output time, the CSV's requestID.1 .. requestID.8 in
+ * Adams' order. DISPLACEMENT and VELOCITY of marker I relative to J in RM's
+ * axes (-1: the ground's origin, the world's axes), or eight expressions
+ * (F1..F8, expr1..expr8; NULL: 0). A REQSUB request is a routine. */
+enum hx_request_kind { HX_REQUEST_DISPLACEMENT, HX_REQUEST_VELOCITY, HX_REQUEST_EXPRESSIONS };
+
+typedef struct hx_request {
+    int id;
+    enum hx_request_kind kind;
+    int marker_ids[3];   /* I, J, RM as written (0: the world) */
+    int markers[3];      /* their indices, -1: the world */
+    struct hx_expr_program *f[8]; /* F1 .. F8, linked against the model; NULL: 0 */
+    char label[32];      /* in messages: "REQUEST/5", "Post_Request 5" */
+    int adams;           /* its components are named F1.. (else expr1..) */
+    int line;
+} hx_request;
+
 /* An expression a dataset gives (FUNCTION=, FX=, ...) that the harness does
  * not evaluate yet, kept as written for the expression engine: the
  * statement, its id, the keyword, the text and where it begins. */
@@ -295,6 +313,8 @@ typedef struct hx_model {
     int npinputs, npoutputs;
     hx_model_expression *expressions; /* those of its unsimulated elements */
     int nexpressions;
+    hx_request *requests;    /* DISPLACEMENT, VELOCITY and expression requests, in the order read */
+    int nrequests;
 } hx_model;
 
 /* Reads a model, MotionSolve XML or an Adams dataset, chosen by the text

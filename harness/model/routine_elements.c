@@ -6,6 +6,7 @@
 #include <strings.h>
 
 #include "model/draft.h"
+#include "model/request_elements.h"
 #include "model/routine_elements.h"
 #include "model/xml_attrs.h"
 
@@ -48,13 +49,20 @@ static int user_type(hx_draft *d, const hx_element_read *e)
     return -1;
 }
 
+/* expr1..expr8 and the markers are read by the forms the harness answers
+ * itself (request_elements.c); with a user routine they have no effect. */
 const hx_attr_spec hx_request_attrs[] = {
-    ID, TEXT("type"), IGNORED("expr1"), IGNORED("expr2"), IGNORED("expr3"), IGNORED("expr4"),
-    IGNORED("expr5"), IGNORED("expr6"), IGNORED("expr7"), IGNORED("expr8"), IGNORED("comment"),
-    IGNORED("title"), USER_CALL, END};
+    ID, TEXT("type"), TEXT("expr1"), TEXT("expr2"), TEXT("expr3"), TEXT("expr4"),
+    TEXT("expr5"), TEXT("expr6"), TEXT("expr7"), TEXT("expr8"), INT("i_marker_id"),
+    INT("j_marker_id"), INT("ref_marker_id"), IGNORED("elem_type"), IGNORED("jflag"),
+    IGNORED("comment"), IGNORED("title"), USER_CALL, END};
 
 void hx_build_request(hx_draft *d, const hx_element_read *e)
 {
+    if (!hx_attr_present(e, "usrsub_param_string") && !hx_attr_present(e, "usrsub_dll_name")) {
+        hx_build_builtin_request(d, e);
+        return;
+    }
     if (user_type(d, e) == 0)
         push_routine(d, e, HX_ROUTINE_REQUEST);
 }

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "model/adm/translate.h"
+#include "model/request_elements.h"
 
 /* The numbers of a keyword as text, "a b c ...", or the x y pairs of two. */
 static char *number_text(const hx_adm_value *a, const hx_adm_value *b)
@@ -136,6 +137,75 @@ int hx_adm_build_diff(hx_adm_reader *r, hx_adm_entry *e)
     return hx_adm_element_build(r, e, &el, NULL);
 }
 
+/* A REQUEST the harness answers itself (docs/interface.md §9.6): DISPLACEMENT
+ * or VELOCITY of I relative to J in RM's axes, or F1..F8, through the one
+ * builder of requests (model/request_elements.h). */
+static int build_builtin_request(hx_adm_reader *r, hx_adm_entry *e)
+{
+    static const char *const types[4] = {"DISPLACEMENT", "VELOCITY", "ACCELERATION", "FORCE"};
+    static const char *const fs[8] = {"F1", "F2", "F3", "F4", "F5", "F6", "F7", "F8"};
+    static const char *const markers[3] = {"I", "J", "RM"};
+    int type = -1, nf = 0;
+    for (int k = 0; k < 4; ++k)
+        if (hx_adm_has(e, types[k])) {
+            if (type >= 0)
+                return hx_adm_fail(r, e, e->line, "%s and %s: give one of DISPLACEMENT, VELOCITY,"
+                                   " F1..F8 or FUNCTION=USER(...)", types[type], types[k]);
+            type = k;
+        }
+    for (int k = 0; k < 8; ++k)
+        nf += hx_adm_has(e, fs[k]);
+    if (type == 2)
+        return hx_adm_fail(r, e, e->line, "ACCELERATION: accelerations of markers are not answered"
+                           " by the harness (its measures are displacements and velocities,"
+                           " docs/interface.md §8.5): give DISPLACEMENT, VELOCITY or F1..F8");
+    if (type == 3)
+        return hx_adm_fail(r, e, e->line, "FORCE: the forces at a marker are not answered by the"
+                           " harness (it keeps no joint reactions and no per-marker sum of the"
+                           " applied forces): give DISPLACEMENT, VELOCITY or F1..F8");
+    if (type >= 0 && nf > 0)
+        return hx_adm_fail(r, e, e->line, "%s with F1..F8: give one or the other", types[type]);
+    if (type < 0 && nf == 0)
+        return hx_adm_fail(r, e, e->line, "nothing to output: give DISPLACEMENT, VELOCITY, F1..F8"
+                           " or FUNCTION=USER(...)");
+    int ids[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k) {
+        const hx_adm_value *v = hx_adm_get(e, markers[k]);
+        if (!v->present)
+            continue;
+        if (type < 0)
+            return hx_adm_fail(r, e, v->line, "%s (column %d) with F1..F8: the expressions name"
+                               " their markers themselves", markers[k], v->column);
+        ids[k] = (int)v->numbers[0];
+        if ((ids[k] != 0 || k == 0) && hx_adm_find(r, "MARKER", ids[k]) == NULL)
+            return hx_adm_fail(r, e, v->value_lines[0], "%s=%d (column %d) names no MARKER"
+                               " statement", markers[k], ids[k], v->value_columns[0]);
+    }
+    if (type >= 0 && !hx_adm_has(e, "I"))
+        return hx_adm_fail(r, e, e->line, "%s needs I= (the marker measured)", types[type]);
+    char label[48];
+    hx_adm_label(e, label, sizeof label);
+    hx_request *q = hx_draft_request(r->d, e->id, type == 0   ? HX_REQUEST_DISPLACEMENT
+                                                  : type == 1 ? HX_REQUEST_VELOCITY
+                                                              : HX_REQUEST_EXPRESSIONS,
+                                     ids, e->line, label);
+    if (q == NULL)
+        return -1;
+    q->adams = 1;
+    for (int k = 0; k < 8; ++k) {
+        const hx_adm_value *v = hx_adm_get(e, fs[k]);
+        if (!v->present)
+            continue;
+        if (hx_adm_is_user(v->texts[0]))
+            return hx_adm_fail(r, e, v->value_lines[0], "%s (column %d): USER(...) is a REQUEST's"
+                               " FUNCTION (REQSUB), not a component", fs[k], v->value_columns[0]);
+        const hx_expr_source where = {r->path, v->value_lines[0], v->value_columns[0]};
+        if (hx_draft_request_expression(r->d, q, k, v->texts[0], &where, label) != 0)
+            return -1;
+    }
+    return 0;
+}
+
 int hx_adm_build_request(hx_adm_reader *r, hx_adm_entry *e)
 {
     const char *function = hx_adm_text(e, "FUNCTION");
@@ -143,11 +213,18 @@ int hx_adm_build_request(hx_adm_reader *r, hx_adm_entry *e)
         if (hx_adm_has(e, "ROUTINE"))
             return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
                                " FUNCTION=USER(...)");
-        return 0; /* output only: what it measures is not the harness's output */
+        return build_builtin_request(r, e);
     }
     if (!hx_adm_is_user(function))
         return hx_adm_fail(r, e, hx_adm_get(e, "FUNCTION")->line, "FUNCTION=%s: a REQUEST's"
                            " FUNCTION is USER(...) (REQSUB); measures are F1=..\\F8=..", function);
+    static const char *const others[] = {"DISPLACEMENT", "VELOCITY", "ACCELERATION", "FORCE",
+                                         "I", "J", "RM", "F1", "F2", "F3", "F4", "F5", "F6",
+                                         "F7", "F8"};
+    for (size_t k = 0; k < sizeof others / sizeof others[0]; ++k)
+        if (hx_adm_has(e, others[k]))
+            return hx_adm_fail(r, e, hx_adm_get(e, others[k])->line, "%s with FUNCTION=USER(...):"
+                               " REQSUB computes the eight values", others[k]);
     hx_adm_element el;
     hx_adm_element_init(&el, "Post_Request");
     hx_adm_element_text(&el, "type", "USERSUB");

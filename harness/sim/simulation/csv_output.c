@@ -2,7 +2,9 @@
 #include <stdlib.h>
 
 #include "sim/dynamics/constraints.h"
+#include "sim/dynamics/failure.h"
 #include "sim/dynamics/routines.h"
+#include "sim/simulation/requests.h"
 #include "sim/simulation/simulation.h"
 #include "sim/dynamics/stateeqns.h"
 #include "frames/measures.h"
@@ -40,6 +42,7 @@ void hx_csv_header(FILE *f, const hx_dynamics *d)
     }
     hx_stateeqns_csv_header(f, d);
     hx_routines_csv_header(f, d);
+    hx_requests_csv_header(f, m);
     fprintf(f, ",energy,dissipated,phi,phidot\n");
 }
 
@@ -88,6 +91,9 @@ int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
     hx_stateeqns_csv_row(f, d, dd, y);
     if (hx_routines_csv_row(f, d, dd, y) != 0)
         return -1;
+    hx_message msg;
+    if (hx_requests_csv_row(f, &dd->frames, &msg) != 0)
+        return hx_dynamics_fail(dd, "%s", msg.text);
     fprintf(f, ",%.15g,%.15g,%.3g,%.3g\n", energy->total, hx_dissipated(energy, energy0), phi,
             phidot);
     return 0;

@@ -103,7 +103,11 @@ static int simulate(run_context *rc, double *y, double *y_end)
     const int analytic = bdf && opt->integration.jacobian == HX_JACOBIAN_ANALYTIC;
     if (opt->csv != NULL) {
         hx_csv_header(opt->csv, d);
-        hx_csv_row(opt->csv, d, dd, 0.0, y, &result->energy0, &result->energy0);
+        if (hx_csv_row(opt->csv, d, dd, 0.0, y, &result->energy0, &result->energy0) != 0) {
+            snprintf(result->message, sizeof result->message, "%s", dd->message);
+            result->status = HX_INTEGRATION_FAILED;
+            return -1;
+        }
     }
     if (opt->observer != NULL)
         opt->observer(opt->observer_ctx, d, dd, 0.0, y);

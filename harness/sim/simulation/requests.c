@@ -1,0 +1,105 @@
+/*
+ * The requests' values and columns (requests.h): DISPLACEMENT and VELOCITY
+ * from the harness's own measures (frames/measure_functions.h), the
+ * expressions by the evaluator (expr/evaluate.h), the variables they read
+ * by the host's own answers (host/state_inputs.h).
+ */
+#include <stdlib.h>
+
+#include "expr/evaluate.h"
+#include "frames/measure_functions.h"
+#include "host/state_inputs.h"
+#include "sim/simulation/requests.h"
+
+/* One measure of the frames named, in the order of its arguments. */
+static double measure(hx_measure which, const hx_frame *a, const hx_frame *b, const hx_frame *c,
+                      const hx_frame *e)
+{
+    const hx_frame *const f[4] = {a, b, c, e};
+    return hx_measure_value(which, f);
+}
+
+/* Adams' order (docs/interface.md §7.13): F1 the translational magnitude,
+ * F2..F4 its x, y, z in RM's axes, F5 the rotational magnitude (none for a
+ * displacement: 0), F6..F8 the rotational part. */
+static void marker_values(const hx_frames *fr, const hx_request *q, double out[8])
+{
+    hx_frame scratch[3];
+    const hx_frame *i = hx_frames_marker(fr, q->markers[0], &scratch[0]);
+    const hx_frame *j = hx_frames_marker(fr, q->markers[1], &scratch[1]);
+    const hx_frame *rm = hx_frames_marker(fr, q->markers[2], &scratch[2]);
+    const hx_frame *world = &hx_world_frame;
+    if (q->kind == HX_REQUEST_DISPLACEMENT) {
+        out[0] = measure(HX_MEASURE_DM, i, j, world, world);
+        out[1] = measure(HX_MEASURE_DX, i, j, rm, world);
+        out[2] = measure(HX_MEASURE_DY, i, j, rm, world);
+        out[3] = measure(HX_MEASURE_DZ, i, j, rm, world);
+        out[4] = 0.0;
+        out[5] = measure(HX_MEASURE_PSI, i, j, world, world);
+        out[6] = measure(HX_MEASURE_THETA, i, j, world, world);
+        out[7] = measure(HX_MEASURE_PHI, i, j, world, world);
+    } else { /* the time derivatives taken in the ground's frame */
+        out[0] = measure(HX_MEASURE_VM, i, j, world, world);
+        out[1] = measure(HX_MEASURE_VX, i, j, rm, world);
+        out[2] = measure(HX_MEASURE_VY, i, j, rm, world);
+        out[3] = measure(HX_MEASURE_VZ, i, j, rm, world);
+        out[4] = measure(HX_MEASURE_WM, i, j, world, world);
+        out[5] = measure(HX_MEASURE_WX, i, j, rm, world);
+        out[6] = measure(HX_MEASURE_WY, i, j, rm, world);
+        out[7] = measure(HX_MEASURE_WZ, i, j, rm, world);
+    }
+}
+
+int hx_requests_values(const hx_frames *fr, int k, const double *variables, double out[8],
+                       hx_message *msg)
+{
+    const hx_request *q = &fr->model->requests[k];
+    if (q->kind != HX_REQUEST_EXPRESSIONS) {
+        marker_values(fr, q, out);
+        return 0;
+    }
+    const hx_expr_context c = {fr, variables};
+    for (int j = 0; j < 8; ++j) {
+        out[j] = 0.0;
+        hx_expr_fault fault;
+        if (q->f[j] != NULL && hx_expr_eval(q->f[j], &c, &out[j], &fault) != 0) {
+            char element[48];
+            snprintf(element, sizeof element, "%s %s%d", q->label, q->adams ? "F" : "expr", j + 1);
+            return hx_expr_fail(msg, q->f[j], &fault, element);
+        }
+    }
+    return 0;
+}
+
+void hx_requests_csv_header(FILE *f, const hx_model *m)
+{
+    for (int k = 0; k < m->nrequests; ++k)
+        for (int j = 1; j <= 8; ++j)
+            fprintf(f, ",request%d.%d", m->requests[k].id, j);
+}
+
+int hx_requests_csv_row(FILE *f, const hx_frames *fr, hx_message *msg)
+{
+    const hx_model *m = fr->model;
+    if (m->nrequests == 0)
+        return 0;
+    double *variables = NULL;
+    if (m->nvariables > 0) {
+        if ((variables = malloc(sizeof(double) * (size_t)m->nvariables)) == NULL)
+            return hx_fail(msg, "out of memory");
+        for (int k = 0; k < m->nvariables; ++k)
+            if (hx_variable_value(fr, &m->variables[k], &variables[k]) != 0) {
+                free(variables);
+                return hx_fail(msg, "Reference_Variable %d: not answered", m->variables[k].id);
+            }
+    }
+    int status = 0;
+    for (int k = 0; k < m->nrequests && status == 0; ++k) {
+        double values[8];
+        status = hx_requests_values(fr, k, variables, values, msg);
+        for (int j = 0; j < 8 && status == 0; ++j)
+            fprintf(f, ",%.15g", values[j]);
+    }
+    free(variables);
+    return status;
+}
