@@ -110,7 +110,7 @@ Transform joint_frame(const oracle::Joint &j, const Transform &I, const Transfor
     return J;
 }
 
-MobilizedBody add_mobilizer(Built &b, const std::string &type, MobilizedBody &parent,
+MobilizedBody add_mobilizer(const std::string &type, MobilizedBody &parent,
                             const Transform &X_PF, const Body::Rigid &body, const Transform &X_BM)
 {
     if (type == "REVOLUTE")
@@ -123,7 +123,6 @@ MobilizedBody add_mobilizer(Built &b, const std::string &type, MobilizedBody &pa
         return MobilizedBody::Cylinder(parent, X_PF, body, X_BM);
     if (type == "TRANSLATIONAL")
         return MobilizedBody::Slider(parent, X_PF, body, X_BM);
-    (void)b;
     fail("no mobilizer for " + type);
     return parent;
 }
@@ -160,7 +159,7 @@ void build(Built &b, const oracle::Model &m)
         const Body::Rigid info(MassProperties(c.mass, Vec3(0),
                                               Inertia(c.ixx, c.iyy, c.izz, -c.ixy, -c.ixz, -c.iyz)));
         const Transform W = joint_frame(j, I, J, has_j);
-        MobilizedBody mob = add_mobilizer(b, j.type, b.body_of[parent], ~b.frame0[parent] * W, info,
+        MobilizedBody mob = add_mobilizer(j.type, b.body_of[parent], ~b.frame0[parent] * W, info,
                                           ~b.frame0[child] * W);
         b.body_of[child] = mob;
         b.mobilizer_of[j.id] = mob;
