@@ -14,6 +14,8 @@
 #             gfortran                   Fortran user libraries the harness hosts
 #             gcc-mingw-w64-x86-64       usrsub.dll, cross-compiled
 #             wine64 wine                Wine, to run it (windows.sh)
+#             libsimbody-dev g++         Simbody, the independent engine that
+#                                        judges the joints (tests/oracle/, C++)
 #   windows main, cmocka and the two above: usrsub.dll against the Linux
 #           library (windows.sh)
 #   fuzz    the libFuzzer build (fuzz.sh): the build's packages, clang and
@@ -26,7 +28,7 @@ windows_packages="gcc-mingw-w64-x86-64 wine64 wine"
 packages_of() {
   case "$1" in
     main) echo cmake gcc make libc6-dev libexpat1-dev libsundials-dev libsuitesparse-dev gnuplot-nox ;;
-    test) echo "$(packages_of main) libcmocka-dev clang libclang-rt-14-dev valgrind gfortran $windows_packages" ;;
+    test) echo "$(packages_of main) libcmocka-dev clang libclang-rt-14-dev valgrind gfortran $windows_packages libsimbody-dev g++" ;;
     windows) echo "$(packages_of main) libcmocka-dev $windows_packages" ;;
     fuzz) echo cmake gcc make libc6-dev libexpat1-dev libsundials-dev libsuitesparse-dev clang libclang-rt-14-dev ;;
     *) return 1 ;;

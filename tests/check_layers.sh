@@ -3,8 +3,11 @@
 # "Layers"), so that the two cannot part:
 #  - the table of layers between the document's layers markers gives each
 #    layer's folder and the layers it uses; every row's folder exists, every
-#    source file lies in one row's folder, and a file includes only headers of
-#    its own layer or of the layers its layer uses, directly or through them;
+#    source file of usrsub/ and harness/ lies in one row's folder, and a file
+#    includes only headers of its own layer or of the layers its layer uses,
+#    directly or through them (tests/, fuzz/ and scripts/ are no layer: they
+#    use the layers from outside);
+#  - C++ only in tests/oracle/ (the Simbody oracle; the project is C);
 #  - every backticked folder name in the document (`sim/ode/`) exists;
 #  - every harness header's guard is HX_<PATH>_H;
 #  - the harness shares no code with the library it verifies: of the
@@ -102,6 +105,10 @@ check_includes() { # tree prefix (usrsub or harness), how includes are written
 check_includes usrsub
 check_includes harness
 
+# ---- C++ only in the Simbody oracle (tests/oracle/, Simbody's language) ----
+cxx=$(git ls-files '*.cpp' '*.cc' '*.cxx' '*.hpp' | grep -v '^tests/oracle/' || true)
+[ -z "$cxx" ] || complain "C++ outside tests/oracle/ (the project is C; only the Simbody oracle is C++): $cxx"
+
 # ---- every backticked folder the document names exists ----
 while read -r name; do
   found=0
@@ -123,7 +130,7 @@ globals=$(git ls-files 'harness/*.c' | xargs grep -nE '^(static )?(_Thread_local
           | grep -v 'const ' | grep -v '^harness/host/abi.c:.*bound;$')
 [ -z "$globals" ] || complain "harness globals besides the ABI's binding: $globals"
 
-refs=$(git grep -nE '\.\./shared|INTERFACE\.md|seed 00[0-9]' -- '*.c' '*.h' '*.txt' 'CMakeLists.txt' '*.sh' \
+refs=$(git grep -nE '\.\./shared|INTERFACE\.md|seed 00[0-9]' -- '*.c' '*.h' '*.cpp' '*.txt' 'CMakeLists.txt' '*.sh' \
        ':!tests/check_layers.sh' || true)
 [ -z "$refs" ] || complain "references to files outside the repository: $refs"
 
@@ -147,7 +154,7 @@ exists() { # path, naming file
 while IFS=: read -r f path; do
   exists "$path" "$f" || complain "$f names $path, which does not exist"
 done < <(git grep -oE '(^|[^A-Za-z0-9_./%$*{<-])[A-Za-z0-9_.-]+(/[A-Za-z0-9_.-]+)+\.(c|h|md|sh|xml|txt|cmake|def|gbs|gbi|gfj|tbl|csv|png|f)\b' \
-           -- '*.c' '*.h' '*.sh' '*.md' 'CMakeLists.txt' '*.cmake' '*.xml' '*.f' \
+           -- '*.c' '*.h' '*.cpp' '*.sh' '*.md' 'CMakeLists.txt' '*.cmake' '*.xml' '*.f' \
          | sed -E 's/^([^:]+):[^A-Za-z0-9_.-]?/\1:/' | sort -u)
 
 if [ "$failures" -ne 0 ]; then
