@@ -317,6 +317,12 @@ double jacobian_against_differences(const hx_dynamics *d, double t, const double
     double worst = 0.0;
     int worst_r = 0, worst_c = 0;
     *outside = nm.outside;
+    double largest = 0.0; /* of the whole matrix: a row that is rounding noise (a
+                           * slider's vertical acceleration, zero but for the rounding of
+                           * the multipliers' solve, 1e-9 by differences) is measured
+                           * against 1e-5 of it, not against its own noise */
+    for (size_t k = 0; k < (size_t)n * (size_t)n; ++k)
+        largest = fmax(largest, fabs(D[k]));
     for (int r = 0; r < n; ++r) {
         if (r == d->load_work || r == d->element_work)
             continue;
@@ -325,7 +331,7 @@ double jacobian_against_differences(const hx_dynamics *d, double t, const double
             row = fmax(row, fabs(D[r + (size_t)n * c]));
         /* a row the differences find all zero (a driven joint's) must be
          * zero in the matrix too: measured absolutely */
-        const double scale = row > 0.0 ? row : 1.0;
+        const double scale = row > 0.0 ? fmax(row, 1e-5 * largest) : 1.0;
         for (int c = 0; c < n; ++c) {
             const size_t at = r + (size_t)n * c;
             if (!in[at] && fabs(D[at]) > 1e-9 * row) {

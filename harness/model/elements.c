@@ -278,27 +278,20 @@ static void build_joint(hx_draft *d, const hx_element_read *e)
         hx_draft_fail(d, e->line, "Constraint_Joint %d is defined twice", e->id);
         return;
     }
-    const char *type = hx_attr_text(e, "type");
-    enum hx_joint_type jt;
-    if (strcasecmp(type, "REVOLUTE") == 0)
-        jt = HX_JOINT_REVOLUTE;
-    else if (strcasecmp(type, "TRANSLATIONAL") == 0)
-        jt = HX_JOINT_TRANSLATIONAL;
-    else {
-        hx_draft_fail(d, e->line, "Constraint_Joint %d: type \"%s\" is not supported by the"
-                      " harness (REVOLUTE or TRANSLATIONAL, J marker on ground)", e->id, type);
+    const int jt = hx_joint_type_from_name(hx_attr_text(e, "type"));
+    if (jt < 0) {
+        hx_draft_fail(d, e->line, "Constraint_Joint %d: type \"%s\" is not one the harness"
+                      " simulates (FIXED, REVOLUTE, TRANSLATIONAL, CYLINDRICAL, SPHERICAL,"
+                      " UNIVERSAL, HOOKE or PLANAR)", e->id, hx_attr_text(e, "type"));
         return;
     }
     hx_joint *j = hx_draft_push(d, (void **)&m->joints, &m->njoints, &d->cap_joints, sizeof *j,
                                 (void **)&d->rjoints, sizeof(raw_refs));
     if (j == NULL)
         return;
-    j->id = e->id;
-    j->type = jt;
-    j->line = e->line;
-    raw_refs *refs = &d->rjoints[m->njoints - 1];
-    refs->ids[0] = hx_attr_int(e, "i_marker_id", 0);
-    refs->ids[1] = hx_attr_int(e, "j_marker_id", 0);
+    j->id = e->id, j->type = (enum hx_joint_type)jt, j->line = e->line;
+    int *ids = d->rjoints[m->njoints - 1].ids;
+    ids[0] = hx_attr_int(e, "i_marker_id", 0), ids[1] = hx_attr_int(e, "j_marker_id", 0);
 }
 
 static const hx_attr_spec coupler_attrs[] = {

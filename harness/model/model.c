@@ -36,6 +36,24 @@ int hx_model_joint(const hx_model *m, int id)
     return -1;
 }
 
+/* MotionSolve's names, in enum hx_joint_type's order; HOOKE is Adams's too */
+static const char *const joint_type_names[] = {"REVOLUTE", "TRANSLATIONAL", "FIXED",
+                                               "CYLINDRICAL", "SPHERICAL", "UNIVERSAL",
+                                               "HOOKE", "PLANAR"};
+
+const char *hx_joint_type_name(enum hx_joint_type type)
+{
+    return joint_type_names[type];
+}
+
+int hx_joint_type_from_name(const char *name)
+{
+    for (int k = 0; k < (int)(sizeof joint_type_names / sizeof joint_type_names[0]); ++k)
+        if (strcasecmp(name, joint_type_names[k]) == 0)
+            return k;
+    return -1;
+}
+
 const char *hx_model_string(const hx_model *m, int id)
 {
     for (int k = 0; k < m->nstrings; ++k)

@@ -52,16 +52,23 @@ typedef struct hx_body {
     int cg_marker;       /* index; the body frame is this marker's frame */
     double p0[3], R0[9]; /* world pose of the body frame at t = 0 */
     double v0[3], w0[3]; /* initial velocity of the cm and angular velocity, world */
-    int joint;           /* index of the joint to ground, or -1 (free body) */
+    int joint;           /* index of its reduced joint to ground, or -1 (free body) */
     int line;
 } hx_body;
 
-enum hx_joint_type { HX_JOINT_REVOLUTE, HX_JOINT_TRANSLATIONAL };
+enum hx_joint_type {
+    HX_JOINT_REVOLUTE, HX_JOINT_TRANSLATIONAL, HX_JOINT_FIXED, HX_JOINT_CYLINDRICAL,
+    HX_JOINT_SPHERICAL, HX_JOINT_UNIVERSAL, HX_JOINT_HOOKE, HX_JOINT_PLANAR
+};
 
 typedef struct hx_joint {
     int id;
     enum hx_joint_type type;
-    int i_marker, j_marker; /* indices; J is on ground */
+    int i_marker, j_marker; /* indices; either may be on ground, not both */
+    int reduced;            /* a revolute or translational joint, J on ground, that is its I
+                             * body's only joint: the body moves in the joint's coordinate
+                             * (body.joint); otherwise the joint's equations constrain free
+                             * bodies (docs/architecture.md, the layout of y) */
     int line;
 } hx_joint;
 
@@ -331,6 +338,10 @@ void hx_model_free(hx_model *m);
 int hx_model_marker(const hx_model *m, int id);
 int hx_model_body(const hx_model *m, int id);
 int hx_model_joint(const hx_model *m, int id);
+/* A joint type's MotionSolve name ("REVOLUTE", ...), and the type of a name
+ * (any case; -1 when none: docs/interface.md §7.4). */
+const char *hx_joint_type_name(enum hx_joint_type type);
+int hx_joint_type_from_name(const char *name);
 const char *hx_model_string(const hx_model *m, int id);
 /* Index of the force element written ID, vector:ID or field:ID (the prefix
  * needed when a Force_Vector_TwoBody and a Force_Field share ID); -1 and msg

@@ -163,63 +163,75 @@ static int resolve_bodies(hx_draft *r)
     return 0;
 }
 
+/* A reduced joint (model.h): its I body moves in the joint's coordinate, so
+ * its markers must already satisfy the joint. */
+static int check_reduced(hx_draft *r, const hx_joint *j)
+{
+    const hx_model *m = r->m;
+    const hx_marker *mi = &m->markers[j->i_marker], *mj = &m->markers[j->j_marker];
+    const double zi[3] = {mi->R0[2], mi->R0[5], mi->R0[8]};
+    const double zj[3] = {mj->R0[2], mj->R0[5], mj->R0[8]};
+    const char *what = NULL;
+    double d[3], off[3];
+    v3_sub(d, mi->pos0, mj->pos0);
+    v3_cross(off, d, zj);
+    const double xi[3] = {mi->R0[0], mi->R0[3], mi->R0[6]}, xj[3] = {mj->R0[0], mj->R0[3], mj->R0[6]};
+    if (v3_dot(zi, zj) < 1.0 - 1e-9)
+        what = "the z axes of the I and J markers must be aligned";
+    else if (j->type == HX_JOINT_REVOLUTE && v3_norm(d) > 1e-9 * (1.0 + v3_norm(mj->pos0)))
+        what = "a revolute joint's I and J markers must coincide";
+    else if (j->type == HX_JOINT_TRANSLATIONAL && v3_norm(off) > 1e-9 * (1.0 + v3_norm(mj->pos0)))
+        what = "a translational joint's I marker must lie on the J marker's z axis";
+    else if (j->type == HX_JOINT_TRANSLATIONAL && v3_dot(xi, xj) < 1.0 - 1e-9)
+        what = "a translational joint's I and J markers must have the same orientation";
+    if (what != NULL) {
+        hx_draft_fail(r, j->line, "Constraint_Joint %d: %s", j->id, what);
+        return -1;
+    }
+    return 0;
+}
+
+/* Joints between any two bodies; a revolute or translational joint from a
+ * body to ground that is the body's only joint is reduced (model.h). */
 static int resolve_joints(hx_draft *r)
 {
     hx_model *m = r->m;
-    for (int k = 0; k < m->njoints; ++k) {
+    int *count = calloc((size_t)m->nbodies + 1, sizeof *count);
+    if (count == NULL) {
+        hx_draft_fail(r, 0, "out of memory");
+        return -1;
+    }
+    int status = 0;
+    for (int k = 0; k < m->njoints && status == 0; ++k) {
         hx_joint *j = &m->joints[k];
         const raw_refs *refs = &r->rjoints[k];
-        if (marker_ref(r, refs->ids[0], j->line, "Constraint_Joint", j->id, "i_marker_id",
-                       &j->i_marker) != 0 ||
-            marker_ref(r, refs->ids[1], j->line, "Constraint_Joint", j->id, "j_marker_id",
-                       &j->j_marker) != 0)
-            return -1;
-        const hx_marker *mi = &m->markers[j->i_marker], *mj = &m->markers[j->j_marker];
-        if (!m->bodies[mj->body].is_ground || m->bodies[mi->body].is_ground) {
-            hx_draft_fail(r, j->line, "Constraint_Joint %d: the harness supports joints whose J marker is"
-                 " on ground and I marker on a rigid body", j->id);
-            return -1;
+        status = marker_ref(r, refs->ids[0], j->line, "Constraint_Joint", j->id, "i_marker_id",
+                            &j->i_marker) != 0 ||
+                 marker_ref(r, refs->ids[1], j->line, "Constraint_Joint", j->id, "j_marker_id",
+                            &j->j_marker) != 0;
+        if (status != 0)
+            break;
+        const int bi = m->markers[j->i_marker].body, bj = m->markers[j->j_marker].body;
+        if (bi == bj || (m->bodies[bi].is_ground && m->bodies[bj].is_ground)) {
+            hx_draft_fail(r, j->line, "Constraint_Joint %d: its I and J markers (%d, %d) are on the"
+                          " same body%s", j->id, refs->ids[0], refs->ids[1],
+                          bi == bj ? "" : " (ground)");
+            status = 1;
         }
-        hx_body *b = &m->bodies[mi->body];
-        if (b->joint >= 0) {
-            hx_draft_fail(r, j->line, "Constraint_Joint %d: Body_Rigid %d already has joint %d", j->id,
-                 b->id, m->joints[b->joint].id);
-            return -1;
-        }
-        const double zi[3] = {mi->R0[2], mi->R0[5], mi->R0[8]};
-        const double zj[3] = {mj->R0[2], mj->R0[5], mj->R0[8]};
-        if (v3_dot(zi, zj) < 1.0 - 1e-9) {
-            hx_draft_fail(r, j->line, "Constraint_Joint %d: the z axes of the I and J markers must be"
-                 " aligned", j->id);
-            return -1;
-        }
-        if (j->type == HX_JOINT_REVOLUTE) {
-            double d[3];
-            v3_sub(d, mi->pos0, mj->pos0);
-            if (v3_norm(d) > 1e-9 * (1.0 + v3_norm(mj->pos0))) {
-                hx_draft_fail(r, j->line, "Constraint_Joint %d: a revolute joint's I and J markers must"
-                     " coincide", j->id);
-                return -1;
-            }
-        } else {
-            double d[3], off[3];
-            v3_sub(d, mi->pos0, mj->pos0);
-            v3_cross(off, d, zj);
-            if (v3_norm(off) > 1e-9 * (1.0 + v3_norm(mj->pos0))) {
-                hx_draft_fail(r, j->line, "Constraint_Joint %d: a translational joint's I marker must lie"
-                     " on the J marker's z axis", j->id);
-                return -1;
-            }
-            double xi[3] = {mi->R0[0], mi->R0[3], mi->R0[6]}, xj[3] = {mj->R0[0], mj->R0[3], mj->R0[6]};
-            if (v3_dot(xi, xj) < 1.0 - 1e-9) {
-                hx_draft_fail(r, j->line, "Constraint_Joint %d: a translational joint's I and J markers"
-                     " must have the same orientation", j->id);
-                return -1;
-            }
-        }
-        b->joint = k;
+        count[bi]++, count[bj]++;
     }
-    return 0;
+    for (int k = 0; k < m->njoints && status == 0; ++k) {
+        hx_joint *j = &m->joints[k];
+        const int bi = m->markers[j->i_marker].body, bj = m->markers[j->j_marker].body;
+        j->reduced = (j->type == HX_JOINT_REVOLUTE || j->type == HX_JOINT_TRANSLATIONAL) &&
+                     m->bodies[bj].is_ground && !m->bodies[bi].is_ground && count[bi] == 1;
+        if (j->reduced) {
+            status = check_reduced(r, j);
+            m->bodies[bi].joint = k;
+        }
+    }
+    free(count);
+    return status != 0 ? -1 : 0;
 }
 
 static int resolve_couplers(hx_draft *r)
@@ -233,6 +245,12 @@ static int resolve_couplers(hx_draft *r)
             if (c->joint[i] < 0) {
                 hx_draft_fail(r, c->line, "Constraint_Coupler %d: joint%d_id %d is not a Constraint_Joint",
                      c->id, i + 1, refs->ids[i]);
+                return -1;
+            }
+            if (!m->joints[c->joint[i]].reduced) {
+                hx_draft_fail(r, c->line, "Constraint_Coupler %d: joint %d is not a body's only"
+                              " joint to ground: the harness couples the coordinates of such"
+                              " joints only", c->id, refs->ids[i]);
                 return -1;
             }
             const char expected = m->joints[c->joint[i]].type == HX_JOINT_REVOLUTE ? 'R' : 'T';

@@ -145,6 +145,11 @@ int hx_draft_resolve_routines(hx_draft *d)
                           " harness reads (REVOLUTE or TRANSLATIONAL)", r->id, r->joint_id);
             return -1;
         }
+        if (!m->joints[joint].reduced) {
+            hx_draft_fail(d, r->line, "Motion_Joint %d: joint %d is not a body's only joint to"
+                          " ground: the harness drives such joints only", r->id, r->joint_id);
+            return -1;
+        }
         const char freedom = m->joints[joint].type == HX_JOINT_TRANSLATIONAL ? 'T' : 'R';
         if (r->motion_type != 0 && r->motion_type != freedom) {
             hx_draft_fail(d, r->line, "Motion_Joint %d: motion_type %c on joint %d, a %s joint",

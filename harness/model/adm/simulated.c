@@ -1,10 +1,10 @@
 /*
  * Which statements the harness simulates (docs/interface.md §9.8), decided
- * once every statement is read and before any is built: a joint the model
- * holds (REVOLUTE or TRANSLATIONAL, its J marker on ground, its I on a part
- * no other joint holds, no initial conditions), forces given by function
- * expressions (docs/interface.md §8) or by a user routine, a VARIABLE by one
- * measure or a user routine; then what names an
+ * once every statement is read and before any is built: a joint of a type the
+ * model holds (FIXED, REVOLUTE, TRANSLATIONAL, CYLINDRICAL, SPHERICAL,
+ * UNIVERSAL, HOOKE, PLANAR; between any parts; no initial conditions), forces
+ * given by function expressions (docs/interface.md §8) or by a user routine,
+ * a VARIABLE by one measure or a user routine; then what names an
  * element that is not simulated (the COUPLER or MOTION of such a joint, the
  * ARRAY of such a VARIABLE, the FORCE_STATEEQN of such an ARRAY). Each is
  * named in a warning with its line and why, and counted as the XML reader
@@ -61,27 +61,13 @@ static const char *why_not(hx_adm_reader *r, const hx_adm_entry *e, char *why, s
         const char *type = hx_adm_joint_type(e);
         if (type == NULL)
             return why; /* the builder's error: no type */
-        if (strcmp(type, "REVOLUTE") != 0 && strcmp(type, "TRANSLATIONAL") != 0)
+        if (hx_joint_type_from_name(type) < 0)
             snprintf(why, size, "a %s joint, which the harness does not simulate yet (it"
-                     " simulates REVOLUTE and TRANSLATIONAL joints whose J marker is on ground)",
-                     type);
-        else if (!on_ground(r, e, "J") || on_ground(r, e, "I"))
-            snprintf(why, size, "its J marker is not on ground (or its I marker is): the harness"
-                     " simulates joints of a part to ground only, yet");
+                     " simulates FIXED, REVOLUTE, TRANSLATIONAL, CYLINDRICAL, SPHERICAL,"
+                     " UNIVERSAL, HOOKE and PLANAR joints)", type);
         else if (hx_adm_has(e, "IC") || hx_adm_has(e, "ICTRAN") || hx_adm_has(e, "ICROT"))
             snprintf(why, size, "initial conditions on a joint (IC, ICTRAN, ICROT), which the"
                      " harness does not apply");
-        else {
-            const hx_adm_entry *part = part_of(r, e, "I");
-            for (const hx_adm_entry *o = r->entries; o < e; ++o)
-                if (is(o, "JOINT") && !o->unsimulated && part_of(r, o, "I") == part) {
-                    char label[48];
-                    snprintf(why, size, "a second joint on PART/%d (the first: %s), which the"
-                             " harness does not simulate yet", part->id,
-                             hx_adm_label(o, label, sizeof label));
-                    break;
-                }
-        }
     } else if (is(e, "MOTION")) {
         if (!hx_adm_has(e, "JOINT"))
             snprintf(why, size, "a motion between markers (I, J), which the harness does not"

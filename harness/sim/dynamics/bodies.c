@@ -202,15 +202,6 @@ void hx_bodies_accelerations(const hx_dynamics *d, const hx_dynamics_data *dd, c
     }
 }
 
-double hx_bodies_inverse_mass(const hx_dynamics *d, int u_index)
-{
-    for (int k = 0; k < d->m->nbodies; ++k)
-        if ((d->dof[k].kind == HX_DOF_REVOLUTE || d->dof[k].kind == HX_DOF_SLIDER) &&
-            d->dof[k].u == u_index)
-            return 1.0 / d->dof[k].mass;
-    return 0.0; /* free-body velocities are not coupled */
-}
-
 void hx_bodies_advance_positions(const hx_dynamics *d, double *y, double h)
 {
     const double *u = y + d->nq;

@@ -23,8 +23,6 @@ void hx_bodies_accelerations(const hx_dynamics *d, const hx_dynamics_data *dd, c
 double hx_bodies_apply_load(const hx_dynamics *d, hx_dynamics_data *dd, int body,
                             const double point[3], const double F[3], const double T[3],
                             double sign);
-/* 1/mass of a jointed body's velocity u_index (0 for free bodies). */
-double hx_bodies_inverse_mass(const hx_dynamics *d, int u_index);
 /* q <- q + h N(q) u (quaternions by their exact increment), for symplectic Euler. */
 void hx_bodies_advance_positions(const hx_dynamics *d, double *y, double h);
 

@@ -1,10 +1,17 @@
 /*
- * The couplers in the equations of motion (constraints.h): one Lagrange
- * multiplier each, with COUSUB/COUXX for the constraint and its Jacobian and
- * COUXX2 for the velocity-squared term; after a step, positions and
- * velocities are projected back onto phi = 0 and its rate.
+ * The constraint system (constraints.h): the couplers' rows (COUSUB/COUXX for
+ * the constraint and its Jacobian, COUXX2 for the velocity-squared term) and
+ * the joints' equations (joint_equations.c) in one G, the multipliers from
+ * G M^-1 G^T lambda = rhs, and after a step positions then velocities
+ * projected back onto phi = 0 and G u = 0 (docs/architecture.md, the
+ * constraint system). Each row of G touches at most 3 blocks of velocities (a
+ * coupler's three joints, a joint's two free bodies): it keeps their 12
+ * values, and M is block-diagonal per body, so M^-1 G^T has the same blocks.
+ * The order of every sum is that of the dense products over u it replaces,
+ * so the couplers' runs are unchanged.
  */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "host/invoke.h"
@@ -13,19 +20,132 @@
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/failure.h"
+#include "sim/dynamics/joint_equations.h"
 
 #define PROJECTION_ITERATIONS 25
-#define PHI_TOLERANCE 1e-13
+#define PHI_TOLERANCE 1e-13 /* relative to the row's scale (constraints.h) */
+#define ASSEMBLY_TOLERANCE 1e-8
 
 /* The coupled joints' position/velocity offsets (jointed bodies: q and u agree). */
-static int coupler_joints(const hx_dynamics *d, int k, int u_index[3])
+static int coupler_joints(const hx_dynamics *d, int k, int body[3])
 {
     const hx_coupler *c = &d->m->couplers[k];
-    for (int i = 0; i < c->njoints; ++i) {
-        const int body = d->m->markers[d->m->joints[c->joint[i]].i_marker].body;
-        u_index[i] = d->dof[body].u;
-    }
+    for (int i = 0; i < c->njoints; ++i)
+        body[i] = d->m->markers[d->m->joints[c->joint[i]].i_marker].body;
     return c->njoints;
+}
+
+static void sort_blocks(hx_constraint_row *r)
+{
+    for (int a = 1; a < r->nblocks; ++a)
+        for (int b = a; b > 0 && r->u[b - 1] > r->u[b]; --b) {
+            int t;
+            t = r->u[b], r->u[b] = r->u[b - 1], r->u[b - 1] = t;
+            t = r->width[b], r->width[b] = r->width[b - 1], r->width[b - 1] = t;
+            t = r->slot[b], r->slot[b] = r->slot[b - 1], r->slot[b - 1] = t;
+            t = r->body[b], r->body[b] = r->body[b - 1], r->body[b - 1] = t;
+        }
+}
+
+static void add_block(hx_constraint_row *r, const hx_dynamics *d, int body, int slot)
+{
+    const hx_body_dof *dof = &d->dof[body];
+    if (dof->kind == HX_DOF_GROUND)
+        return;
+    const int n = r->nblocks++;
+    r->body[n] = body, r->u[n] = dof->u, r->slot[n] = slot;
+    r->width[n] = dof->kind == HX_DOF_FREE ? 6 : 1;
+}
+
+/* The model's length: the scale of the joints' translational rows. */
+static double length_scale(const hx_model *m)
+{
+    double L = 1.0;
+    for (int k = 0; k < m->nmarkers; ++k)
+        L = fmax(L, v3_norm(m->markers[k].pos0));
+    return L;
+}
+
+int hx_constraints_init(hx_dynamics *d, hx_message *msg)
+{
+    const hx_model *m = d->m;
+    int n = m->ncouplers;
+    d->joint_row = malloc(sizeof(int) * ((size_t)m->njoints + 1));
+    if (d->joint_row == NULL)
+        return hx_fail(msg, "out of memory");
+    for (int k = 0; k < m->njoints; ++k) {
+        d->joint_row[k] = m->joints[k].reduced ? -1 : n;
+        n += m->joints[k].reduced ? 0 : hx_joint_equations_count(m->joints[k].type);
+    }
+    d->nrows = n;
+    d->rows = calloc((size_t)n + 1, sizeof *d->rows);
+    d->u_body = malloc(sizeof(int) * ((size_t)d->nu + 1));
+    if (d->rows == NULL || d->u_body == NULL)
+        return hx_fail(msg, "out of memory");
+    for (int b = 0; b < m->nbodies; ++b)
+        if (d->dof[b].kind != HX_DOF_GROUND)
+            for (int c = 0; c < (d->dof[b].kind == HX_DOF_FREE ? 6 : 1); ++c)
+                d->u_body[d->dof[b].u + c] = b;
+    for (int k = 0; k < m->ncouplers; ++k) {
+        int body[3];
+        const int nj = coupler_joints(d, k, body);
+        d->rows[k].scale = 1.0;
+        for (int i = 0; i < nj; ++i)
+            add_block(&d->rows[k], d, body[i], i);
+        sort_blocks(&d->rows[k]);
+    }
+    const double L = length_scale(m);
+    for (int k = 0; k < m->njoints; ++k) {
+        if (d->joint_row[k] < 0)
+            continue;
+        const hx_joint *j = &m->joints[k];
+        const int count = hx_joint_equations_count(j->type);
+        for (int e = 0; e < count; ++e) {
+            hx_constraint_row *r = &d->rows[d->joint_row[k] + e];
+            add_block(r, d, m->markers[j->i_marker].body, 0);
+            add_block(r, d, m->markers[j->j_marker].body, 6);
+            sort_blocks(r);
+            r->scale = 1.0;
+        }
+        /* the rows of positions: point (the first 3) and dot-2 (joint_equations.c) */
+        const int first_dot2 = j->type == HX_JOINT_TRANSLATIONAL ? 3
+                               : j->type == HX_JOINT_CYLINDRICAL || j->type == HX_JOINT_PLANAR ? 2
+                                                                                                : count;
+        const int points = j->type == HX_JOINT_FIXED || j->type == HX_JOINT_REVOLUTE ||
+                           j->type == HX_JOINT_SPHERICAL || j->type == HX_JOINT_UNIVERSAL ||
+                           j->type == HX_JOINT_HOOKE;
+        for (int e = 0; e < count; ++e)
+            if ((points && e < 3) || e >= first_dot2)
+                d->rows[d->joint_row[k] + e].scale = L;
+    }
+    return 0;
+}
+
+void hx_constraints_free(hx_dynamics *d)
+{
+    free(d->joint_row);
+    free(d->rows);
+    free(d->u_body);
+}
+
+size_t hx_constraints_work_size(const hx_dynamics *d)
+{
+    const size_t n = (size_t)d->nrows, nu = (size_t)d->nu;
+    return 24 * n + n * n + 4 * n + 2 * nu + 16; /* G, W, A, phi, gamma, step, spare; x, y */
+}
+
+/* The work's parts (dd->constraint_work). */
+typedef struct work {
+    double *G, *W, *A, *phi, *gamma, *step, *x;
+} work;
+
+static work parts(const hx_dynamics *d, hx_dynamics_data *dd)
+{
+    const size_t n = (size_t)d->nrows;
+    work w;
+    w.G = dd->constraint_work, w.W = w.G + 12 * n, w.A = w.W + 12 * n, w.phi = w.A + n * n;
+    w.gamma = w.phi + n, w.step = w.gamma + n, w.x = w.step + 2 * n;
+    return w;
 }
 
 /* phi, dphi/dM and the velocity term qdot^T H qdot of coupler k. */
@@ -33,12 +153,12 @@ static int coupler_terms(const hx_dynamics *d, hx_dynamics_data *dd, int k, doub
                          const double *y, double *phi, double grad[3], double *gamma)
 {
     const hx_coupler *c = &d->m->couplers[k];
-    int ui[3];
-    const int n = coupler_joints(d, k, ui);
+    int body[3];
+    const int n = coupler_joints(d, k, body);
     double disp[3], rate[3];
     for (int i = 0; i < n; ++i) {
-        disp[i] = y[d->dof[d->m->markers[d->m->joints[c->joint[i]].i_marker].body].q];
-        rate[i] = y[d->nq + ui[i]];
+        disp[i] = y[d->dof[body[i]].q];
+        rate[i] = y[d->nq + d->dof[body[i]].u];
     }
     hx_binding *b = d->coupler_binding[k];
     if (b == NULL) {
@@ -70,65 +190,190 @@ static int coupler_terms(const hx_dynamics *d, hx_dynamics_data *dd, int k, doub
     return n;
 }
 
-/* Builds G (nc x nu) and, when gamma is not NULL, the velocity terms. */
+/* A body's frame at y; the ground's from the model. */
+static void body_frame(const hx_dynamics *d, int b, const double *y, hx_frame *f)
+{
+    if (d->dof[b].kind == HX_DOF_GROUND) {
+        const hx_body *g = &d->m->bodies[b];
+        v3_copy(f->p, g->p0), m3_copy(f->R, g->R0);
+        v3_set(f->v, 0, 0, 0), v3_set(f->w, 0, 0, 0);
+        return;
+    }
+    hx_bodies_frame(d, b, y, f);
+}
+
+/* A joint's rows: G's world twists into the bodies' velocities (omega in body axes). */
+static void joint_terms(const hx_dynamics *d, int k, const double *y, double *G, double *phi,
+                        double *gamma)
+{
+    const hx_joint *j = &d->m->joints[k];
+    const hx_marker *mi = &d->m->markers[j->i_marker], *mj = &d->m->markers[j->j_marker];
+    hx_frame fi, fj;
+    body_frame(d, mi->body, y, &fi);
+    body_frame(d, mj->body, y, &fj);
+    const hx_joint_side si = {&fi, mi->r_local, mi->R_local}, sj = {&fj, mj->r_local, mj->R_local};
+    hx_joint_equations_eval(j->type, &si, &sj, phi, G, gamma);
+    const int count = hx_joint_equations_count(j->type);
+    for (int e = 0; e < count; ++e) {
+        double *g = G + 12 * e, body[3];
+        m3_tapply(body, fi.R, g + 3);
+        v3_copy(g + 3, body);
+        m3_tapply(body, fj.R, g + 9);
+        v3_copy(g + 9, body);
+    }
+}
+
+/* G (12 values a row), phi and, when gamma is not NULL, the right-hand sides
+ * of G udot = gamma. */
 static int constraint_jacobian(const hx_dynamics *d, hx_dynamics_data *dd, double t,
                                const double *y, double *G, double *phi, double *gamma)
 {
-    const int nc = d->m->ncouplers, nu = d->nu;
-    memset(G, 0, sizeof(double) * (size_t)(nc * nu));
+    const int nc = d->m->ncouplers;
+    memset(G, 0, sizeof(double) * 12 * (size_t)d->nrows);
     for (int k = 0; k < nc; ++k) {
-        double grad[3];
-        int ui[3];
-        if (coupler_terms(d, dd, k, t, y, &phi[k], grad, gamma ? &gamma[k] : NULL) < 0)
+        double grad[3], term = 0.0;
+        if (coupler_terms(d, dd, k, t, y, &phi[k], grad, gamma ? &term : NULL) < 0)
             return -1;
-        const int n = coupler_joints(d, k, ui);
-        for (int i = 0; i < n; ++i)
-            G[k * nu + ui[i]] += grad[i];
+        for (int i = 0; i < d->m->couplers[k].njoints; ++i)
+            G[12 * k + i] = grad[i];
+        if (gamma != NULL)
+            gamma[k] = -term; /* phi_ddot = G udot + qdot^T H qdot */
+    }
+    for (int k = 0; k < d->m->njoints; ++k) {
+        const int r = d->joint_row[k];
+        if (r >= 0)
+            joint_terms(d, k, y, G + 12 * r, phi + r, gamma ? gamma + r : NULL);
     }
     return 0;
 }
 
-/* A = G M^-1 G^T */
-static void weighted_gram(const hx_dynamics *d, const double *G, const double *minv, double *A)
+/* out = M^-1 in over one body's block of velocities. */
+static void inverse_mass(const hx_dynamics *d, int body, const double *in, double *out)
 {
-    const int nc = d->m->ncouplers, nu = d->nu;
-    for (int i = 0; i < nc; ++i)
-        for (int j = 0; j < nc; ++j) {
+    const hx_body_dof *dof = &d->dof[body];
+    const double minv = 1.0 / dof->mass;
+    if (dof->kind != HX_DOF_FREE) {
+        out[0] = in[0] * minv;
+        return;
+    }
+    for (int c = 0; c < 3; ++c)
+        out[c] = in[c] * minv;
+    m3_apply(out + 3, dof->inertia_inv, in + 3);
+}
+
+/* W = M^-1 G^T row by row, then A = G M^-1 G^T. */
+static void weighted_gram(const hx_dynamics *d, const double *G, double *W, double *A)
+{
+    const int n = d->nrows;
+    for (int i = 0; i < n; ++i) {
+        const hx_constraint_row *r = &d->rows[i];
+        for (int b = 0; b < r->nblocks; ++b)
+            inverse_mass(d, r->body[b], G + 12 * i + r->slot[b], W + 12 * i + r->slot[b]);
+    }
+    for (int i = 0; i < n; ++i) {
+        const hx_constraint_row *ri = &d->rows[i];
+        for (int j = 0; j < n; ++j) {
+            const hx_constraint_row *rj = &d->rows[j];
             double s = 0.0;
-            for (int k = 0; k < nu; ++k)
-                s += G[i * nu + k] * minv[k] * G[j * nu + k];
-            A[i * nc + j] = s;
+            for (int a = 0; a < ri->nblocks; ++a)
+                for (int b = 0; b < rj->nblocks; ++b)
+                    if (ri->u[a] == rj->u[b])
+                        for (int c = 0; c < ri->width[a]; ++c)
+                            s += W[12 * i + ri->slot[a] + c] * G[12 * j + rj->slot[b] + c];
+            A[i * n + j] = s;
         }
+    }
+}
+
+/* start + G_i . v over u */
+static double row_dot(const hx_dynamics *d, const double *G, int i, const double *v,
+                      double start)
+{
+    const hx_constraint_row *r = &d->rows[i];
+    double s = start;
+    for (int b = 0; b < r->nblocks; ++b)
+        for (int c = 0; c < r->width[b]; ++c)
+            s += G[12 * i + r->slot[b] + c] * v[r->u[b] + c];
+    return s;
+}
+
+/* x = G^T z over u (zero where no row reaches) */
+static void transpose_apply(const hx_dynamics *d, const double *G, const double *z, double *x)
+{
+    memset(x, 0, sizeof(double) * (size_t)d->nu);
+    for (int i = 0; i < d->nrows; ++i) {
+        const hx_constraint_row *r = &d->rows[i];
+        for (int b = 0; b < r->nblocks; ++b)
+            for (int c = 0; c < r->width[b]; ++c)
+                x[r->u[b] + c] += G[12 * i + r->slot[b] + c] * z[i];
+    }
 }
 
 int hx_constraints_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
                          double *udot)
 {
-    const int nc = d->m->ncouplers;
-    if (nc == 0)
+    const int n = d->nrows;
+    if (n == 0)
         return 0;
-    /* M qdd = ucf (Q + G^T lambda), G qdd = -gamma:
-     * (G M^-1 G^T) lambda = -gamma/ucf - G qdd_free/ucf with qdd_free = ucf M^-1 Q. */
-    double *G = dd->constraint_work, *A = G + nc * d->nu, *minv = A + nc * nc, *phi = minv + d->nu,
-           *gamma = phi + nc;
-    if (constraint_jacobian(d, dd, t, y, G, phi, gamma) != 0)
+    /* M udot = ucf (Q + G^T lambda), G udot = gamma:
+     * (G M^-1 G^T) lambda = (gamma - G udot_free) / ucf with udot_free = ucf M^-1 Q. */
+    work w = parts(d, dd);
+    if (constraint_jacobian(d, dd, t, y, w.G, w.phi, w.gamma) != 0)
         return -1;
-    for (int k = 0; k < d->nu; ++k)
-        minv[k] = hx_bodies_inverse_mass(d, k);
-    weighted_gram(d, G, minv, A);
-    for (int i = 0; i < nc; ++i) {
-        double s = gamma[i];
-        for (int k = 0; k < d->nu; ++k)
-            s += G[i * d->nu + k] * udot[k];
-        dd->lambda[i] = -s / d->ucf;
+    weighted_gram(d, w.G, w.W, w.A);
+    for (int i = 0; i < n; ++i)
+        dd->lambda[i] = -row_dot(d, w.G, i, udot, -w.gamma[i]) / d->ucf;
+    if (hx_solve(n, w.A, dd->lambda) != 0)
+        return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g (redundant"
+                                " or degenerate joints or couplers)", t);
+    for (int i = 0; i < n; ++i) {
+        const hx_constraint_row *r = &d->rows[i];
+        for (int b = 0; b < r->nblocks; ++b) {
+            const double *g = w.G + 12 * i + r->slot[b], *wi = w.W + 12 * i + r->slot[b];
+            if (r->width[b] == 1)
+                udot[r->u[b]] += d->ucf * (1.0 / d->dof[r->body[b]].mass) * g[0] * dd->lambda[i];
+            else
+                for (int c = 0; c < 6; ++c)
+                    udot[r->u[b] + c] += d->ucf * wi[c] * dd->lambda[i];
+        }
     }
-    if (hx_solve(nc, A, dd->lambda) != 0)
-        return hx_dynamics_fail(dd, "the couplers' constraint Jacobian is singular at t = %g (redundant"
-                        " or degenerate couplers)", t);
-    for (int i = 0; i < nc; ++i)
-        for (int k = 0; k < d->nu; ++k)
-            udot[k] += d->ucf * minv[k] * G[i * d->nu + k] * dd->lambda[i];
     return 0;
+}
+
+/* The largest |phi_i| / scale_i. */
+static double scaled_error(const hx_dynamics *d, const double *phi)
+{
+    double e = 0.0;
+    for (int i = 0; i < d->nrows; ++i)
+        e = fmax(e, fabs(phi[i]) / d->rows[i].scale);
+    return e;
+}
+
+/* y's positions moved by -M^-1 x (x over u): joint coordinates, centres and
+ * the quaternions by their body-axis increment. */
+static void move_positions(const hx_dynamics *d, const double *x, double *y)
+{
+    for (int b = 0; b < d->m->nbodies; ++b) {
+        const hx_body_dof *dof = &d->dof[b];
+        if (dof->kind == HX_DOF_REVOLUTE || dof->kind == HX_DOF_SLIDER) {
+            y[dof->q] -= (1.0 / dof->mass) * x[dof->u];
+            continue;
+        }
+        if (dof->kind != HX_DOF_FREE)
+            continue;
+        double dx[6], *quat = y + dof->q + 3, next[4];
+        inverse_mass(d, b, x + dof->u, dx);
+        for (int c = 0; c < 3; ++c)
+            y[dof->q + c] -= dx[c];
+        const double angle = v3_norm(dx + 3);
+        if (angle == 0.0)
+            continue;
+        const double s = -sin(0.5 * angle) / angle;
+        const double inc[4] = {cos(0.5 * angle), s * dx[3], s * dx[4], s * dx[5]};
+        quat_mul(next, quat, inc);
+        memcpy(quat, next, sizeof next);
+        quat_normalize(quat);
+    }
 }
 
 int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t, double *y)
@@ -136,49 +381,47 @@ int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t,
     for (int k = 0; k < d->m->nbodies; ++k)
         if (d->dof[k].kind == HX_DOF_FREE)
             quat_normalize(y + d->dof[k].q + 3);
-    const int nc = d->m->ncouplers, nu = d->nu;
-    if (nc == 0)
+    const int n = d->nrows;
+    if (n == 0)
         return 0;
-    double *G = dd->constraint_work, *A = G + nc * nu, *minv = A + nc * nc, *phi = minv + nu,
-           *step = phi + nc;
-    for (int k = 0; k < nu; ++k)
-        minv[k] = hx_bodies_inverse_mass(d, k);
+    work w = parts(d, dd);
     /* positions: Newton on phi(q) = 0 with the mass-weighted least-change step */
+    double err;
     for (int it = 0;; ++it) {
-        if (constraint_jacobian(d, dd, t, y, G, phi, NULL) != 0)
+        if (constraint_jacobian(d, dd, t, y, w.G, w.phi, NULL) != 0)
             return -1;
-        const double err = hx_max_abs(phi, nc);
+        err = scaled_error(d, w.phi);
         if (err <= PHI_TOLERANCE || it == PROJECTION_ITERATIONS)
             break;
-        weighted_gram(d, G, minv, A);
-        memcpy(step, phi, sizeof(double) * (size_t)nc);
-        if (hx_solve(nc, A, step) != 0)
-            return hx_dynamics_fail(dd, "the couplers' constraint Jacobian is singular at t = %g", t);
-        for (int b = 0; b < d->m->nbodies; ++b) {
-            const hx_body_dof *dof = &d->dof[b];
-            if (dof->kind != HX_DOF_REVOLUTE && dof->kind != HX_DOF_SLIDER)
-                continue;
-            double s = 0.0;
-            for (int i = 0; i < nc; ++i)
-                s += G[i * nu + dof->u] * step[i];
-            y[dof->q] -= minv[dof->u] * s;
-        }
+        weighted_gram(d, w.G, w.W, w.A);
+        memcpy(w.step, w.phi, sizeof(double) * (size_t)n);
+        if (hx_solve(n, w.A, w.step) != 0)
+            return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
+        transpose_apply(d, w.G, w.step, w.x);
+        move_positions(d, w.x, y);
     }
+    if (err > ASSEMBLY_TOLERANCE)
+        return hx_dynamics_fail(dd, "the joints and couplers cannot be satisfied at t = %g: |phi|"
+                                " %.3g (of the model's size) after %d Newton steps (a joint far"
+                                " from assembled, or joints that lock each other)", t, err,
+                                PROJECTION_ITERATIONS);
     /* velocities: remove the component that violates G u = 0 */
-    weighted_gram(d, G, minv, A);
-    for (int i = 0; i < nc; ++i) {
-        double s = 0.0;
-        for (int k = 0; k < nu; ++k)
-            s += G[i * nu + k] * y[d->nq + k];
-        step[i] = s;
-    }
-    if (hx_solve(nc, A, step) != 0)
-        return hx_dynamics_fail(dd, "the couplers' constraint Jacobian is singular at t = %g", t);
-    for (int k = 0; k < nu; ++k) {
-        double s = 0.0;
-        for (int i = 0; i < nc; ++i)
-            s += G[i * nu + k] * step[i];
-        y[d->nq + k] -= minv[k] * s;
+    weighted_gram(d, w.G, w.W, w.A);
+    for (int i = 0; i < n; ++i)
+        w.step[i] = row_dot(d, w.G, i, y + d->nq, 0.0);
+    if (hx_solve(n, w.A, w.step) != 0)
+        return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
+    transpose_apply(d, w.G, w.step, w.x);
+    for (int b = 0; b < d->m->nbodies; ++b) {
+        const hx_body_dof *dof = &d->dof[b];
+        if (dof->kind == HX_DOF_REVOLUTE || dof->kind == HX_DOF_SLIDER) {
+            y[d->nq + dof->u] -= (1.0 / dof->mass) * w.x[dof->u];
+        } else if (dof->kind == HX_DOF_FREE) {
+            double du[6];
+            inverse_mass(d, b, w.x + dof->u, du);
+            for (int c = 0; c < 6; ++c)
+                y[d->nq + dof->u + c] -= du[c];
+        }
     }
     double phi_max, phidot_max;
     if (hx_constraints_residuals(d, dd, t, y, &phi_max, &phidot_max) != 0)
@@ -192,20 +435,21 @@ int hx_constraints_residuals(const hx_dynamics *d, hx_dynamics_data *dd, double 
                              const double *y, double *phi_max, double *phidot_max)
 {
     *phi_max = *phidot_max = 0.0;
-    const int nc = d->m->ncouplers, nu = d->nu;
-    if (nc == 0)
+    if (d->nrows == 0)
         return 0;
-    double *G = dd->constraint_work, *phi = G + nc * nu + nc * nc + nu;
-    if (constraint_jacobian(d, dd, t, y, G, phi, NULL) != 0)
+    work w = parts(d, dd);
+    if (constraint_jacobian(d, dd, t, y, w.G, w.phi, NULL) != 0)
         return -1;
-    *phi_max = hx_max_abs(phi, nc);
-    for (int i = 0; i < nc; ++i) {
-        double s = 0.0;
-        for (int k = 0; k < nu; ++k)
-            s += G[i * nu + k] * y[d->nq + k];
-        *phidot_max = fmax(*phidot_max, fabs(s));
-    }
+    *phi_max = hx_max_abs(w.phi, d->nrows);
+    for (int i = 0; i < d->nrows; ++i)
+        *phidot_max = fmax(*phidot_max, fabs(row_dot(d, w.G, i, y + d->nq, 0.0)));
     return 0;
+}
+
+int hx_constraints_rows(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                        double *phi, double *G, double *gamma)
+{
+    return constraint_jacobian(d, dd, t, y, G, phi, gamma);
 }
 
 double hx_constraints_coupler_force(const hx_dynamics *d, hx_dynamics_data *dd, double t,
@@ -217,46 +461,53 @@ double hx_constraints_coupler_force(const hx_dynamics *d, hx_dynamics_data *dd, 
     return grad[joint] * dd->lambda[coupler];
 }
 
-
 int hx_constraints_coupled(const hx_dynamics *d, int *index)
 {
     int count = 0;
-    for (int k = 0; k < d->m->ncouplers; ++k) {
-        int ui[3];
-        const int n = coupler_joints(d, k, ui);
-        for (int i = 0; i < n; ++i) {
-            int seen = 0;
-            for (int j = 0; j < count && !seen; ++j)
-                seen = index[j] == ui[i];
-            if (!seen)
-                index[count++] = ui[i];
-        }
+    for (int i = 0; i < d->nrows; ++i) {
+        const hx_constraint_row *r = &d->rows[i];
+        for (int b = 0; b < r->nblocks; ++b)
+            for (int c = 0; c < r->width[b]; ++c) {
+                int seen = 0;
+                for (int j = 0; j < count && !seen; ++j)
+                    seen = index[j] == r->u[b] + c;
+                if (!seen)
+                    index[count++] = r->u[b] + c;
+            }
     }
     return count;
 }
 
 int hx_constraints_projector(const hx_dynamics *d, hx_dynamics_data *dd, double t,
-                             const double *y, const int *index, int count, double *work,
+                             const double *y, const int *index, int count, double *work_,
                              double *P)
 {
-    const int nc = d->m->ncouplers, nu = d->nu;
-    double *G = dd->constraint_work, *minv = G + nc * nu + nc * nc, *phi = minv + nu;
-    double *A = work, *z = work + nc * nc;
-    if (constraint_jacobian(d, dd, t, y, G, phi, NULL) != 0)
+    const int n = d->nrows;
+    work w = parts(d, dd);
+    double *A = work_, *z = work_ + n * n, *s = w.x, *col = w.x + d->nu;
+    if (constraint_jacobian(d, dd, t, y, w.G, w.phi, NULL) != 0)
         return -1;
-    for (int k = 0; k < nu; ++k)
-        minv[k] = hx_bodies_inverse_mass(d, k);
     for (int j = 0; j < count; ++j) {
-        weighted_gram(d, G, minv, A); /* the solve takes it apart */
-        for (int k = 0; k < nc; ++k)
-            z[k] = G[k * nu + index[j]];
-        if (hx_solve(nc, A, z) != 0)
-            return hx_dynamics_fail(dd, "the couplers' constraint Jacobian is singular at t = %g", t);
+        weighted_gram(d, w.G, w.W, A); /* the solve takes it apart */
+        memset(col, 0, sizeof(double) * (size_t)d->nu);
+        col[index[j]] = 1.0;
+        for (int k = 0; k < n; ++k)
+            z[k] = row_dot(d, w.G, k, col, 0.0);
+        if (hx_solve(n, A, z) != 0)
+            return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
+        transpose_apply(d, w.G, z, s);
         for (int i = 0; i < count; ++i) {
-            double s = 0.0;
-            for (int k = 0; k < nc; ++k)
-                s += G[k * nu + index[i]] * z[k];
-            P[i + count * j] = (i == j ? 1.0 : 0.0) - minv[index[i]] * s;
+            const int u = index[i], b = d->u_body[u];
+            const hx_body_dof *dof = &d->dof[b];
+            double ms;
+            if (dof->kind != HX_DOF_FREE) {
+                ms = (1.0 / dof->mass) * s[u];
+            } else {
+                double block[6];
+                inverse_mass(d, b, s + dof->u, block);
+                ms = block[u - dof->u];
+            }
+            P[i + count * j] = (i == j ? 1.0 : 0.0) - ms;
         }
     }
     return 0;

@@ -1,36 +1,51 @@
 /*
- * The couplers in the equations of motion: one Lagrange multiplier each, with
+ * The constraint system: the couplers (one Lagrange multiplier each, with
  * COUSUB/COUXX for the constraint and its Jacobian and COUXX2 for the
- * velocity-squared term; after a step, positions and velocities are
- * projected back onto phi = 0 and its rate.
+ * velocity-squared term) and the joints between free bodies (their equations
+ * in joint_equations.h) in one G, rows couplers first then joint by joint;
+ * after a step, positions and velocities are projected back onto phi = 0 and
+ * G u = 0 (docs/architecture.md, the constraint system).
  */
 #ifndef HX_SIM_DYNAMICS_CONSTRAINTS_H
 #define HX_SIM_DYNAMICS_CONSTRAINTS_H
 
 #include "sim/dynamics/dynamics.h"
 
-/* The constraints stage: the couplers' multipliers (dd->lambda) into the
+/* The rows of the model (d->rows, d->joint_row); 0 or -1 with msg. */
+int hx_constraints_init(hx_dynamics *d, hx_message *msg);
+void hx_constraints_free(hx_dynamics *d);
+/* The doubles of dd->constraint_work. */
+size_t hx_constraints_work_size(const hx_dynamics *d);
+
+/* phi, G (12 values a row: the blocks of d->rows[i] at their slots; a
+ * free body's omega in body axes) and gamma (G udot = gamma; may be NULL)
+ * at a state: for the tests. 0 or -1 (dd->message). */
+int hx_constraints_rows(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                        double *phi, double *G, double *gamma);
+
+/* The constraints stage: the couplers' multipliers (dd->lambda, a row each) into the
  * accelerations udot (those of the loads alone on entry). */
 int hx_constraints_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
                          double *udot);
 
-/* The velocities (indices into u) the couplers join, each once; returns
+/* The velocities (indices into u) the rows join, each once (a free body's six); returns
  * their count (at most nu). */
 int hx_constraints_coupled(const hx_dynamics *d, int *index);
 
 /* The couplers' share of the accelerations is udot = P udot_free + c(q, u),
  * with P = I - M^-1 G^T (G M^-1 G^T)^-1 G: P over the coupled velocities
  * (index, count, from hx_constraints_coupled), column-major count x count;
- * work holds nc (nc + 1) values. 0, or -1 (dd->message). */
+ * work holds nrows (nrows + 1) values. 0, or -1 (dd->message). */
 int hx_constraints_projector(const hx_dynamics *d, hx_dynamics_data *dd, double t,
                              const double *y, const int *index, int count, double *work,
                              double *P);
 
-/* Normalizes quaternions and projects onto the couplers, the largest
+/* Normalizes quaternions and projects onto the constraints (positions by
+ * Newton, mass-weighted, then velocities); fails when they cannot be met, the largest
  * residuals left kept in dd->max_phi, max_phidot; returns 0 or -1. */
 int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t, double *y);
 
-/* Largest |phi| and |dphi/dt| of the couplers at a state. */
+/* Largest |phi| and |dphi/dt| of the rows at a state. */
 int hx_constraints_residuals(const hx_dynamics *d, hx_dynamics_data *dd, double t,
                              const double *y, double *phi, double *phidot);
 

@@ -47,7 +47,8 @@ static int init_parts(hx_dynamics *d, hx_session *s, hx_message *msg)
     d->world_aligned = calloc((size_t)nf + 1, 1);
     if (!d->dof || !d->coupler_binding || !d->force_binding || !d->world_aligned)
         return hx_fail(msg, "out of memory");
-    if (hx_bodies_init(d, msg) != 0 || hx_stateeqns_init(d, msg) != 0 ||
+    if (hx_bodies_init(d, msg) != 0 || hx_constraints_init(d, msg) != 0 ||
+        hx_stateeqns_init(d, msg) != 0 ||
         hx_routines_init(d, msg) != 0)
         return -1;
     d->load_work = d->diff_offset + d->ndiffs;
@@ -77,6 +78,7 @@ void hx_dynamics_free(hx_dynamics *d)
     free(d->coupler_binding);
     free(d->force_binding);
     free(d->world_aligned);
+    hx_constraints_free(d);
     hx_stateeqns_free(d);
     hx_routines_free(d);
     memset(d, 0, sizeof *d);
@@ -86,8 +88,7 @@ int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message
 {
     memset(dd, 0, sizeof *dd);
     const hx_model *m = d->m;
-    const size_t nb = (size_t)m->nbodies, nc = (size_t)m->ncouplers, nf = (size_t)m->nforces;
-    const size_t nu = (size_t)d->nu;
+    const size_t nb = (size_t)m->nbodies, nf = (size_t)m->nforces, nu = (size_t)d->nu;
     dd->force = calloc(3 * nb + 1, sizeof(double));
     dd->torque = calloc(3 * nb + 1, sizeof(double));
     dd->element_outputs = calloc(6 * nf + 1, sizeof(double));
@@ -95,9 +96,8 @@ int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message
     dd->element_partials = calloc(72 * nf + 1, sizeof(double));
     dd->stateeqn_outputs = calloc(6 * (size_t)m->nstateeqns + 1, sizeof(double));
     dd->free_accelerations = calloc(nu + 1, sizeof(double));
-    dd->lambda = calloc(nc + 1, sizeof(double));
-    /* G (nc x nu), A (nc x nc), several vectors of nu and nc */
-    dd->constraint_work = calloc(nc * nu + nc * nc + 6 * (nu + nc) + 16, sizeof(double));
+    dd->lambda = calloc((size_t)d->nrows + 1, sizeof(double));
+    dd->constraint_work = calloc(hx_constraints_work_size(d), sizeof(double));
     dd->stateeqn_work = malloc(sizeof(double) * (size_t)hx_stateeqns_work_size(d));
     if (!dd->force || !dd->torque || !dd->element_outputs || !dd->element_load ||
         !dd->element_partials || !dd->stateeqn_outputs || !dd->free_accelerations ||
@@ -149,7 +149,7 @@ int hx_dynamics_evaluate(const hx_dynamics *d, hx_dynamics_data *dd, double t, c
         hx_stateeqns_apply(d, dd, y, ydot) != 0)
         return -1;
     hx_bodies_accelerations(d, dd, y, ydot);
-    if (d->m->ncouplers > 0) {
+    if (d->nrows > 0) {
         memcpy(dd->free_accelerations, ydot + d->nq, sizeof(double) * (size_t)d->nu);
         if (hx_constraints_apply(d, dd, t, y, ydot + d->nq) != 0)
             return -1;

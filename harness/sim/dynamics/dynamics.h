@@ -14,14 +14,14 @@
  *                Force_StateEqn elements (their state rates too)  loads.c,
  *                                                    element_forces.c, stateeqns.c
  *   accelerations  the bodies' Newton-Euler accelerations        bodies.c
- *   constraints  the couplers' multipliers                        constraints.c
+ *   constraints  the joints' and couplers' multipliers           constraints.c
  *   routines     Control_Diff rates, driven joints                routines.c
  *
  * Bodies are free (position, unit quaternion, velocity, body-axis angular
- * velocity) or hinged/slid to ground by one joint (the joint coordinate
- * AZ(I,J) or DZ(I,J,J), unwrapped, and its rate). Couplers relate joint
- * coordinates through one Lagrange multiplier each, with projection onto the
- * constraints after a step.
+ * velocity) or hinged/slid to ground by their only joint (the joint coordinate
+ * AZ(I,J) or DZ(I,J,J), unwrapped, and its rate). Every other joint and the
+ * couplers are rows of one constraint system with a Lagrange multiplier each,
+ * with projection onto the constraints after a step (constraints.h).
  *
  * State layout y: [positions (nq) | velocities (nu) | the Force_StateEqn
  * elements' states (nstates, element by element in the model's order) | the
@@ -47,6 +47,15 @@ typedef struct hx_body_dof {
     double inertia[9], inertia_inv[9]; /* free bodies: about the cm, body axes */
 } hx_body_dof;
 
+/* One row of the constraint system G (constraints.c): the blocks of
+ * velocities it touches, in ascending u, and where each block's values sit
+ * among the row's 12. */
+typedef struct hx_constraint_row {
+    int nblocks;
+    int body[3], u[3], width[3], slot[3];
+    double scale; /* phi's size for the projection's tolerance: 1, or the model's length */
+} hx_constraint_row;
+
 /* The dynamics' model: set up once, read only afterwards. */
 typedef struct hx_dynamics {
     hx_session *s;
@@ -58,6 +67,10 @@ typedef struct hx_dynamics {
     int diff_offset, ndiffs;      /* y offset and count of the Control_Diff states */
     int load_work, element_work;  /* y indices of the work done by loads and by elements */
     hx_binding **coupler_binding; /* per coupler; NULL for the built-in form */
+    int nrows;                    /* constraint rows: the couplers', then the joints' */
+    hx_constraint_row *rows;
+    int *joint_row;               /* per joint: its first row, or -1 (a reduced joint) */
+    int *u_body;                  /* per velocity: its body */
     hx_binding **force_binding;   /* per force element */
     hx_binding **routine_binding; /* per routine of the model (model.h) */
     int *driver;                  /* per body: the Motion_Joint routine driving it, or -1 */
@@ -86,9 +99,9 @@ typedef struct hx_dynamics_data {
     /* accelerations */
     double *free_accelerations;   /* nu: the bodies' udot before the couplers act */
     /* constraints */
-    double *lambda;               /* per coupler */
+    double *lambda;               /* per constraint row (the couplers' first) */
     /* the stages' scratch */
-    double *constraint_work;      /* G (nc x nu), G M^-1 G^T (nc x nc), vectors */
+    double *constraint_work;      /* G and M^-1 G^T (12 a row), G M^-1 G^T, vectors */
     double *stateeqn_work;        /* one Force_StateEqn's inputs and its call's copies */
     hx_frames moved;              /* frames with bodies placed elsewhere (element_at.h) */
     /* the first failure (failure.h) */

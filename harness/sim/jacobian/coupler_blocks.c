@@ -1,10 +1,12 @@
 /*
- * The couplers' share of the Newton matrix (newton_matrix.h). The couplers
- * turn the bodies' free accelerations into udot = P udot_free + c(q, u)
- * (constraints.h): the rows of the coupled velocities become P times the
- * rows assembled so far, plus the derivatives of the constraint stage with
- * the free accelerations held, by central differences on the coupled
- * joints' own columns (COUSUB, COUXX and COUXX2 are called there).
+ * The constraints' share of the Newton matrix (newton_matrix.h). The
+ * couplers and the joints between free bodies turn the bodies' free
+ * accelerations into udot = P udot_free + c(q, u) (constraints.h): the rows
+ * of the coupled velocities become P times the rows assembled so far, plus
+ * the derivatives of the constraint stage with the free accelerations held,
+ * by central differences on the coupled bodies' own columns (COUSUB, COUXX
+ * and COUXX2 are called there; a free body's 13 columns). The joints'
+ * blocks by differences are this first part's: exact blocks are to come.
  */
 #include <string.h>
 
@@ -69,13 +71,13 @@ int hx_coupler_blocks(hx_jacobian *jac, double t, const double *y)
         const hx_body_dof *dof = &d->dof[b];
         int coupled = 0;
         for (int i = 0; i < k && !coupled; ++i)
-            coupled = (dof->kind == HX_DOF_REVOLUTE || dof->kind == HX_DOF_SLIDER) &&
-                      jac->coupled[i] == dof->u;
+            coupled = dof->kind != HX_DOF_GROUND && jac->coupled[i] == dof->u;
         if (!coupled)
             continue;
-        const int columns[2] = {dof->q, d->nq + dof->u};
-        for (int j = 0; j < 2; ++j) {
-            const int c = columns[j];
+        /* a jointed body's coordinate and rate; a free body's 7 positions and 6 velocities */
+        const int nq = dof->kind == HX_DOF_FREE ? 7 : 1, nv = dof->kind == HX_DOF_FREE ? 6 : 1;
+        for (int j = 0; j < nq + nv; ++j) {
+            const int c = j < nq ? dof->q + j : d->nq + dof->u + (j - nq);
             const double keep = jac->y[c], h = hx_jacobian_step(jac->y, c);
             jac->y[c] = keep + h;
             int status = stage(jac, t, jac->y, accel, plus);

@@ -19,7 +19,7 @@ int hx_jacobian_init(hx_jacobian *jac, const hx_dynamics *d, hx_message *msg)
         hx_jacobian_free(jac);
         return -1;
     }
-    const int nc = d->m->ncouplers;
+    const int nc = d->nrows;
     jac->y = calloc(3 * (size_t)jac->n + 1, sizeof(double));
     jac->coupled = calloc((size_t)d->nu + 1, sizeof(int));
     jac->load_map = calloc(12 * ((size_t)d->m->nbodies + 1), sizeof(double));

@@ -124,11 +124,11 @@ static void coupled_rows(pairs *p, const hx_jacobian *jac)
             is_col[p->cols[k]] = 1;
     for (int i = 0; i < jac->ncoupled; ++i)
         is_col[d->nq + jac->coupled[i]] = 1;
-    for (int b = 0; b < d->m->nbodies; ++b) /* the coupled joints' coordinates */
+    for (int b = 0; b < d->m->nbodies; ++b) /* the coupled bodies' positions */
         for (int i = 0; i < jac->ncoupled; ++i)
-            if (d->dof[b].kind != HX_DOF_FREE && d->dof[b].kind != HX_DOF_GROUND &&
-                d->dof[b].u == jac->coupled[i])
-                is_col[d->dof[b].q] = 1;
+            if (d->dof[b].kind != HX_DOF_GROUND && d->dof[b].u == jac->coupled[i])
+                for (int c = 0; c < (d->dof[b].kind == HX_DOF_FREE ? 7 : 1); ++c)
+                    is_col[d->dof[b].q + c] = 1;
     for (int c = 0; c < jac->n; ++c)
         if (is_col[c])
             for (int i = 0; i < jac->ncoupled; ++i)

@@ -31,7 +31,7 @@ static int project(void *ctx, double t, double *y)
     run_context *rc = ctx;
     if (hx_constraints_project(rc->d, rc->dd, t, y) != 0)
         return -1;
-    return rc->d->m->ncouplers > 0 ? 1 : 0;
+    return rc->d->nrows > 0 ? 1 : 0;
 }
 
 static void advance(void *ctx, double *y, double h)
@@ -215,7 +215,7 @@ void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_op
     struct rusage usage;
     if (getrusage(RUSAGE_SELF, &usage) == 0)
         fprintf(f, "  peak memory %.1f MB (the whole process)\n", (double)usage.ru_maxrss / 1024.0);
-    if (d->m->ncouplers > 0)
+    if (d->nrows > 0)
         fprintf(f, "  largest constraint residual |phi| %.3g, |dphi/dt| %.3g\n", r->max_phi,
                 r->max_phidot);
     const double scale = r->energy_scale > 0.0 ? r->energy_scale : 1.0;

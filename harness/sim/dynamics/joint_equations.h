@@ -1,0 +1,35 @@
+/*
+ * The equations of a joint between two bodies in Cartesian coordinates
+ * (docs/architecture.md, the constraint system): phi(q) = 0 written between
+ * its I and J markers, their Jacobian G in the bodies' velocities and the
+ * velocity-squared term gamma.
+ *
+ * Sign convention: phi_ddot = G w_dot - gamma, so the accelerations satisfy
+ * G w_dot = gamma (gamma = -(d/dt G) w, Haug's). Here G is written in the
+ * world twists w = [v_I, omega_I, v_J, omega_J] (velocities of the bodies'
+ * centres and their angular velocities, all in world axes): 12 columns a
+ * row; constraints.c turns omega's columns into body axes.
+ */
+#ifndef HX_SIM_DYNAMICS_JOINT_EQUATIONS_H
+#define HX_SIM_DYNAMICS_JOINT_EQUATIONS_H
+
+#include "frames/frames.h"
+
+#define HX_JOINT_MAX_EQUATIONS 6
+
+/* The number of equations of a joint type (6 FIXED ... 3 SPHERICAL, PLANAR). */
+int hx_joint_equations_count(enum hx_joint_type type);
+
+/* One side of a joint: its body's frame (world) and the marker's place and
+ * axes in the body (hx_marker's r_local, R_local). */
+typedef struct hx_joint_side {
+    const hx_frame *body;
+    const double *r_local, *R_local;
+} hx_joint_side;
+
+/* phi (count values), G (count x 12, row-major; may be NULL) and gamma
+ * (count; may be NULL) of a joint of this type at I's and J's frames. */
+void hx_joint_equations_eval(enum hx_joint_type type, const hx_joint_side *i,
+                             const hx_joint_side *j, double *phi, double *G, double *gamma);
+
+#endif
