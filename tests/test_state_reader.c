@@ -323,7 +323,7 @@ static void routines_are_read_with_their_attributes(void **state)
     hx_message msg;
     hx_model *m = read_parts("routines.xml", JOINT
         "<Post_Request id=\"8\"" USERLIB " comment=\"c\"/>\n"
-        "<Post_Request id=\"9\" expr1=\"DX(20,10)\"/>\n" /* an expression: skipped */
+        "<Post_Request id=\"9\" type=\"EXPRESSION\" expr1=\"DX(20,10)\"/>\n" /* the harness's own */
         "<Reference_Variable id=\"5\" type=\"USERSUB\"" USERLIB " usrsub_fnc_name=\"V\"/>\n"
         "<Control_Diff id=\"7\" type=\"USERSUB\" ic=\"0.5\" ic_dot=\"-2\" is_implicit=\"TRUE\""
         USERLIB "/>\n"
@@ -334,6 +334,7 @@ static void routines_are_read_with_their_attributes(void **state)
     if (m == NULL)
         fail_msg("%s", msg.text);
     assert_int_equal(m->nroutines, 4);
+    assert_int_equal(m->nrequests, 1); /* request 9, by expression, is not a routine */
     const int kinds[4] = {HX_ROUTINE_REQUEST, HX_ROUTINE_VARIABLE, HX_ROUTINE_DIFF,
                           HX_ROUTINE_MOTION};
     for (int k = 0; k < 4; ++k) {

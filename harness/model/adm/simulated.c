@@ -37,21 +37,8 @@ static int is(const hx_adm_entry *e, const char *name)
     return strcmp(e->spec->name, name) == 0;
 }
 
-/* The part of a marker named by an ID keyword of e, or NULL. */
-static const hx_adm_entry *part_of(const hx_adm_reader *r, const hx_adm_entry *e, const char *kw)
-{
-    const hx_adm_entry *mk = hx_adm_find(r, "MARKER", hx_adm_ref(e, kw));
-    return mk != NULL ? hx_adm_find(r, "PART", hx_adm_ref(mk, "PART")) : NULL;
-}
-
-static int on_ground(const hx_adm_reader *r, const hx_adm_entry *e, const char *kw)
-{
-    const hx_adm_entry *p = part_of(r, e, kw);
-    return p != NULL && hx_adm_has(p, "GROUND");
-}
-
 /* Why an entry is not simulated on its own ("" when it is). */
-static const char *why_not(hx_adm_reader *r, const hx_adm_entry *e, char *why, size_t size)
+static const char *why_not(const hx_adm_entry *e, char *why, size_t size)
 {
     why[0] = '\0';
     if (e->spec->role == HX_ADM_UNSIMULATED)
@@ -119,7 +106,7 @@ int hx_adm_decide_simulated(hx_adm_reader *r)
         hx_adm_entry *e = &r->entries[k];
         if (e->spec->role != HX_ADM_BUILD && e->spec->role != HX_ADM_UNSIMULATED)
             continue;
-        if (why_not(r, e, why, sizeof why)[0] != '\0')
+        if (why_not(e, why, sizeof why)[0] != '\0')
             hx_adm_unsimulated(r, e, "%s", why);
     }
     for (int changed = 1; changed;) { /* what names those, and what names that, ... */
