@@ -37,15 +37,20 @@ void hx_draft_warn(hx_draft *d, int line, const char *fmt, ...)
     va_end(ap);
 }
 
-static int grow(hx_draft *d, void **array, int count, int capacity, size_t size)
+/* Room for element `count` (realloc only when the array is full, doubling:
+ * a realloc per push copies the whole array under a sanitizer's allocator),
+ * the new element zeroed. */
+static int grow(hx_draft *d, void **array, int count, int capacity, int grown, size_t size)
 {
-    void *p = realloc(*array, size * (size_t)capacity);
-    if (p == NULL) {
-        hx_draft_fail(d, 0, "out of memory");
-        return -1;
+    if (grown != capacity || *array == NULL) {
+        void *p = realloc(*array, size * (size_t)grown);
+        if (p == NULL) {
+            hx_draft_fail(d, 0, "out of memory");
+            return -1;
+        }
+        *array = p;
     }
-    *array = p;
-    memset((char *)p + size * (size_t)count, 0, size);
+    memset((char *)*array + size * (size_t)count, 0, size);
     return 0;
 }
 
@@ -54,8 +59,8 @@ void *hx_draft_push(hx_draft *d, void **array, int *count, int *capacity, size_t
 {
     const int needed = *count + 1;
     const int grown = *count == *capacity ? (*capacity ? 2 * *capacity : 16) : *capacity;
-    if (grow(d, array, *count, grown, size) != 0 ||
-        (raw != NULL && grow(d, raw, *count, grown, raw_size) != 0))
+    if (grow(d, array, *count, *capacity, grown, size) != 0 ||
+        (raw != NULL && grow(d, raw, *count, *capacity, grown, raw_size) != 0))
         return NULL;
     *capacity = grown;
     *count = needed;
