@@ -11,10 +11,6 @@
 
 #include "model/request_elements.h"
 
-/* The linker's words for a function the harness does not answer yet
- * (model/expr/link.c). */
-#define UNANSWERED "is not answered by the harness yet"
-
 hx_request *hx_draft_request(hx_draft *d, int id, enum hx_request_kind kind,
                              const int marker_ids[3], int line, const char *label)
 {
@@ -182,9 +178,10 @@ int hx_draft_resolve_requests(hx_draft *d)
         }
         for (int j = 0; j < 8; ++j) {
             hx_message why;
-            if (q->f[j] == NULL || hx_expr_link(q->f[j], m, &why) == 0)
+            const int linked = q->f[j] != NULL ? hx_expr_link(q->f[j], m, &why) : 0;
+            if (linked == 0)
                 continue;
-            if (strstr(why.text, UNANSWERED) == NULL) {
+            if (linked != HX_EXPR_UNANSWERED) {
                 fail_at_place(d, q, j, &why);
                 return -1;
             }

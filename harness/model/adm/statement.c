@@ -293,6 +293,31 @@ static int parse(hx_adm_source *src, hx_adm_statement *st, hx_message *msg)
     return 0;
 }
 
+/* The next line that holds more than blanks and a comment: 1 with its text
+ * from its first non-blank (*p, *len) and its column (*column); 0 at the end
+ * of the source; -1 (msg) on a NUL byte. */
+static int next_content_line(hx_adm_source *src, const char **p, size_t *len, int *line,
+                             int *column, hx_message *msg)
+{
+    for (;;) {
+        const char *text;
+        size_t n;
+        if (hx_adm_source_line(src, &text, &n, line) != 0)
+            return 0;
+        if (memchr(text, '\0', n) != NULL)
+            return hx_fail(msg, "%s:%d: the line holds a NUL byte (a dataset is text)", src->path,
+                           *line);
+        const size_t cut = content_length(text, n);
+        size_t b = 0;
+        while (b < cut && is_blank(text[b]))
+            ++b;
+        if (b < cut) {
+            *p = text + b, *len = cut - b, *column = (int)b + 1;
+            return 1;
+        }
+    }
+}
+
 int hx_adm_statement_next(hx_adm_source *src, hx_adm_statement *st, hx_message *msg)
 {
     st->nargs = st->nvalues = st->nsegments = 0;
@@ -301,47 +326,30 @@ int hx_adm_statement_next(hx_adm_source *src, hx_adm_statement *st, hx_message *
     st->id = 0;
     const char *p;
     size_t n;
-    int line;
-    for (;;) {
-        if (hx_adm_source_line(src, &p, &n, &line) != 0)
-            return 0;
-        if (memchr(p, '\0', n) != NULL)
-            return hx_fail(msg, "%s:%d: the line holds a NUL byte (a dataset is text)", src->path,
-                           line);
-        const size_t cut = content_length(p, n);
-        size_t b = 0;
-        while (b < cut && is_blank(p[b]))
-            ++b;
-        if (b == cut)
-            continue;
-        if (p[b] == ',')
-            return hx_fail(msg, "%s:%d: a continuation line (it begins with ',') with no statement"
-                           " before it", src->path, line);
-        st->line = line;
-        if (append(st, p + b, cut - b, line, (int)b + 1, msg) != 0)
-            return -1;
-        break;
-    }
-    for (;;) {
+    int line, column;
+    const int first = next_content_line(src, &p, &n, &line, &column, msg);
+    if (first <= 0)
+        return first;
+    if (p[0] == ',')
+        return hx_fail(msg, "%s:%d: a continuation line (it begins with ',') with no statement"
+                       " before it", src->path, line);
+    st->line = line;
+    if (append(st, p, n, line, column, msg) != 0)
+        return -1;
+    for (;;) { /* continuation lines, up to the next line that is not one */
         const size_t pos = src->pos;
         const int next = src->line;
-        if (hx_adm_source_line(src, &p, &n, &line) != 0)
+        const int more = next_content_line(src, &p, &n, &line, &column, msg);
+        if (more < 0)
+            return -1;
+        if (more == 0)
             break;
-        if (memchr(p, '\0', n) != NULL)
-            return hx_fail(msg, "%s:%d: the line holds a NUL byte (a dataset is text)", src->path,
-                           line);
-        const size_t cut = content_length(p, n);
-        size_t b = 0;
-        while (b < cut && is_blank(p[b]))
-            ++b;
-        if (b == cut)
-            continue;
-        if (p[b] != ',') {
+        if (p[0] != ',') {
             src->pos = pos;
             src->line = next;
             break;
         }
-        if (append(st, p + b, cut - b, line, (int)b + 1, msg) != 0)
+        if (append(st, p, n, line, column, msg) != 0)
             return -1;
     }
     return parse(src, st, msg) == 0 ? 1 : -1;

@@ -80,10 +80,11 @@ hx_expr_program *hx_expr_parse(const char *text, size_t length, const hx_expr_so
                                hx_message *msg);
 
 /* Resolves the program's ids against model m (marker, variable, Control_Diff,
- * array, spline and curve ids to indices). Returns 0, or -1 with
- * "file:line:column: what" naming the id that m does not define, or the
- * function the harness does not answer yet. The program then evaluates
- * with frames of m only. */
+ * array, spline and curve ids to indices). Returns 0; -1 with
+ * "file:line:column: what" naming the id that m does not define; or
+ * HX_EXPR_UNANSWERED with the same naming a function the harness parses
+ * but does not answer yet. The program then evaluates with frames of m only. */
+#define HX_EXPR_UNANSWERED (-2)
 int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg);
 
 void hx_expr_free(hx_expr_program *p);

@@ -91,9 +91,11 @@ int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg)
         const hx_expr_op *op = &p->ops[k];
         const hx_expr_place *at = &p->places[k];
         const hx_expr_function *f = hx_expr_function_at(op->function);
-        if (op->code == HX_OP_UNANSWERED)
-            return fail_at(p, msg, at->line, at->column, "%s is not answered by the harness yet:"
-                           " %s", f->name, f->why);
+        if (op->code == HX_OP_UNANSWERED) {
+            fail_at(p, msg, at->line, at->column, "%s is not answered by the harness yet: %s",
+                    f->name, f->why);
+            return HX_EXPR_UNANSWERED;
+        }
         if (op->code != HX_OP_SPLINE && op->code != HX_OP_CURVE)
             continue;
         hx_expr_model_call *c = &p->calls[op->a];
