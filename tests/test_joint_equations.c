@@ -16,10 +16,12 @@
 #include "sim/dynamics/joint_equations.h"
 #include "test_support.h"
 
-#define NTYPES 8
+#define NTYPES 14
 static const enum hx_joint_type types[NTYPES] = {
     HX_JOINT_FIXED,     HX_JOINT_REVOLUTE,  HX_JOINT_TRANSLATIONAL, HX_JOINT_CYLINDRICAL,
-    HX_JOINT_SPHERICAL, HX_JOINT_UNIVERSAL, HX_JOINT_HOOKE,         HX_JOINT_PLANAR};
+    HX_JOINT_SPHERICAL, HX_JOINT_UNIVERSAL, HX_JOINT_HOOKE,         HX_JOINT_PLANAR,
+    HX_JOINT_ATPOINT,   HX_JOINT_INLINE,    HX_JOINT_INPLANE,       HX_JOINT_ORIENTATION,
+    HX_JOINT_PARALLEL_AXES, HX_JOINT_PERPENDICULAR};
 enum { BOTH_MOVE, I_STATIC, J_STATIC };
 
 static double uniform(void)
@@ -95,6 +97,26 @@ static void assembled(enum hx_joint_type type, pair *p)
     case HX_JOINT_PLANAR:
         rotation(Q, 2, a), d[0] = b, d[1] = uniform();
         break;
+    case HX_JOINT_ATPOINT:
+        random_rotation(Q);
+        break;
+    case HX_JOINT_INLINE:
+        random_rotation(Q), d[2] = b;
+        break;
+    case HX_JOINT_INPLANE:
+        random_rotation(Q), d[0] = b, d[1] = uniform();
+        break;
+    case HX_JOINT_ORIENTATION:
+        random_vector(d, 2.0);
+        break;
+    case HX_JOINT_PARALLEL_AXES:
+        rotation(Q, 2, a), random_vector(d, 2.0);
+        break;
+    case HX_JOINT_PERPENDICULAR: /* as UNIVERSAL's turns, the origins anywhere */
+        rotation(A, 2, a), rotation(B, 0, M_PI / 2), m3_mul(Q, A, B);
+        rotation(A, 2, b), m3_mul(B, Q, A), m3_copy(Q, B);
+        random_vector(d, 2.0);
+        break;
     }
     random_rotation(p->fj.R), random_vector(p->fj.p, 2.0);
     random_rotation(p->Ai), random_rotation(p->Aj);
@@ -142,6 +164,24 @@ static void free_motion(enum hx_joint_type type, const pair *p, double w[3], dou
     case HX_JOINT_PLANAR:
         v3_scale(w, zj, a), v3_scale(v, xj, b), v3_axpy(v, uniform(), yj);
         break;
+    case HX_JOINT_ATPOINT:
+        random_vector(w, 1.0);
+        break;
+    case HX_JOINT_INLINE:
+        random_vector(w, 1.0), v3_scale(v, zj, b);
+        break;
+    case HX_JOINT_INPLANE:
+        random_vector(w, 1.0), v3_scale(v, xj, b), v3_axpy(v, uniform(), yj);
+        break;
+    case HX_JOINT_ORIENTATION:
+        random_vector(v, 1.0);
+        break;
+    case HX_JOINT_PARALLEL_AXES:
+        v3_scale(w, zj, a), random_vector(v, 1.0);
+        break;
+    case HX_JOINT_PERPENDICULAR:
+        v3_scale(w, zj, a), v3_axpy(w, b, zi), random_vector(v, 1.0);
+        break;
     }
 }
 
@@ -171,9 +211,32 @@ static double row_times(const double *G, int row, const double *w12)
 static void equation_counts(void **state)
 {
     (void)state;
-    const int expected[NTYPES] = {6, 5, 5, 4, 3, 4, 4, 3};
+    const int expected[NTYPES] = {6, 5, 5, 4, 3, 4, 4, 3, 3, 2, 1, 3, 2, 1};
     for (int k = 0; k < NTYPES; ++k)
         assert_int_equal(hx_joint_equations_count(types[k]), expected[k]);
+}
+
+/* The rows that are lengths (constraints.c scales them by the model's length):
+ * a row is a length when moving I's body by h along a world axis changes it
+ * by about h somewhere, an axes' product when no translation changes it. */
+static void length_rows_are_the_translation_dependent_ones(void **state)
+{
+    (void)state;
+    srand(14);
+    for (int k = 0; k < NTYPES; ++k) {
+        pair p;
+        memset(&p, 0, sizeof p);
+        assembled(types[k], &p);
+        const int n = hx_joint_equations_count(types[k]);
+        double phi[6], G[72];
+        eval(types[k], &p, phi, G, NULL);
+        for (int e = 0; e < n; ++e) {
+            /* G's columns of v_I: zero for an axes' product, a unit vector for a length */
+            const double along = sqrt(G[12 * e] * G[12 * e] + G[12 * e + 1] * G[12 * e + 1] +
+                                      G[12 * e + 2] * G[12 * e + 2]);
+            assert_int_equal(hx_joint_equation_is_length(types[k], e), along > 0.5);
+        }
+    }
 }
 
 static void assembled_states_hold_and_free_motions_are_free(void **state)
@@ -327,6 +390,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(equation_counts),
+        cmocka_unit_test(length_rows_are_the_translation_dependent_ones),
         cmocka_unit_test(assembled_states_hold_and_free_motions_are_free),
         cmocka_unit_test(jacobian_against_differences),
         cmocka_unit_test(gamma_against_second_differences),

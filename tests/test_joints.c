@@ -7,7 +7,8 @@
  * and a spherical joint against their small-angle period; the bundled
  * four-bar and slider-crank against their closed-form kinematics, with
  * DOPRI5 and BDF (constraint residuals, energy); the errors of joints the
- * harness does not run.
+ * harness does not run. The primitives (Constraint_Jprim) are in the first;
+ * their motions in test_joint_primitives.c.
  */
 #include <math.h>
 #include <stdio.h>
@@ -19,9 +20,12 @@
 #include "sim_support.h"
 #include "test_support.h"
 
-static const char *const type_names[8] = {"FIXED", "REVOLUTE", "TRANSLATIONAL", "CYLINDRICAL",
-                                          "SPHERICAL", "UNIVERSAL", "HOOKE", "PLANAR"};
-static const int type_rows[8] = {6, 5, 5, 4, 3, 4, 4, 3};
+#define NTYPES 14
+static const char *const type_names[NTYPES] = {
+    "FIXED",   "REVOLUTE", "TRANSLATIONAL", "CYLINDRICAL", "SPHERICAL",     "UNIVERSAL",
+    "HOOKE",   "PLANAR",   "ATPOINT",       "INLINE",      "INPLANE",       "ORIENTATION",
+    "PARALLEL_AXES", "PERPENDICULAR"};
+static const int type_rows[NTYPES] = {6, 5, 5, 4, 3, 4, 4, 3, 3, 2, 1, 3, 2, 1};
 
 static double uniform(void)
 {
@@ -47,8 +51,10 @@ static const char *two_body_model(const char *type, int where)
              "<Body_Rigid id=\"3\" cg_id=\"30\" mass=\"2\" inertia_xx=\"0.4\" inertia_yy=\"0.3\" inertia_zz=\"0.2\"/>\n"
              "<Reference_Marker id=\"30\" body_id=\"3\" pos_x=\"-0.4\" pos_z=\"0.3\" psi=\"-0.3\" theta=\"0.6\" phi=\"0.2\"/>\n"
              "<Reference_Marker id=\"31\" body_id=\"3\" pos_x=\"0.2\" pos_y=\"0.4\" psi=\"0.9\" theta=\"-0.5\" phi=\"1.2\"/>\n"
-             "<Constraint_Joint id=\"1\" type=\"%s\" i_marker_id=\"%d\" j_marker_id=\"%d\"/>\n"
+             "<Constraint_%s id=\"1\" type=\"%s\" i_marker_id=\"%d\" j_marker_id=\"%d\"/>\n"
              "%s</Model></MotionSolve>\n",
+             hx_joint_type_is_primitive((enum hx_joint_type)hx_joint_type_from_name(type)) ? "Jprim"
+                                                                                      : "Joint",
              type, i, j,
              where == 2 ? "<Constraint_Joint id=\"2\" type=\"SPHERICAL\" i_marker_id=\"31\""
                           " j_marker_id=\"21\"/>\n" : "");
@@ -118,7 +124,7 @@ static void constraint_rows_against_differences(void **state)
 {
     (void)state;
     srand(21);
-    for (int k = 0; k < 8; ++k)
+    for (int k = 0; k < NTYPES; ++k)
         for (int where = 0; where < 3; ++where) {
             opened o;
             open_text(&o, "two_bodies.xml", two_body_model(type_names[k], where));
@@ -371,6 +377,24 @@ static void joints_the_harness_refuses(void **state)
     } cases[] = {
         {"<Constraint_Joint id=\"1\" type=\"SCREW\" i_marker_id=\"21\" j_marker_id=\"10\"/>",
          {"bad.xml:8:", "Constraint_Joint 1", "type \"SCREW\""}},
+        /* a primitive is a Constraint_Jprim's type, not a Constraint_Joint's, and back */
+        {"<Constraint_Joint id=\"1\" type=\"INLINE\" i_marker_id=\"21\" j_marker_id=\"10\"/>",
+         {"bad.xml:8:", "Constraint_Joint 1", "type \"INLINE\""}},
+        {"<Constraint_Jprim id=\"1\" type=\"REVOLUTE\" i_marker_id=\"21\" j_marker_id=\"10\"/>",
+         {"bad.xml:8:", "Constraint_Jprim 1", "type \"REVOLUTE\""}},
+        {"<Constraint_Jprim id=\"1\" type=\"INLINER\" i_marker_id=\"21\" j_marker_id=\"10\"/>",
+         {"bad.xml:8:", "Constraint_Jprim 1", "ATPOINT, INLINE"}},
+        {"<Constraint_Jprim id=\"1\" type=\"INLINE\" i_marker_id=\"21\" j_marker_id=\"20\"/>",
+         {"bad.xml:8:", "Constraint_Jprim 1", "on the same body"}},
+        {"<Constraint_Jprim id=\"1\" type=\"INLINE\" i_marker_id=\"21\" j_marker_id=\"10\"/>"
+         "<Constraint_Jprim id=\"1\" type=\"INPLANE\" i_marker_id=\"21\" j_marker_id=\"10\"/>",
+         {"bad.xml:8:", "Constraint_Jprim 1", "defined twice"}},
+        /* a JPRIM's id is not a joint's: a coupler cannot name it */
+        {"<Constraint_Joint id=\"1\" type=\"REVOLUTE\" i_marker_id=\"21\" j_marker_id=\"10\"/>"
+         "<Constraint_Jprim id=\"2\" type=\"INPLANE\" i_marker_id=\"21\" j_marker_id=\"10\"/>\n"
+         "<Constraint_Coupler id=\"1\" joint1_id=\"2\" freedom_1=\"R\" joint2_id=\"1\" freedom_2=\"R\""
+         " coefficients=\"1,1\"/>",
+         {"bad.xml:9:", "Constraint_Coupler 1", "joint1_id 2 is not a Constraint_Joint"}},
         {"<Constraint_Joint id=\"1\" type=\"REVOLUTE\" i_marker_id=\"10\" j_marker_id=\"10\"/>",
          {"bad.xml:8:", "Constraint_Joint 1", "on the same body"}},
         {"<Constraint_Joint id=\"1\" type=\"SPHERICAL\" i_marker_id=\"21\" j_marker_id=\"10\"/>"

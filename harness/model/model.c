@@ -28,18 +28,41 @@ int hx_model_body(const hx_model *m, int id)
     return -1;
 }
 
-int hx_model_joint(const hx_model *m, int id)
+static int find_joint(const hx_model *m, int id, int primitive)
 {
     for (int k = 0; k < m->njoints; ++k)
-        if (m->joints[k].id == id)
+        if (m->joints[k].id == id && hx_joint_type_is_primitive(m->joints[k].type) == primitive)
             return k;
     return -1;
 }
 
-/* MotionSolve's names, in enum hx_joint_type's order; HOOKE is Adams's too */
+int hx_model_joint(const hx_model *m, int id)
+{
+    return find_joint(m, id, 0);
+}
+
+int hx_model_primitive(const hx_model *m, int id)
+{
+    return find_joint(m, id, 1);
+}
+
+/* MotionSolve's names, in enum hx_joint_type's order; HOOKE is Adams's too;
+ * the primitives' are Constraint_Jprim's types and Adams' JPRIM words */
 static const char *const joint_type_names[] = {"REVOLUTE", "TRANSLATIONAL", "FIXED",
                                                "CYLINDRICAL", "SPHERICAL", "UNIVERSAL",
-                                               "HOOKE", "PLANAR"};
+                                               "HOOKE", "PLANAR", "ATPOINT", "INLINE",
+                                               "INPLANE", "ORIENTATION", "PARALLEL_AXES",
+                                               "PERPENDICULAR"};
+
+int hx_joint_type_is_primitive(enum hx_joint_type type)
+{
+    return type >= HX_JOINT_ATPOINT;
+}
+
+const char *hx_joint_element_name(enum hx_joint_type type)
+{
+    return hx_joint_type_is_primitive(type) ? "Constraint_Jprim" : "Constraint_Joint";
+}
 
 const char *hx_joint_type_name(enum hx_joint_type type)
 {

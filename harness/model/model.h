@@ -58,7 +58,10 @@ typedef struct hx_body {
 
 enum hx_joint_type {
     HX_JOINT_REVOLUTE, HX_JOINT_TRANSLATIONAL, HX_JOINT_FIXED, HX_JOINT_CYLINDRICAL,
-    HX_JOINT_SPHERICAL, HX_JOINT_UNIVERSAL, HX_JOINT_HOOKE, HX_JOINT_PLANAR
+    HX_JOINT_SPHERICAL, HX_JOINT_UNIVERSAL, HX_JOINT_HOOKE, HX_JOINT_PLANAR,
+    /* the joint primitives (Constraint_Jprim, docs/interface.md §7.14): from here on */
+    HX_JOINT_ATPOINT, HX_JOINT_INLINE, HX_JOINT_INPLANE, HX_JOINT_ORIENTATION,
+    HX_JOINT_PARALLEL_AXES, HX_JOINT_PERPENDICULAR
 };
 
 typedef struct hx_joint {
@@ -337,11 +340,18 @@ void hx_model_free(hx_model *m);
 /* Index of the marker with this id, or -1. */
 int hx_model_marker(const hx_model *m, int id);
 int hx_model_body(const hx_model *m, int id);
+/* Index of the Constraint_Joint with this id (not a primitive), or -1; of the
+ * Constraint_Jprim with this id, or -1 (their ids are apart, as Adams' JOINT
+ * and JPRIM are). */
 int hx_model_joint(const hx_model *m, int id);
-/* A joint type's MotionSolve name ("REVOLUTE", ...), and the type of a name
- * (any case; -1 when none: docs/interface.md §7.4). */
+int hx_model_primitive(const hx_model *m, int id);
+/* A joint type's MotionSolve name ("REVOLUTE", ..., "INLINE", ...), and the
+ * type of a name (any case; -1 when none: docs/interface.md §7.14); whether a
+ * type is a primitive (Constraint_Jprim), and the element's name. */
 const char *hx_joint_type_name(enum hx_joint_type type);
 int hx_joint_type_from_name(const char *name);
+int hx_joint_type_is_primitive(enum hx_joint_type type);
+const char *hx_joint_element_name(enum hx_joint_type type);
 const char *hx_model_string(const hx_model *m, int id);
 /* Index of the force element written ID, vector:ID or field:ID (the prefix
  * needed when a Force_Vector_TwoBody and a Force_Field share ID); -1 and msg

@@ -205,16 +205,17 @@ static int resolve_joints(hx_draft *r)
     for (int k = 0; k < m->njoints && status == 0; ++k) {
         hx_joint *j = &m->joints[k];
         const raw_refs *refs = &r->rjoints[k];
-        status = marker_ref(r, refs->ids[0], j->line, "Constraint_Joint", j->id, "i_marker_id",
+        const char *element = hx_joint_element_name(j->type);
+        status = marker_ref(r, refs->ids[0], j->line, element, j->id, "i_marker_id",
                             &j->i_marker) != 0 ||
-                 marker_ref(r, refs->ids[1], j->line, "Constraint_Joint", j->id, "j_marker_id",
+                 marker_ref(r, refs->ids[1], j->line, element, j->id, "j_marker_id",
                             &j->j_marker) != 0;
         if (status != 0)
             break;
         const int bi = m->markers[j->i_marker].body, bj = m->markers[j->j_marker].body;
         if (bi == bj || (m->bodies[bi].is_ground && m->bodies[bj].is_ground)) {
-            hx_draft_fail(r, j->line, "Constraint_Joint %d: its I and J markers (%d, %d) are on the"
-                          " same body%s", j->id, refs->ids[0], refs->ids[1],
+            hx_draft_fail(r, j->line, "%s %d: its I and J markers (%d, %d) are on the same body%s",
+                          element, j->id, refs->ids[0], refs->ids[1],
                           bi == bj ? "" : " (ground)");
             status = 1;
         }

@@ -1,6 +1,6 @@
 /*
- * JOINT, COUPLER and MOTION (docs/interface.md §9.4) into Constraint_Joint,
- * Constraint_Coupler and Motion_Joint. Which joints the harness simulates
+ * JOINT, JPRIM, COUPLER and MOTION (docs/interface.md §9.4) into
+ * Constraint_Joint, Constraint_Jprim, Constraint_Coupler and Motion_Joint. Which joints the harness simulates
  * is decided before (simulated.c): here every entry built is one it holds.
  */
 #include <stdio.h>
@@ -33,6 +33,28 @@ int hx_adm_build_joint(hx_adm_reader *r, hx_adm_entry *e)
     hx_adm_element el;
     hx_adm_element_init(&el, "Constraint_Joint");
     hx_adm_element_text(&el, "type", hx_adm_joint_type(e));
+    hx_adm_element_number(&el, "i_marker_id", hx_adm_ref(e, "I"));
+    hx_adm_element_number(&el, "j_marker_id", hx_adm_ref(e, "J"));
+    return hx_adm_element_build(r, e, &el, NULL);
+}
+
+/* The primitives of JPRIM: the words are Constraint_Jprim's types. */
+static const char *const primitive_types[] = {"ATPOINT", "INLINE", "INPLANE", "ORIENTATION",
+                                              "PARALLEL_AXES", "PERPENDICULAR"};
+
+int hx_adm_build_jprim(hx_adm_reader *r, hx_adm_entry *e)
+{
+    const char *type = NULL;
+    int ntypes = 0;
+    for (size_t k = 0; k < sizeof primitive_types / sizeof primitive_types[0]; ++k)
+        if (hx_adm_has(e, primitive_types[k]))
+            type = primitive_types[k], ++ntypes;
+    if (ntypes != 1)
+        return hx_adm_fail(r, e, e->line, "give the primitive, one of ATPOINT, INLINE, INPLANE,"
+                           " ORIENTATION, PARALLEL_AXES, PERPENDICULAR (%d given)", ntypes);
+    hx_adm_element el;
+    hx_adm_element_init(&el, "Constraint_Jprim");
+    hx_adm_element_text(&el, "type", type);
     hx_adm_element_number(&el, "i_marker_id", hx_adm_ref(e, "I"));
     hx_adm_element_number(&el, "j_marker_id", hx_adm_ref(e, "J"));
     return hx_adm_element_build(r, e, &el, NULL);

@@ -69,6 +69,7 @@ const char *hx_adm_joint_type(const hx_adm_entry *e);
 int hx_adm_build_part(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_marker(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_joint(hx_adm_reader *r, hx_adm_entry *e);
+int hx_adm_build_jprim(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_coupler(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_motion(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_gforce(hx_adm_reader *r, hx_adm_entry *e);

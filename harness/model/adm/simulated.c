@@ -2,7 +2,8 @@
  * Which statements the harness simulates (docs/interface.md §9.8), decided
  * once every statement is read and before any is built: a joint of a type the
  * model holds (FIXED, REVOLUTE, TRANSLATIONAL, CYLINDRICAL, SPHERICAL,
- * UNIVERSAL, HOOKE, PLANAR; between any parts; no initial conditions), forces
+ * UNIVERSAL, HOOKE, PLANAR; between any parts; no initial conditions; a
+ * JPRIM always), forces
  * given by function expressions (docs/interface.md §8) or by a user routine,
  * a VARIABLE by one measure or a user routine; then what names an
  * element that is not simulated (the COUPLER or MOTION of such a joint, the
@@ -48,7 +49,11 @@ static const char *why_not(const hx_adm_entry *e, char *why, size_t size)
         const char *type = hx_adm_joint_type(e);
         if (type == NULL)
             return why; /* the builder's error: no type */
-        if (hx_joint_type_from_name(type) < 0)
+        const int jt = hx_joint_type_from_name(type);
+        if (jt >= 0 && hx_joint_type_is_primitive((enum hx_joint_type)jt))
+            snprintf(why, size, "a %s joint, a primitive, which the harness simulates as a"
+                     " JPRIM (JPRIM/id, I=, J=, %s)", type, type);
+        else if (jt < 0)
             snprintf(why, size, "a %s joint, which the harness does not simulate yet (it"
                      " simulates FIXED, REVOLUTE, TRANSLATIONAL, CYLINDRICAL, SPHERICAL,"
                      " UNIVERSAL, HOOKE and PLANAR joints)", type);

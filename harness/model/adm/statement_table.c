@@ -41,6 +41,10 @@ static const hx_adm_keyword joint[] = {
     K("IC", HX_ADM_REAL, 1, 2, 0, NULL), REAL("ICTRAN", 2), REAL("ICROT", 2), REAL("PD", 1),
     REAL("PITCH", 1), KEND};
 
+static const hx_adm_keyword jprim[] = {
+    NEED_ID("I", "MARKER"), NEED_ID("J", "MARKER"), FLAG("ATPOINT"), FLAG("INLINE"),
+    FLAG("INPLANE"), FLAG("ORIENTATION"), FLAG("PARALLEL_AXES"), FLAG("PERPENDICULAR"), KEND};
+
 static const hx_adm_keyword coupler[] = {
     K("JOINTS", HX_ADM_ID, 2, 3, 1, "JOINT"), WORD("TYPE"),
     K("SCALES", HX_ADM_REAL, 2, 3, 0, NULL), EXPR("FUNCTION"), ROUTINES(3), KEND};
@@ -135,6 +139,7 @@ const hx_adm_spec hx_adm_statements[] = {
     BUILD("PART", part, hx_adm_build_part),
     BUILD("MARKER", marker, hx_adm_build_marker),
     BUILD("JOINT", joint, hx_adm_build_joint),
+    BUILD("JPRIM", jprim, hx_adm_build_jprim),
     BUILD("COUPLER", coupler, hx_adm_build_coupler),
     BUILD("MOTION", motion, hx_adm_build_motion),
     BUILD("GFORCE", gforce, hx_adm_build_gforce),
@@ -168,7 +173,6 @@ const hx_adm_spec hx_adm_statements[] = {
     SETTING("ENVIRONMENT", "solver environment settings"),
     SETTING("MATRIX", "a MATRIX is data of elements the harness does not simulate (LSE, FIELD"
                       " matrices given by id, ...)"),
-    UNSIMULATED("JPRIM", "a joint primitive, which the harness does not simulate yet"),
     UNSIMULATED("GCON", "a general constraint (an expression), which the harness does not"
                         " simulate yet"),
     UNSIMULATED("UCON", "a user constraint, which the harness does not simulate yet"),

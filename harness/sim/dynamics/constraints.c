@@ -107,15 +107,8 @@ int hx_constraints_init(hx_dynamics *d, hx_message *msg)
             sort_blocks(r);
             r->scale = 1.0;
         }
-        /* the rows of positions: point (the first 3) and dot-2 (joint_equations.c) */
-        const int first_dot2 = j->type == HX_JOINT_TRANSLATIONAL ? 3
-                               : j->type == HX_JOINT_CYLINDRICAL || j->type == HX_JOINT_PLANAR ? 2
-                                                                                                : count;
-        const int points = j->type == HX_JOINT_FIXED || j->type == HX_JOINT_REVOLUTE ||
-                           j->type == HX_JOINT_SPHERICAL || j->type == HX_JOINT_UNIVERSAL ||
-                           j->type == HX_JOINT_HOOKE;
-        for (int e = 0; e < count; ++e)
-            if ((points && e < 3) || e >= first_dot2)
+        for (int e = 0; e < count; ++e) /* the rows of positions (joint_equations.h) */
+            if (hx_joint_equation_is_length(j->type, e))
                 d->rows[d->joint_row[k] + e].scale = L;
     }
     return 0;

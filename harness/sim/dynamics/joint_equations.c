@@ -15,25 +15,6 @@
 
 #include "base/vecmath.h"
 
-int hx_joint_equations_count(enum hx_joint_type type)
-{
-    switch (type) {
-    case HX_JOINT_FIXED:
-        return 6;
-    case HX_JOINT_REVOLUTE:
-    case HX_JOINT_TRANSLATIONAL:
-        return 5;
-    case HX_JOINT_CYLINDRICAL:
-    case HX_JOINT_UNIVERSAL:
-    case HX_JOINT_HOOKE:
-        return 4;
-    case HX_JOINT_SPHERICAL:
-    case HX_JOINT_PLANAR:
-        return 3;
-    }
-    return 0;
-}
-
 /* A side's marker at the body's frame: origin, lever r (world), axes (columns). */
 typedef struct side {
     double x[3], r[3], axes[9], v[3], w[3], xdot[3], wwr[3]; /* wwr = w x (w x r) */
@@ -77,18 +58,16 @@ static void put(rows *o, double phi, const double vi[3], const double wi[3], con
     o->n++;
 }
 
-/* x_I - x_J = 0: row k is e_k . (v_I + w_I x r_I - v_J - w_J x r_J). */
-static void point(rows *o, const side *i, const side *j)
+/* x_I - x_J = 0, its component k: e_k . (v_I + w_I x r_I - v_J - w_J x r_J). */
+static void point(rows *o, const side *i, const side *j, int k)
 {
-    for (int k = 0; k < 3; ++k) {
-        double e[3] = {0, 0, 0}, wi[3], wj[3], ve[3];
-        e[k] = 1.0;
-        v3_cross(wi, i->r, e);
-        v3_cross(wj, j->r, e);
-        v3_scale(wj, wj, -1.0);
-        v3_scale(ve, e, -1.0);
-        put(o, i->x[k] - j->x[k], e, wi, ve, wj, -(i->wwr[k] - j->wwr[k]));
-    }
+    double e[3] = {0, 0, 0}, wi[3], wj[3], ve[3];
+    e[k] = 1.0;
+    v3_cross(wi, i->r, e);
+    v3_cross(wj, j->r, e);
+    v3_scale(wj, wj, -1.0);
+    v3_scale(ve, e, -1.0);
+    put(o, i->x[k] - j->x[k], e, wi, ve, wj, -(i->wwr[k] - j->wwr[k]));
 }
 
 /* a_I . b_J = 0: d/dt = w_I . (a x b) + w_J . (b x a). */
@@ -128,6 +107,52 @@ static void dot2(rows *o, const side *i, const side *j, int kb)
 }
 
 enum { X, Y, Z };
+enum { POINT, DOT1, DOT2 };
+
+/* A row: its primitive and axes (POINT: component a; DOT1: a_I . b_J; DOT2: b_J . d). */
+typedef struct recipe_row {
+    unsigned char kind, a, b;
+} recipe_row;
+
+typedef struct recipe {
+    int n;
+    recipe_row row[HX_JOINT_MAX_EQUATIONS];
+} recipe;
+
+#define PX {POINT, X, 0}, {POINT, Y, 0}, {POINT, Z, 0}
+#define ZALONG {DOT1, Z, X}, {DOT1, Z, Y} /* z_I along z_J */
+#define XALONG {DOT1, X, Y}               /* with ZALONG: the same axes */
+
+/* Each type's rows, in the order of phi (docs/interface.md §7.14). */
+static const recipe recipes[] = {
+    [HX_JOINT_FIXED] = {6, {PX, ZALONG, XALONG}},
+    [HX_JOINT_REVOLUTE] = {5, {PX, ZALONG}},
+    [HX_JOINT_TRANSLATIONAL] = {5, {ZALONG, XALONG, {DOT2, 0, X}, {DOT2, 0, Y}}},
+    [HX_JOINT_CYLINDRICAL] = {4, {ZALONG, {DOT2, 0, X}, {DOT2, 0, Y}}},
+    [HX_JOINT_SPHERICAL] = {3, {PX}},
+    /* the z axes are the cross's pins: perpendicular */
+    [HX_JOINT_UNIVERSAL] = {4, {PX, {DOT1, Z, Z}}},
+    /* the z axes are the shafts; x_I and y_J the cross's pins */
+    [HX_JOINT_HOOKE] = {4, {PX, {DOT1, X, Y}}},
+    [HX_JOINT_PLANAR] = {3, {ZALONG, {DOT2, 0, Z}}},
+    /* the primitives (Constraint_Jprim, JPRIM) */
+    [HX_JOINT_ATPOINT] = {3, {PX}},
+    [HX_JOINT_INLINE] = {2, {{DOT2, 0, X}, {DOT2, 0, Y}}},
+    [HX_JOINT_INPLANE] = {1, {{DOT2, 0, Z}}},
+    [HX_JOINT_ORIENTATION] = {3, {ZALONG, XALONG}},
+    [HX_JOINT_PARALLEL_AXES] = {2, {ZALONG}},
+    [HX_JOINT_PERPENDICULAR] = {1, {{DOT1, Z, Z}}},
+};
+
+int hx_joint_equations_count(enum hx_joint_type type)
+{
+    return recipes[type].n;
+}
+
+int hx_joint_equation_is_length(enum hx_joint_type type, int e)
+{
+    return recipes[type].row[e].kind != DOT1;
+}
 
 void hx_joint_equations_eval(enum hx_joint_type type, const hx_joint_side *ji,
                              const hx_joint_side *jj, double *phi, double *G, double *gamma)
@@ -136,37 +161,14 @@ void hx_joint_equations_eval(enum hx_joint_type type, const hx_joint_side *ji,
     place(&i, ji);
     place(&j, jj);
     rows o = {phi, G, gamma, 0};
-    switch (type) {
-    case HX_JOINT_FIXED: /* coincident origins, the same axes */
-        point(&o, &i, &j);
-        dot1(&o, &i, Z, &j, X), dot1(&o, &i, Z, &j, Y), dot1(&o, &i, X, &j, Y);
-        break;
-    case HX_JOINT_REVOLUTE: /* coincident origins, z_I along z_J */
-        point(&o, &i, &j);
-        dot1(&o, &i, Z, &j, X), dot1(&o, &i, Z, &j, Y);
-        break;
-    case HX_JOINT_TRANSLATIONAL: /* the same axes, x_I on J's z axis */
-        dot1(&o, &i, Z, &j, X), dot1(&o, &i, Z, &j, Y), dot1(&o, &i, X, &j, Y);
-        dot2(&o, &i, &j, X), dot2(&o, &i, &j, Y);
-        break;
-    case HX_JOINT_CYLINDRICAL: /* z_I along z_J, x_I on J's z axis */
-        dot1(&o, &i, Z, &j, X), dot1(&o, &i, Z, &j, Y);
-        dot2(&o, &i, &j, X), dot2(&o, &i, &j, Y);
-        break;
-    case HX_JOINT_SPHERICAL:
-        point(&o, &i, &j);
-        break;
-    case HX_JOINT_UNIVERSAL: /* the z axes are the cross's pins: perpendicular */
-        point(&o, &i, &j);
-        dot1(&o, &i, Z, &j, Z);
-        break;
-    case HX_JOINT_HOOKE: /* the z axes are the shafts; x_I and y_J the cross's pins */
-        point(&o, &i, &j);
-        dot1(&o, &i, X, &j, Y);
-        break;
-    case HX_JOINT_PLANAR: /* z_I along z_J, x_I in J's x-y plane */
-        dot1(&o, &i, Z, &j, X), dot1(&o, &i, Z, &j, Y);
-        dot2(&o, &i, &j, Z);
-        break;
+    const recipe *r = &recipes[type];
+    for (int e = 0; e < r->n; ++e) {
+        const recipe_row *w = &r->row[e];
+        if (w->kind == POINT)
+            point(&o, &i, &j, w->a);
+        else if (w->kind == DOT1)
+            dot1(&o, &i, w->a, &j, w->b);
+        else
+            dot2(&o, &i, &j, w->b);
     }
 }

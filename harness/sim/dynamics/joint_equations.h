@@ -17,8 +17,13 @@
 
 #define HX_JOINT_MAX_EQUATIONS 6
 
-/* The number of equations of a joint type (6 FIXED ... 3 SPHERICAL, PLANAR). */
+/* The number of equations of a joint type (6 FIXED ... 1 INPLANE, PERPENDICULAR). */
 int hx_joint_equations_count(enum hx_joint_type type);
+
+/* 1 when equation e (0 <= e < count) of the type is a length (a point or a
+ * point-in-plane row, scaled by the model's length in constraints.c), 0 when
+ * it is a product of two unit axes. */
+int hx_joint_equation_is_length(enum hx_joint_type type, int e);
 
 /* One side of a joint: its body's frame (world) and the marker's place and
  * axes in the body (hx_marker's r_local, R_local). */
