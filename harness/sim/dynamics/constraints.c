@@ -18,6 +18,7 @@
 #include "base/linalg.h"
 #include "base/vecmath.h"
 #include "sim/dynamics/bodies.h"
+#include "sim/dynamics/constraint_matrix.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/joint_equations.h"
@@ -135,7 +136,10 @@ void hx_constraints_free(hx_dynamics *d)
     free(d->u_body);
     free(d->active);
     free(d->removed);
+    free(d->envelope_first);
+    free(d->envelope_start);
 }
+
 
 size_t hx_constraints_work_size(const hx_dynamics *d)
 {
@@ -256,48 +260,6 @@ static int constraint_jacobian(const hx_dynamics *d, hx_dynamics_data *dd, doubl
     return 0;
 }
 
-/* out = M^-1 in over one body's block of velocities. */
-static void inverse_mass(const hx_dynamics *d, int body, const double *in, double *out)
-{
-    const hx_body_dof *dof = &d->dof[body];
-    const double minv = 1.0 / dof->mass;
-    if (dof->kind != HX_DOF_FREE) {
-        out[0] = in[0] * minv;
-        return;
-    }
-    for (int c = 0; c < 3; ++c)
-        out[c] = in[c] * minv;
-    m3_apply(out + 3, dof->inertia_inv, in + 3);
-}
-
-/* W = M^-1 G^T row by row, then A = G M^-1 G^T over the active rows
- * (nactive x nactive, in d->active's order). */
-void hx_constraints_gram(const hx_dynamics *d, const double *G, double *W, double *A)
-{
-    const int n = d->nactive;
-    for (int a = 0; a < n; ++a) {
-        const int i = d->active[a];
-        const hx_constraint_row *r = &d->rows[i];
-        for (int b = 0; b < r->nblocks; ++b)
-            inverse_mass(d, r->body[b], G + 12 * i + r->slot[b], W + 12 * i + r->slot[b]);
-    }
-    for (int ai = 0; ai < n; ++ai) {
-        const int i = d->active[ai];
-        const hx_constraint_row *ri = &d->rows[i];
-        for (int aj = 0; aj < n; ++aj) {
-            const int j = d->active[aj];
-            const hx_constraint_row *rj = &d->rows[j];
-            double s = 0.0;
-            for (int a = 0; a < ri->nblocks; ++a)
-                for (int b = 0; b < rj->nblocks; ++b)
-                    if (ri->u[a] == rj->u[b])
-                        for (int c = 0; c < ri->width[a]; ++c)
-                            s += W[12 * i + ri->slot[a] + c] * G[12 * j + rj->slot[b] + c];
-            A[ai * n + aj] = s;
-        }
-    }
-}
-
 /* start + G_i . v over u */
 static double row_dot(const hx_dynamics *d, const double *G, int i, const double *v,
                       double start)
@@ -334,13 +296,13 @@ int hx_constraints_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t, c
     work w = parts(d, dd);
     if (constraint_jacobian(d, dd, t, y, w.G, w.phi, w.gamma) != 0)
         return -1;
-    hx_constraints_gram(d, w.G, w.W, w.A);
+    const int formed = hx_constraint_matrix_form(d, w.G, w.W, w.A);
     /* the active rows' multipliers solved in w.step, the removed rows' zero */
     for (int a = 0; a < n; ++a) {
         const int i = d->active[a];
         w.step[a] = -row_dot(d, w.G, i, udot, -w.gamma[i]) / d->ucf;
     }
-    if (hx_solve(n, w.A, w.step) != 0)
+    if (formed != 0 || hx_constraint_matrix_solve(d, w.A, w.step) != 0)
         return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g (joints or"
                                 " couplers that became degenerate after the set-up)", t);
     for (int a = 0; a < n; ++a)
@@ -386,7 +348,7 @@ static void move_positions(const hx_dynamics *d, const double *x, double *y)
         if (dof->kind != HX_DOF_FREE)
             continue;
         double dx[6], *quat = y + dof->q + 3, next[4];
-        inverse_mass(d, b, x + dof->u, dx);
+        hx_constraint_matrix_inverse_mass(d, b, x + dof->u, dx);
         for (int c = 0; c < 3; ++c)
             y[dof->q + c] -= dx[c];
         const double angle = v3_norm(dx + 3);
@@ -420,10 +382,10 @@ int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t,
         err = scaled_error(d, w.phi, &worst);
         if (err <= PHI_TOLERANCE || it == PROJECTION_ITERATIONS)
             break;
-        hx_constraints_gram(d, w.G, w.W, w.A);
+        const int formed = hx_constraint_matrix_form(d, w.G, w.W, w.A);
         for (int a = 0; a < n; ++a)
             w.step[a] = w.phi[d->active[a]];
-        if (hx_solve(n, w.A, w.step) != 0)
+        if (formed != 0 || hx_constraint_matrix_solve(d, w.A, w.step) != 0)
             return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
         transpose_apply(d, w.G, w.step, w.x);
         move_positions(d, w.x, y);
@@ -445,10 +407,10 @@ int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t,
                                     fabs(w.phi[i]) / d->rows[i].scale);
     }
     /* velocities: remove the component that violates G u = 0 */
-    hx_constraints_gram(d, w.G, w.W, w.A);
+    const int formed = hx_constraint_matrix_form(d, w.G, w.W, w.A);
     for (int a = 0; a < n; ++a)
         w.step[a] = row_dot(d, w.G, d->active[a], y + d->nq, 0.0);
-    if (hx_solve(n, w.A, w.step) != 0)
+    if (formed != 0 || hx_constraint_matrix_solve(d, w.A, w.step) != 0)
         return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
     transpose_apply(d, w.G, w.step, w.x);
     for (int b = 0; b < d->m->nbodies; ++b) {
@@ -457,7 +419,7 @@ int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t,
             y[d->nq + dof->u] -= (1.0 / dof->mass) * w.x[dof->u];
         } else if (dof->kind == HX_DOF_FREE) {
             double du[6];
-            inverse_mass(d, b, w.x + dof->u, du);
+            hx_constraint_matrix_inverse_mass(d, b, w.x + dof->u, du);
             for (int c = 0; c < 6; ++c)
                 y[d->nq + dof->u + c] -= du[c];
         }
@@ -526,13 +488,18 @@ int hx_constraints_projector(const hx_dynamics *d, hx_dynamics_data *dd, double 
     double *A = work_, *z = work_ + n * n, *s = w.x, *col = w.x + d->nu;
     if (constraint_jacobian(d, dd, t, y, w.G, w.phi, NULL) != 0)
         return -1;
+    /* the envelope factored once; the dense matrix formed for each solve (which takes it apart) */
+    const int dense = d->envelope_first == NULL;
+    if (!dense && hx_constraint_matrix_form(d, w.G, w.W, A) != 0)
+        return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
     for (int j = 0; j < count; ++j) {
-        hx_constraints_gram(d, w.G, w.W, A); /* the solve takes it apart */
+        if (dense)
+            hx_constraint_matrix_gram(d, w.G, w.W, A);
         memset(col, 0, sizeof(double) * (size_t)d->nu);
         col[index[j]] = 1.0;
         for (int k = 0; k < n; ++k)
             z[k] = row_dot(d, w.G, d->active[k], col, 0.0);
-        if (hx_solve(n, A, z) != 0)
+        if (hx_constraint_matrix_solve(d, A, z) != 0)
             return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
         transpose_apply(d, w.G, z, s);
         for (int i = 0; i < count; ++i) {
@@ -543,7 +510,7 @@ int hx_constraints_projector(const hx_dynamics *d, hx_dynamics_data *dd, double 
                 ms = (1.0 / dof->mass) * s[u];
             } else {
                 double block[6];
-                inverse_mass(d, b, s + dof->u, block);
+                hx_constraint_matrix_inverse_mass(d, b, s + dof->u, block);
                 ms = block[u - dof->u];
             }
             P[i + count * j] = (i == j ? 1.0 : 0.0) - ms;

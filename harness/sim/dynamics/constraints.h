@@ -23,10 +23,6 @@ size_t hx_constraints_work_size(const hx_dynamics *d);
 int hx_constraints_rows(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
                         double *phi, double *G, double *gamma);
 
-/* W = M^-1 G^T (12 a row, as G) and A = G M^-1 G^T over the active rows,
- * nactive x nactive row-major in d->active's order. */
-void hx_constraints_gram(const hx_dynamics *d, const double *G, double *W, double *A);
-
 /* The constraints stage: the couplers' multipliers (dd->lambda, a row each) into the
  * accelerations udot (those of the loads alone on entry). */
 int hx_constraints_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,

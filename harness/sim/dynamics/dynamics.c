@@ -1,6 +1,7 @@
 /* The dynamics' model and data, and one evaluation (dynamics.h). */
 #include "sim/dynamics/dynamics.h"
 #include "sim/dynamics/bodies.h"
+#include "sim/dynamics/constraint_matrix.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/redundancy.h"
 #include "sim/dynamics/element_forces.h"
@@ -86,7 +87,8 @@ static int find_redundant(hx_dynamics *d, hx_message *msg)
 int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg)
 {
     memset(d, 0, sizeof *d);
-    if (init_parts(d, s, msg) == 0 && (d->nrows == 0 || find_redundant(d, msg) == 0))
+    if (init_parts(d, s, msg) == 0 &&
+        (d->nrows == 0 || (find_redundant(d, msg) == 0 && hx_constraint_matrix_plan(d, msg) == 0)))
         return 0;
     hx_dynamics_free(d);
     return -1;

@@ -72,6 +72,9 @@ typedef struct hx_dynamics {
     int nactive, *active;         /* the rows the solves take, ascending (all of them but
                                    * the redundant rows found at set-up: redundancy.h) */
     int nremoved, *removed;       /* the redundant rows, ascending */
+    int *envelope_first;          /* per active row: the first active row it shares a body
+                                   * with (G M^-1 G^T's envelope), or NULL: solved dense */
+    size_t *envelope_start;       /* per active row: its place in the envelope's values */
     int *joint_row;               /* per joint: its first row, or -1 (a reduced joint) */
     int *u_body;                  /* per velocity: its body */
     hx_binding **force_binding;   /* per force element */

@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "sim/dynamics/constraint_matrix.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/joint_equations.h"
 #include "sim/dynamics/redundancy.h"
@@ -34,7 +35,7 @@ int hx_redundancy_find(hx_dynamics *d, hx_dynamics_data *dd, const double *y, hx
         hx_fail(msg, "%s", dd->message);
         goto done;
     }
-    hx_constraints_gram(d, G, W, A); /* every row active here */
+    hx_constraint_matrix_gram(d, G, W, A); /* every row active here */
     const double tol2 = HX_REDUNDANCY_TOLERANCE * HX_REDUNDANCY_TOLERANCE;
     int nkept = 0, nremoved = 0;
     int *kept = d->active; /* filled in order as rows are kept */
