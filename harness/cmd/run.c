@@ -7,6 +7,8 @@
 #include "cmd/commands.h"
 #include "cmd/crash_report.h"
 #include "cmd/options.h"
+#include "sim/dynamics/assembly.h"
+#include "sim/dynamics/redundancy.h"
 #include "sim/simulation/simulation.h"
 #include "tools/bench/stability.h"
 
@@ -103,6 +105,20 @@ static void stiffness_advice(FILE *f, const hx_stability *st, const hx_integrato
                 " holds the step near that limit; --max-order %d keeps BDF stable on it at any"
                 " step (a step beyond its period damps it away)\n",
                 -st->re / st->magnitude, order, order);
+}
+
+/* How far the assembly moved the parts, each said once before the run (a
+ * failed assembly is the run's failure, said by its summary). */
+static void assembly_report(const hx_dynamics *d)
+{
+    hx_assembly_move *moves = malloc(sizeof *moves * ((size_t)d->m->nbodies + 1));
+    hx_message msg;
+    const int count = moves != NULL ? hx_assembly_moves(d, moves, &msg) : 0;
+    for (int k = 0; k < count; ++k)
+        fprintf(stderr, "run: note: the assembly moved PART/%d by %.3g (its centre of mass) and"
+                " turned it by %.3g rad\n", d->m->bodies[moves[k].body].id,
+                moves[k].translation, moves[k].rotation);
+    free(moves);
 }
 
 /* Reads the options into so; returns -1 (exit 2) on a bad one, 1 on --help. */
@@ -203,6 +219,13 @@ int hx_command_run(int argc, char **argv)
         hx_session_close(&s);
         return 1;
     }
+    /* the redundant constraint rows the set-up removed, each said once */
+    for (int k = 0; k < d.nremoved; ++k) {
+        char name[160];
+        fprintf(stderr, "run: note: %s is redundant and removed\n",
+                hx_redundancy_name_row(&d, d.removed[k], name, sizeof name));
+    }
+    assembly_report(&d);
     hx_crash_report_begin();
     /* the fastest mode at the start: a fixed step beyond its stability limit is
      * said before the run, and whether the model is stiff for it after */

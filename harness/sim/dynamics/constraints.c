@@ -18,9 +18,11 @@
 #include "base/linalg.h"
 #include "base/vecmath.h"
 #include "sim/dynamics/bodies.h"
+#include "sim/dynamics/constraint_matrix.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/joint_equations.h"
+#include "sim/dynamics/redundancy.h"
 
 #define PROJECTION_ITERATIONS 25
 #define PHI_TOLERANCE 1e-13 /* relative to the row's scale (constraints.h) */
@@ -80,8 +82,14 @@ int hx_constraints_init(hx_dynamics *d, hx_message *msg)
     d->nrows = n;
     d->rows = calloc((size_t)n + 1, sizeof *d->rows);
     d->u_body = malloc(sizeof(int) * ((size_t)d->nu + 1));
-    if (d->rows == NULL || d->u_body == NULL)
+    d->active = malloc(sizeof(int) * ((size_t)n + 1));
+    d->removed = malloc(sizeof(int) * ((size_t)n + 1));
+    if (d->rows == NULL || d->u_body == NULL || d->active == NULL || d->removed == NULL)
         return hx_fail(msg, "out of memory");
+    /* every row takes part until hx_redundancy_find removes the redundant ones */
+    for (int i = 0; i < n; ++i)
+        d->active[i] = i;
+    d->nactive = n, d->nremoved = 0;
     for (int b = 0; b < m->nbodies; ++b)
         if (d->dof[b].kind != HX_DOF_GROUND)
             for (int c = 0; c < (d->dof[b].kind == HX_DOF_FREE ? 6 : 1); ++c)
@@ -119,7 +127,12 @@ void hx_constraints_free(hx_dynamics *d)
     free(d->joint_row);
     free(d->rows);
     free(d->u_body);
+    free(d->active);
+    free(d->removed);
+    free(d->envelope_first);
+    free(d->envelope_start);
 }
+
 
 size_t hx_constraints_work_size(const hx_dynamics *d)
 {
@@ -240,44 +253,6 @@ static int constraint_jacobian(const hx_dynamics *d, hx_dynamics_data *dd, doubl
     return 0;
 }
 
-/* out = M^-1 in over one body's block of velocities. */
-static void inverse_mass(const hx_dynamics *d, int body, const double *in, double *out)
-{
-    const hx_body_dof *dof = &d->dof[body];
-    const double minv = 1.0 / dof->mass;
-    if (dof->kind != HX_DOF_FREE) {
-        out[0] = in[0] * minv;
-        return;
-    }
-    for (int c = 0; c < 3; ++c)
-        out[c] = in[c] * minv;
-    m3_apply(out + 3, dof->inertia_inv, in + 3);
-}
-
-/* W = M^-1 G^T row by row, then A = G M^-1 G^T. */
-static void weighted_gram(const hx_dynamics *d, const double *G, double *W, double *A)
-{
-    const int n = d->nrows;
-    for (int i = 0; i < n; ++i) {
-        const hx_constraint_row *r = &d->rows[i];
-        for (int b = 0; b < r->nblocks; ++b)
-            inverse_mass(d, r->body[b], G + 12 * i + r->slot[b], W + 12 * i + r->slot[b]);
-    }
-    for (int i = 0; i < n; ++i) {
-        const hx_constraint_row *ri = &d->rows[i];
-        for (int j = 0; j < n; ++j) {
-            const hx_constraint_row *rj = &d->rows[j];
-            double s = 0.0;
-            for (int a = 0; a < ri->nblocks; ++a)
-                for (int b = 0; b < rj->nblocks; ++b)
-                    if (ri->u[a] == rj->u[b])
-                        for (int c = 0; c < ri->width[a]; ++c)
-                            s += W[12 * i + ri->slot[a] + c] * G[12 * j + rj->slot[b] + c];
-            A[i * n + j] = s;
-        }
-    }
-}
-
 /* start + G_i . v over u */
 static double row_dot(const hx_dynamics *d, const double *G, int i, const double *v,
                       double start)
@@ -290,36 +265,43 @@ static double row_dot(const hx_dynamics *d, const double *G, int i, const double
     return s;
 }
 
-/* x = G^T z over u (zero where no row reaches) */
+/* x = G^T z over u (zero where no row reaches), z over the active rows */
 static void transpose_apply(const hx_dynamics *d, const double *G, const double *z, double *x)
 {
     memset(x, 0, sizeof(double) * (size_t)d->nu);
-    for (int i = 0; i < d->nrows; ++i) {
+    for (int a = 0; a < d->nactive; ++a) {
+        const int i = d->active[a];
         const hx_constraint_row *r = &d->rows[i];
         for (int b = 0; b < r->nblocks; ++b)
             for (int c = 0; c < r->width[b]; ++c)
-                x[r->u[b] + c] += G[12 * i + r->slot[b] + c] * z[i];
+                x[r->u[b] + c] += G[12 * i + r->slot[b] + c] * z[a];
     }
 }
 
 int hx_constraints_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
                          double *udot)
 {
-    const int n = d->nrows;
-    if (n == 0)
+    const int n = d->nactive;
+    if (d->nrows == 0)
         return 0;
     /* M udot = ucf (Q + G^T lambda), G udot = gamma:
      * (G M^-1 G^T) lambda = (gamma - G udot_free) / ucf with udot_free = ucf M^-1 Q. */
     work w = parts(d, dd);
     if (constraint_jacobian(d, dd, t, y, w.G, w.phi, w.gamma) != 0)
         return -1;
-    weighted_gram(d, w.G, w.W, w.A);
-    for (int i = 0; i < n; ++i)
-        dd->lambda[i] = -row_dot(d, w.G, i, udot, -w.gamma[i]) / d->ucf;
-    if (hx_solve(n, w.A, dd->lambda) != 0)
-        return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g (redundant"
-                                " or degenerate joints or couplers)", t);
-    for (int i = 0; i < n; ++i) {
+    const int formed = hx_constraint_matrix_form(d, w.G, w.W, w.A);
+    /* the active rows' multipliers solved in w.step, the removed rows' zero */
+    for (int a = 0; a < n; ++a) {
+        const int i = d->active[a];
+        w.step[a] = -row_dot(d, w.G, i, udot, -w.gamma[i]) / d->ucf;
+    }
+    if (formed != 0 || hx_constraint_matrix_solve(d, w.A, w.step) != 0)
+        return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g (joints or"
+                                " couplers that became degenerate after the set-up)", t);
+    for (int a = 0; a < n; ++a)
+        dd->lambda[d->active[a]] = w.step[a];
+    for (int a = 0; a < n; ++a) {
+        const int i = d->active[a];
         const hx_constraint_row *r = &d->rows[i];
         for (int b = 0; b < r->nblocks; ++b) {
             const double *g = w.G + 12 * i + r->slot[b], *wi = w.W + 12 * i + r->slot[b];
@@ -333,12 +315,16 @@ int hx_constraints_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t, c
     return 0;
 }
 
-/* The largest |phi_i| / scale_i. */
-static double scaled_error(const hx_dynamics *d, const double *phi)
+/* The largest |phi_i| / scale_i of the active rows, the row in *at. */
+static double scaled_error(const hx_dynamics *d, const double *phi, int *at)
 {
     double e = 0.0;
-    for (int i = 0; i < d->nrows; ++i)
-        e = fmax(e, fabs(phi[i]) / d->rows[i].scale);
+    for (int a = 0; a < d->nactive; ++a) {
+        const int i = d->active[a];
+        const double ei = fabs(phi[i]) / d->rows[i].scale;
+        if (ei > e || a == 0)
+            e = ei, *at = i;
+    }
     return e;
 }
 
@@ -355,7 +341,7 @@ static void move_positions(const hx_dynamics *d, const double *x, double *y)
         if (dof->kind != HX_DOF_FREE)
             continue;
         double dx[6], *quat = y + dof->q + 3, next[4];
-        inverse_mass(d, b, x + dof->u, dx);
+        hx_constraint_matrix_inverse_mass(d, b, x + dof->u, dx);
         for (int c = 0; c < 3; ++c)
             y[dof->q + c] -= dx[c];
         const double angle = v3_norm(dx + 3);
@@ -374,35 +360,50 @@ int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t,
     for (int k = 0; k < d->m->nbodies; ++k)
         if (d->dof[k].kind == HX_DOF_FREE)
             quat_normalize(y + d->dof[k].q + 3);
-    const int n = d->nrows;
-    if (n == 0)
+    const int n = d->nactive;
+    if (d->nrows == 0)
         return 0;
     work w = parts(d, dd);
-    /* positions: Newton on phi(q) = 0 with the mass-weighted least-change step */
+    /* positions: Newton on phi(q) = 0 over the active rows with the
+     * mass-weighted least-change step */
     double err;
+    int worst = 0;
+    char name[160];
     for (int it = 0;; ++it) {
         if (constraint_jacobian(d, dd, t, y, w.G, w.phi, NULL) != 0)
             return -1;
-        err = scaled_error(d, w.phi);
+        err = scaled_error(d, w.phi, &worst);
         if (err <= PHI_TOLERANCE || it == PROJECTION_ITERATIONS)
             break;
-        weighted_gram(d, w.G, w.W, w.A);
-        memcpy(w.step, w.phi, sizeof(double) * (size_t)n);
-        if (hx_solve(n, w.A, w.step) != 0)
+        const int formed = hx_constraint_matrix_form(d, w.G, w.W, w.A);
+        for (int a = 0; a < n; ++a)
+            w.step[a] = w.phi[d->active[a]];
+        if (formed != 0 || hx_constraint_matrix_solve(d, w.A, w.step) != 0)
             return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
         transpose_apply(d, w.G, w.step, w.x);
         move_positions(d, w.x, y);
     }
     if (err > ASSEMBLY_TOLERANCE)
         return hx_dynamics_fail(dd, "the joints and couplers cannot be satisfied at t = %g: |phi|"
-                                " %.3g (of the model's size) after %d Newton steps (a joint far"
-                                " from assembled, or joints that lock each other)", t, err,
-                                PROJECTION_ITERATIONS);
+                                " %.3g (of the model's size) after %d Newton steps, the largest"
+                                " at %s (a joint far from assembled, or joints that lock each"
+                                " other)", t, err, PROJECTION_ITERATIONS,
+                                hx_redundancy_name_row(d, worst, name, sizeof name));
+    /* the removed rows follow the active ones when they are consistent */
+    for (int k = 0; k < d->nremoved; ++k) {
+        const int i = d->removed[k];
+        if (fabs(w.phi[i]) / d->rows[i].scale > ASSEMBLY_TOLERANCE)
+            return hx_dynamics_fail(dd, "a redundant constraint is not consistent at t = %g: %s,"
+                                    " removed at the set-up, is off by %.3g (of the model's"
+                                    " size) once the others are met (the model locks)", t,
+                                    hx_redundancy_name_row(d, i, name, sizeof name),
+                                    fabs(w.phi[i]) / d->rows[i].scale);
+    }
     /* velocities: remove the component that violates G u = 0 */
-    weighted_gram(d, w.G, w.W, w.A);
-    for (int i = 0; i < n; ++i)
-        w.step[i] = row_dot(d, w.G, i, y + d->nq, 0.0);
-    if (hx_solve(n, w.A, w.step) != 0)
+    const int formed = hx_constraint_matrix_form(d, w.G, w.W, w.A);
+    for (int a = 0; a < n; ++a)
+        w.step[a] = row_dot(d, w.G, d->active[a], y + d->nq, 0.0);
+    if (formed != 0 || hx_constraint_matrix_solve(d, w.A, w.step) != 0)
         return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
     transpose_apply(d, w.G, w.step, w.x);
     for (int b = 0; b < d->m->nbodies; ++b) {
@@ -411,7 +412,7 @@ int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t,
             y[d->nq + dof->u] -= (1.0 / dof->mass) * w.x[dof->u];
         } else if (dof->kind == HX_DOF_FREE) {
             double du[6];
-            inverse_mass(d, b, w.x + dof->u, du);
+            hx_constraint_matrix_inverse_mass(d, b, w.x + dof->u, du);
             for (int c = 0; c < 6; ++c)
                 y[d->nq + dof->u + c] -= du[c];
         }
@@ -457,8 +458,8 @@ double hx_constraints_coupler_force(const hx_dynamics *d, hx_dynamics_data *dd, 
 int hx_constraints_coupled(const hx_dynamics *d, int *index)
 {
     int count = 0;
-    for (int i = 0; i < d->nrows; ++i) {
-        const hx_constraint_row *r = &d->rows[i];
+    for (int a = 0; a < d->nactive; ++a) {
+        const hx_constraint_row *r = &d->rows[d->active[a]];
         for (int b = 0; b < r->nblocks; ++b)
             for (int c = 0; c < r->width[b]; ++c) {
                 int seen = 0;
@@ -475,18 +476,23 @@ int hx_constraints_projector(const hx_dynamics *d, hx_dynamics_data *dd, double 
                              const double *y, const int *index, int count, double *work_,
                              double *P)
 {
-    const int n = d->nrows;
+    const int n = d->nactive;
     work w = parts(d, dd);
     double *A = work_, *z = work_ + n * n, *s = w.x, *col = w.x + d->nu;
     if (constraint_jacobian(d, dd, t, y, w.G, w.phi, NULL) != 0)
         return -1;
+    /* the envelope factored once; the dense matrix formed for each solve (which takes it apart) */
+    const int dense = d->envelope_first == NULL;
+    if (!dense && hx_constraint_matrix_form(d, w.G, w.W, A) != 0)
+        return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
     for (int j = 0; j < count; ++j) {
-        weighted_gram(d, w.G, w.W, A); /* the solve takes it apart */
+        if (dense)
+            hx_constraint_matrix_gram(d, w.G, w.W, A);
         memset(col, 0, sizeof(double) * (size_t)d->nu);
         col[index[j]] = 1.0;
         for (int k = 0; k < n; ++k)
-            z[k] = row_dot(d, w.G, k, col, 0.0);
-        if (hx_solve(n, A, z) != 0)
+            z[k] = row_dot(d, w.G, d->active[k], col, 0.0);
+        if (hx_constraint_matrix_solve(d, A, z) != 0)
             return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
         transpose_apply(d, w.G, z, s);
         for (int i = 0; i < count; ++i) {
@@ -497,7 +503,7 @@ int hx_constraints_projector(const hx_dynamics *d, hx_dynamics_data *dd, double 
                 ms = (1.0 / dof->mass) * s[u];
             } else {
                 double block[6];
-                inverse_mass(d, b, s + dof->u, block);
+                hx_constraint_matrix_inverse_mass(d, b, s + dof->u, block);
                 ms = block[u - dof->u];
             }
             P[i + count * j] = (i == j ? 1.0 : 0.0) - ms;

@@ -1,7 +1,9 @@
 /* The dynamics' model and data, and one evaluation (dynamics.h). */
 #include "sim/dynamics/dynamics.h"
 #include "sim/dynamics/bodies.h"
+#include "sim/dynamics/constraint_matrix.h"
 #include "sim/dynamics/constraints.h"
+#include "sim/dynamics/redundancy.h"
 #include "sim/dynamics/element_forces.h"
 #include "sim/dynamics/loads.h"
 #include "sim/dynamics/routines.h"
@@ -63,10 +65,30 @@ static int init_parts(hx_dynamics *d, hx_session *s, hx_message *msg)
     return 0;
 }
 
+/* The redundant rows, at the model's initial configuration (redundancy.h). */
+static int find_redundant(hx_dynamics *d, hx_message *msg)
+{
+    hx_dynamics_data dd;
+    if (hx_dynamics_data_init(&dd, d, msg) != 0)
+        return -1;
+    double *y = malloc(sizeof(double) * ((size_t)d->n + 1));
+    int status = -1;
+    if (y == NULL)
+        hx_fail(msg, "out of memory");
+    else if (hx_dynamics_model_state(d, &dd, y) != 0)
+        hx_fail(msg, "%s", dd.message);
+    else
+        status = hx_redundancy_find(d, &dd, y, msg);
+    free(y);
+    hx_dynamics_data_free(&dd);
+    return status;
+}
+
 int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg)
 {
     memset(d, 0, sizeof *d);
-    if (init_parts(d, s, msg) == 0)
+    if (init_parts(d, s, msg) == 0 &&
+        (d->nrows == 0 || (find_redundant(d, msg) == 0 && hx_constraint_matrix_plan(d, msg) == 0)))
         return 0;
     hx_dynamics_free(d);
     return -1;
@@ -165,12 +187,17 @@ int hx_dynamics_rhs(const hx_dynamics *d, hx_dynamics_data *dd, double t, const 
     return hx_dynamics_evaluate(d, dd, t, y, ydot, 0);
 }
 
-int hx_dynamics_initial_state(const hx_dynamics *d, hx_dynamics_data *dd, double *y)
+int hx_dynamics_model_state(const hx_dynamics *d, hx_dynamics_data *dd, double *y)
 {
     memset(y, 0, sizeof(double) * (size_t)d->n);
     hx_bodies_initial_state(d, y);
     hx_stateeqns_initial(d, y);
-    if (hx_routines_initial(d, dd, y) != 0)
+    return hx_routines_initial(d, dd, y);
+}
+
+int hx_dynamics_initial_state(const hx_dynamics *d, hx_dynamics_data *dd, double *y)
+{
+    if (hx_dynamics_model_state(d, dd, y) != 0)
         return -1;
     dd->max_phi = dd->max_phidot = 0.0;
     return hx_constraints_project(d, dd, 0.0, y);

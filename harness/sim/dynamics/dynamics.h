@@ -69,6 +69,12 @@ typedef struct hx_dynamics {
     hx_binding **coupler_binding; /* per coupler; NULL for the built-in form */
     int nrows;                    /* constraint rows: the couplers', then the joints' */
     hx_constraint_row *rows;
+    int nactive, *active;         /* the rows the solves take, ascending (all of them but
+                                   * the redundant rows found at set-up: redundancy.h) */
+    int nremoved, *removed;       /* the redundant rows, ascending */
+    int *envelope_first;          /* per active row: the first active row it shares a body
+                                   * with (G M^-1 G^T's envelope), or NULL: solved dense */
+    size_t *envelope_start;       /* per active row: its place in the envelope's values */
     int *joint_row;               /* per joint: its first row, or -1 (a reduced joint) */
     int *u_body;                  /* per velocity: its body */
     hx_binding **force_binding;   /* per force element */
@@ -121,6 +127,8 @@ void hx_dynamics_free(hx_dynamics *d);
 int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message *msg);
 void hx_dynamics_data_free(hx_dynamics_data *dd);
 
+/* The model's initial state as given (not projected); 0, or -1 (dd->message). */
+int hx_dynamics_model_state(const hx_dynamics *d, hx_dynamics_data *dd, double *y);
 /* Initial state from the model, projected onto the couplers; 0, or -1
  * (dd->message). */
 int hx_dynamics_initial_state(const hx_dynamics *d, hx_dynamics_data *dd, double *y);

@@ -1,0 +1,199 @@
+/* Redundant constraints and the assembly (docs/architecture.md, the
+ * constraint system): the rows found redundant at set-up and named, the runs
+ * with them removed against the same mechanisms modelled without redundancy,
+ * an inconsistent redundant constraint refused, the assembly's report. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim/dynamics/assembly.h"
+#include "sim/dynamics/constraints.h"
+#include "sim/dynamics/redundancy.h"
+#include "sim_support.h"
+#include "test_support.h"
+
+#define DATA(name) DATA_DIR "/redundant/" name
+
+/* The names of the removed rows, one a line. */
+static void removed_names(const hx_dynamics *d, char *text, size_t size)
+{
+    text[0] = '\0';
+    for (int k = 0; k < d->nremoved; ++k) {
+        char name[160];
+        hx_redundancy_name_row(d, d->removed[k], name, sizeof name);
+        strncat(text, name, size - strlen(text) - 2);
+        strcat(text, "\n");
+    }
+}
+
+/* The largest |phi| / scale of the removed rows along a run. */
+static double removed_drift(sim *s)
+{
+    const hx_dynamics *d = &s->dynamics;
+    double *phi = calloc((size_t)d->nrows, sizeof(double));
+    double *G = calloc(12 * (size_t)d->nrows, sizeof(double));
+    double worst = 0.0;
+    for (int r = 0; r < s->path.rows; ++r) {
+        assert_int_equal(hx_constraints_rows(d, &s->data, s->path.t[r],
+                                             s->path.y + r * s->path.n, phi, G, NULL), 0);
+        for (int k = 0; k < d->nremoved; ++k)
+            worst = fmax(worst, fabs(phi[d->removed[k]]) / d->rows[d->removed[k]].scale);
+    }
+    free(phi), free(G);
+    return worst;
+}
+
+/* The four-bar closed by four revolutes: 20 rows, 17 independent (the loop
+ * is planar: joint 4's out-of-plane point row and its two tilts repeat
+ * joints 1-3), and the motion of the bundled four-bar, whose spherical and
+ * cylindrical joints give exactly the 17. */
+static void four_revolutes_close_the_four_bar(void **state)
+{
+    (void)state;
+    sim r, b;
+    sim_run(&r, DATA("four_bar_revolutes.adm"), HX_METHOD_DOPRI5, 1e-10, 1.0, 0.01);
+    sim_run(&b, "four_bar.adm", HX_METHOD_DOPRI5, 1e-10, 1.0, 0.01);
+    assert_int_equal(r.dynamics.nrows, 20);
+    assert_int_equal(r.dynamics.nactive, 17);
+    char names[2048];
+    removed_names(&r.dynamics, names, sizeof names);
+    assert_string_equal(names, "JOINT/4 REVOLUTE: equation 3 (x_I - x_J along z)\n"
+                               "JOINT/4 REVOLUTE: equation 4 (z_I . x_J)\n"
+                               "JOINT/4 REVOLUTE: equation 5 (z_I . y_J)\n");
+    assert_int_equal(b.dynamics.nremoved, 0);
+    assert_int_equal(r.path.rows, b.path.rows);
+    assert_int_equal(r.dynamics.n, b.dynamics.n);
+    /* positions and velocities, each run to rtol 1e-10; the loop is planar and
+     * its in-plane rows are the same in both models: they agree to the bit */
+    double worst = 0.0;
+    for (int row = 0; row < r.path.rows; ++row)
+        for (int k = 0; k < r.dynamics.nq + r.dynamics.nu; ++k)
+            worst = fmax(worst, fabs(sim_state(&r, row, k) - sim_state(&b, row, k)));
+    printf("four revolutes against spherical + cylindrical: largest state difference %.3g\n",
+           worst);
+    assert_true(worst < 1e-8);
+    assert_true(removed_drift(&r) < 1e-10);
+    sim_close(&r);
+    sim_close(&b);
+}
+
+/* A door on four hinges along one axis: the first hinge's 5 rows hold it, the
+ * other 15 repeat them; it swings as the same door on one (reduced) hinge. */
+static void door_on_four_hinges(void **state)
+{
+    (void)state;
+    sim four, one;
+    sim_run(&four, DATA("door_four_hinges.adm"), HX_METHOD_DOPRI5, 1e-10, 1.0, 0.01);
+    sim_run(&one, DATA("door_one_hinge.adm"), HX_METHOD_DOPRI5, 1e-10, 1.0, 0.01);
+    const hx_dynamics *d = &four.dynamics;
+    assert_int_equal(d->nrows, 20);
+    assert_int_equal(d->nremoved, 15);
+    for (int k = 0; k < 15; ++k)
+        assert_int_equal(d->removed[k], 5 + k); /* joints 2, 3 and 4 whole */
+    const int q = d->dof[1].q, theta = one.dynamics.dof[1].q;
+    assert_int_equal(one.dynamics.nrows, 0);
+    double worst = 0.0, swing = 0.0;
+    for (int row = 0; row < four.path.rows; ++row) {
+        swing = fmax(swing, fabs(sim_state(&one, row, theta)));
+        /* the centre of mass turns about the z axis from (0.4, 0, 0.75) */
+        const double x = sim_state(&four, row, q), y = sim_state(&four, row, q + 1);
+        worst = fmax(worst, fabs(remainder(atan2(y, x) - sim_state(&one, row, theta), 2 * M_PI)));
+        assert_close(hypot(x, y), 0.4, 0, 1e-12);
+        assert_close(sim_state(&four, row, q + 2), 0.75, 0, 1e-12);
+    }
+    printf("door on four hinges against one: largest angle difference %.3g\n", worst);
+    assert_true(worst < 1e-8);
+    printf("largest swing %.3g rad\n", swing);
+    assert_true(swing > 0.1); /* it did swing */
+    assert_true(removed_drift(&four) < 1e-10);
+    sim_close(&four);
+    sim_close(&one);
+}
+
+/* The initial state's projection fails with msg; its text is returned. */
+static void initial_failure(const char *path, hx_message *msg)
+{
+    hx_session s;
+    hx_dynamics d;
+    assert_int_equal(hx_session_open(&s, path, stderr, msg), 0);
+    assert_int_equal(hx_dynamics_init(&d, &s, msg), 0);
+    double *y = calloc((size_t)d.n, sizeof(double));
+    assert_int_not_equal(hx_dynamics_initial_y(&d, y, msg), 0);
+    free(y);
+    hx_dynamics_free(&d);
+    hx_session_close(&s);
+}
+
+/* Hinge 2's pin 1 cm off the axis: its rows are redundant at set-up (the
+ * same G), but once hinge 1 is met it is off by 1 cm: the model locks. */
+static void inconsistent_redundant_hinge_fails(void **state)
+{
+    (void)state;
+    hx_message msg;
+    initial_failure(DATA("door_bent_hinge.adm"), &msg);
+    printf("%s\n", msg.text);
+    assert_non_null(strstr(msg.text, "a redundant constraint is not consistent at t = 0: JOINT/2"
+                                     " REVOLUTE: equation 1 (x_I - x_J along x), removed at the"
+                                     " set-up, is off by 0.00667")); /* 0.01 / 1.5, the length */
+    assert_non_null(strstr(msg.text, "the model locks"));
+}
+
+/* The four-bar's ground pivot 5 m away: no assembly, the joints named. */
+static void failed_assembly_names_the_joint(void **state)
+{
+    (void)state;
+    hx_message msg;
+    initial_failure(DATA("four_bar_far.adm"), &msg);
+    printf("%s\n", msg.text);
+    assert_non_null(strstr(msg.text, "cannot be satisfied at t = 0"));
+    assert_non_null(strstr(msg.text, "the largest at JOINT/"));
+    assert_non_null(strstr(msg.text, ": equation "));
+}
+
+/* The moves of a model's assembly; count returned. */
+static int moves_of(const char *path, hx_assembly_move *moves, int *ids)
+{
+    hx_session s;
+    hx_dynamics d;
+    hx_message msg;
+    assert_int_equal(hx_session_open(&s, path, stderr, &msg), 0);
+    assert_int_equal(hx_dynamics_init(&d, &s, &msg), 0);
+    const int count = hx_assembly_moves(&d, moves, &msg);
+    for (int k = 0; k < count; ++k)
+        ids[k] = s.model->bodies[moves[k].body].id;
+    hx_dynamics_free(&d);
+    hx_session_close(&s);
+    return count;
+}
+
+static void assembly_reports_the_parts_moved(void **state)
+{
+    (void)state;
+    hx_assembly_move moves[8];
+    int ids[8];
+    /* a block 1 mm off its FIXED seat whose I marker is its centre: the point
+     * rows move the centre alone, by 1 mm, and the axes already agree */
+    assert_int_equal(moves_of(DATA("block_off.adm"), moves, ids), 1);
+    assert_int_equal(ids[0], 2);
+    assert_close(moves[0].translation, 1e-3, 0, 1e-12);
+    assert_true(moves[0].rotation < 1e-12);
+    /* the four-bar with its ground pivot 2 mm off: every bar moves, the
+     * rocker the most; nothing reported for the bundled, assembled one */
+    assert_int_equal(moves_of(DATA("four_bar_off.adm"), moves, ids), 3);
+    assert_int_equal(ids[2], 4);
+    assert_true(moves[2].translation > 1e-4 && moves[2].translation < 2e-3);
+    assert_true(moves[2].rotation > 1e-3 && moves[2].rotation < 0.02);
+    assert_int_equal(moves_of(EXAMPLES_DIR "/four_bar.adm", moves, ids), 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(four_revolutes_close_the_four_bar),
+        cmocka_unit_test(door_on_four_hinges),
+        cmocka_unit_test(inconsistent_redundant_hinge_fails),
+        cmocka_unit_test(failed_assembly_names_the_joint),
+        cmocka_unit_test(assembly_reports_the_parts_moved),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
