@@ -213,21 +213,6 @@ static const char *command_file_path(const char *model, const run_args *args, ch
     return access(path, F_OK) == 0 ? path : NULL;
 }
 
-/* The command file's segments into schedule (the command line's values over
- * the file's); 0, or -1 with the reason printed. */
-static int follow(const char *acf, const char *model, double rtol, double atol,
-                  const run_args *args, hx_command_schedule *schedule)
-{
-    hx_message msg;
-    fprintf(stderr, "run: following the command file %s\n", acf);
-    hx_command_file *f = hx_command_file_read(acf, &msg);
-    const int ok = f != NULL && hx_command_schedule_make(f, acf, model, rtol, atol, &args->given,
-                                                         stderr, schedule, &msg) == 0;
-    hx_command_file_free(f);
-    if (!ok)
-        fprintf(stderr, "usrsub-harness run: %s\n", msg.text);
-    return ok ? 0 : -1;
-}
 
 int hx_command_run(int argc, char **argv)
 {
@@ -247,30 +232,41 @@ int hx_command_run(int argc, char **argv)
     char acf_path[4096];
     const char *acf = command_file_path(argv[optind], &args, acf_path, sizeof acf_path);
     hx_command_schedule schedule = {0};
+    hx_command_file *commands = NULL; /* read here: its path is the start folder's */
+    hx_message msg;
     if (acf != NULL) {
-        if (follow(acf, argv[optind], rtol, atol, &args, &schedule) != 0)
+        fprintf(stderr, "run: following the command file %s\n", acf);
+        if ((commands = hx_command_file_read(acf, &msg)) == NULL) {
+            fprintf(stderr, "usrsub-harness run: %s\n", msg.text);
             return 1;
-        so.integration.t_end = schedule.t_end;
+        }
     } else if (!(so.integration.t_end > 0.0)) {
         fprintf(stderr, "usrsub-harness run: --end T is needed (or a command file: --acf FILE)\n");
         return 2;
     }
+    hx_session s;
+    if (hx_session_open(&s, argv[optind], stderr, &msg) != 0) {
+        fprintf(stderr, "usrsub-harness run: %s\n", msg.text);
+        hx_command_file_free(commands);
+        return 1;
+    }
+    hx_dynamics d;
+    memset(&d, 0, sizeof d); /* freed as it is when the schedule is refused */
+    char path[4096];
+    /* the command file's segments, its switches resolved on the model's loads */
+    const int scheduled = commands == NULL ||
+                          hx_command_schedule_make(commands, acf, s.model, argv[optind], rtol, atol,
+                                                   &args.given, stderr, &schedule, &msg) == 0;
+    hx_command_file_free(commands);
+    if (schedule.nsegments > 0)
+        so.integration.t_end = schedule.t_end;
     if (so.integration.rtol <= 0.0)
         so.integration.rtol = rtol;
     if (so.integration.atol <= 0.0)
         so.integration.atol = atol;
     if (so.integration.output_interval <= 0.0)
         so.integration.output_interval = so.integration.t_end / 1000.0;
-    hx_session s;
-    hx_message msg;
-    if (hx_session_open(&s, argv[optind], stderr, &msg) != 0) {
-        fprintf(stderr, "usrsub-harness run: %s\n", msg.text);
-        hx_command_schedule_free(&schedule);
-        return 1;
-    }
-    hx_dynamics d;
-    char path[4096];
-    if (hx_dynamics_init(&d, &s, &msg) != 0 ||
+    if (!scheduled || hx_dynamics_init(&d, &s, &msg) != 0 ||
         (out != NULL && (so.csv = hx_open_output(hx_session_path(&s, out, path, sizeof path), &msg)) == NULL)) {
         fprintf(stderr, "usrsub-harness run: %s\n", msg.text);
         hx_dynamics_free(&d);

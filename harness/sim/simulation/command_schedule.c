@@ -32,15 +32,37 @@ static void check_names(const hx_command_file *f, const char *path, const char *
                 path, f->output);
 }
 
+/* ACTIVATE or DEACTIVATE c on the flags of the loads (docs/interface.md
+ * §9.9): SFORCE names a scalar load, VFORCE, VTORQUE and GFORCE a vector one,
+ * by id; 0, or -1 with the reason. */
+static int switch_loads(const hx_command *c, const char *path, const hx_model *m,
+                        unsigned char *off, hx_message *msg)
+{
+    const char *what = c->kind == HX_COMMAND_ACTIVATE ? "ACTIVATE" : "DEACTIVATE";
+    const int scalar = strcmp(c->element, "SFORCE") == 0;
+    if (!scalar && strcmp(c->element, "VFORCE") != 0 && strcmp(c->element, "VTORQUE") != 0 &&
+        strcmp(c->element, "GFORCE") != 0)
+        return hx_fail(msg, "%s:%d: %s/%s: the harness switches SFORCE, VFORCE, VTORQUE and"
+                       " GFORCE given by FUNCTION expressions, not other elements yet", path,
+                       c->line, what, c->element);
+    for (int i = 0; i < c->nids; ++i) {
+        int found = 0;
+        for (int k = 0; k < m->nloads; ++k)
+            if (m->loads[k].id == c->ids[i] && (m->loads[k].kind != HX_LOAD_VECTOR) == scalar) {
+                off[k] = c->kind == HX_COMMAND_DEACTIVATE;
+                found = 1;
+            }
+        if (!found)
+            return hx_fail(msg, "%s:%d: %s/%s: the model has no %s/%d given by FUNCTION"
+                           " expressions (one given by a user routine is not switched yet)",
+                           path, c->line, what, c->element, c->element, c->ids[i]);
+    }
+    return 0;
+}
+
 static int refuse(const char *path, const hx_command *c, hx_message *msg)
 {
     switch (c->kind) {
-    case HX_COMMAND_ACTIVATE:
-    case HX_COMMAND_DEACTIVATE:
-        return hx_fail(msg, "%s:%d: %s/%s: switching elements on or off between segments is not"
-                       " done by the harness yet (the dynamics' loads have no switch)", path,
-                       c->line, c->kind == HX_COMMAND_ACTIVATE ? "ACTIVATE" : "DEACTIVATE",
-                       c->element);
     case HX_COMMAND_VARIABLE:
         return hx_fail(msg, "%s:%d: VARIABLE/%d: redefining a FUNCTION between segments is not"
                        " done by the harness yet (the model's expressions are compiled once,"
@@ -78,14 +100,22 @@ static void apply(hx_command_schedule *s, const hx_command_overrides *over)
     s->t_end = s->segments[s->nsegments - 1].t_end;
 }
 
-int hx_command_schedule_make(const hx_command_file *f, const char *path, const char *model_path,
+int hx_command_schedule_make(const hx_command_file *f, const char *path, const hx_model *m,
+                             const char *model_path,
                              double rtol, double atol, const hx_command_overrides *over,
                              FILE *notes, hx_command_schedule *out, hx_message *msg)
 {
     memset(out, 0, sizeof *out);
     check_names(f, path, model_path, notes);
-    if (f->ncommands > 0 && (out->segments = calloc((size_t)f->ncommands, sizeof(hx_segment))) == NULL)
+    const size_t nloads = (size_t)m->nloads;
+    unsigned char *off = calloc(nloads + 1, 1); /* the loads switched off so far */
+    if (off == NULL || (f->ncommands > 0 &&
+                        ((out->segments = calloc((size_t)f->ncommands, sizeof(hx_segment))) == NULL ||
+                         (out->loads_off = calloc((size_t)f->ncommands * nloads + 1, 1)) == NULL))) {
+        free(off);
+        hx_command_schedule_free(out);
         return hx_fail(msg, "out of memory");
+    }
     double t = 0.0;
     int noted = 0;
     for (int k = 0; k < f->ncommands; ++k) {
@@ -104,17 +134,28 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const c
             }
             continue;
         }
+        if (c->kind == HX_COMMAND_ACTIVATE || c->kind == HX_COMMAND_DEACTIVATE) {
+            if (switch_loads(c, path, m, off, msg) != 0) {
+                free(off);
+                hx_command_schedule_free(out);
+                return -1;
+            }
+            continue;
+        }
         if (c->kind != HX_COMMAND_SIMULATE) {
+            free(off);
             hx_command_schedule_free(out);
             return refuse(path, c, msg);
         }
         if (c->analysis == HX_ANALYSIS_STATIC) {
+            free(off);
             hx_command_schedule_free(out);
             return hx_fail(msg, "%s:%d: SIMULATE/STATIC: static equilibrium is not computed by"
                            " the harness yet", path, c->line);
         }
         const double end = c->duration ? t + c->end : c->end;
         if (!(end > t)) {
+            free(off);
             hx_command_schedule_free(out);
             return hx_fail(msg, "%s:%d: SIMULATE/DYNAMIC: END=%g is not after the time the run"
                            " has reached, %g", path, c->line, end, t);
@@ -125,9 +166,12 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const c
             fprintf(notes, "%s:%d: warning: SIMULATE/DYNAMIC: DTOUT=%g does not divide the"
                     " segment from %g to %g: its last output is before its end\n", path,
                     c->line, dt, t, end);
-        out->segments[out->nsegments++] = (hx_segment){end, dt, rtol, atol};
+        unsigned char *flags = out->loads_off + (size_t)out->nsegments * nloads;
+        memcpy(flags, off, nloads);
+        out->segments[out->nsegments++] = (hx_segment){end, dt, rtol, atol, flags};
         t = end;
     }
+    free(off);
     if (out->nsegments == 0) {
         hx_command_schedule_free(out);
         return hx_fail(msg, "%s: no SIMULATE/DYNAMIC command: nothing to run", path);
@@ -139,5 +183,6 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const c
 void hx_command_schedule_free(hx_command_schedule *s)
 {
     free(s->segments);
+    free(s->loads_off);
     memset(s, 0, sizeof *s);
 }

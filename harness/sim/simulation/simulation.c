@@ -141,6 +141,8 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
     for (int k = 0; k < nsegments; ++k) {
         /* each segment from the state the one before it ended in (docs/interface.md
          * §9.9): the integrator restarts there; its first output is after t */
+        for (int j = 0; j < d->m->nloads; ++j)
+            d->load_off[j] = segments[k].loads_off != NULL ? segments[k].loads_off[j] : 0;
         hx_integrator_options io = opt->integration;
         io.output = output;
         io.t_end = segments[k].t_end;
@@ -180,6 +182,7 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
     result->max_phidot = dd->max_phidot;
     if (y_end != NULL)
         memcpy(y_end, y, sizeof(double) * (size_t)d->n);
+    memset(d->load_off, 0, (size_t)d->m->nloads); /* every load on again, as the model has it */
     return result->status == HX_INTEGRATION_OK ? 0 : -1;
 }
 
@@ -187,7 +190,7 @@ int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *
                 hx_simulation_result *result)
 {
     const hx_segment whole = {opt->integration.t_end, opt->integration.output_interval,
-                              opt->integration.rtol, opt->integration.atol};
+                              opt->integration.rtol, opt->integration.atol, NULL};
     return hx_simulate_segments(d, opt, &whole, 1, y_end, result);
 }
 
