@@ -85,6 +85,12 @@ static void a_run_in_order(void **state)
     assert_int_equal(c[7].analysis, HX_ANALYSIS_STATIC);
     assert_int_equal(c[8].kind, HX_COMMAND_STOP);
     assert_int_equal(c[8].line, 13);
+    assert_string_equal(c[0].settings, ""); /* ERROR alone: nothing else to note */
+    hx_command_file_free(f);
+    /* INTEGRATOR's settings besides its name and ERROR, named for the run's note */
+    f = parse_ok("m.adm\n\nINTEGRATOR/WSTIFF, HMAX=0.01, ERROR=1E-5, KMAX=3\n");
+    assert_string_equal(f->commands[0].integrator, "WSTIFF");
+    assert_string_equal(f->commands[0].settings, "HMAX, KMAX");
     hx_command_file_free(f);
 }
 

@@ -3,12 +3,16 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <unistd.h>
 
 #include "cmd/commands.h"
 #include "cmd/crash_report.h"
 #include "cmd/options.h"
 #include "sim/dynamics/assembly.h"
 #include "sim/dynamics/redundancy.h"
+#include "sim/simulation/command_schedule.h"
 #include "sim/simulation/simulation.h"
 #include "tools/bench/stability.h"
 
@@ -16,8 +20,12 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: usrsub-harness run MODEL.xml --end T [options]\n"
+            "       usrsub-harness run MODEL.adm [options]   (follows MODEL.acf beside it)\n"
             "\n"
-            "  --end T             end time\n"
+            "  --end T             end time (with a command file: the run cut there)\n"
+            "  --acf FILE          follow this command file (SIMULATE/DYNAMIC segments,\n"
+            "                      INTEGRATOR's ERROR); the options given override its values\n"
+            "  --no-acf            do not follow MODEL.acf beside MODEL.adm\n"
             "  --integrator NAME   dopri5 (default: adaptive, error-controlled) |\n"
             "                      bdf (implicit, variable order and step: stiff models) |\n"
             "                      rk4 | euler | symplectic-euler (fixed steps: give --step) |\n"
@@ -121,8 +129,16 @@ static void assembly_report(const hx_dynamics *d)
     free(moves);
 }
 
+/* What the command line says besides the options' values. */
+typedef struct run_args {
+    const char *out;
+    const char *acf;  /* --acf FILE */
+    int no_acf;       /* --no-acf */
+    hx_command_overrides given; /* the values given, 0 where not */
+} run_args;
+
 /* Reads the options into so; returns -1 (exit 2) on a bad one, 1 on --help. */
-static int parse(int argc, char **argv, hx_simulation_options *so, const char **out)
+static int parse(int argc, char **argv, hx_simulation_options *so, run_args *args)
 {
     static const struct option options[] = {
         {"integrator", required_argument, NULL, 'i'}, {"step", required_argument, NULL, 's'},
@@ -132,6 +148,7 @@ static int parse(int argc, char **argv, hx_simulation_options *so, const char **
         {"max-step", required_argument, NULL, 'm'},   {"quiet", no_argument, NULL, 'q'},
         {"jacobian", required_argument, NULL, 'j'},   {"max-order", required_argument, NULL, 'O'},
         {"linear-solver", required_argument, NULL, 'L'},
+        {"acf", required_argument, NULL, 'A'},        {"no-acf", no_argument, NULL, 'N'},
         {"help", no_argument, NULL, 'h'},             {0, 0, 0, 0}};
     hx_integrator_options *io = &so->integration;
     int opt;
@@ -163,7 +180,9 @@ static int parse(int argc, char **argv, hx_simulation_options *so, const char **
         case 'O': bad = hx_option_max_order("run", optarg, &io->max_order); break;
         case 's': bad = hx_option_positive("run", "step", optarg, &io->step); break;
         case 'e': bad = hx_option_positive("run", "end", optarg, &io->t_end); break;
-        case 'o': *out = optarg; break;
+        case 'o': args->out = optarg; break;
+        case 'A': args->acf = optarg; break;
+        case 'N': args->no_acf = 1; break;
         case 'I': bad = hx_option_positive("run", "output-interval", optarg, &io->output_interval); break;
         case 'r': bad = hx_option_positive("run", "rtol", optarg, &io->rtol); break;
         case 'a': bad = hx_option_positive("run", "atol", optarg, &io->atol); break;
@@ -180,10 +199,11 @@ static int parse(int argc, char **argv, hx_simulation_options *so, const char **
         usage(stderr);
         return -1;
     }
-    if (!(io->t_end > 0.0)) {
-        fprintf(stderr, "usrsub-harness run: --end T is needed\n");
+    if (args->acf != NULL && args->no_acf) {
+        fprintf(stderr, "usrsub-harness run: --acf and --no-acf: one of them\n");
         return -1;
     }
+    args->given = (hx_command_overrides){io->t_end, io->output_interval, io->rtol, io->atol};
     if (!hx_method_adaptive(io->method) && !(io->step > 0.0)) { /* --step takes only > 0 */
         fprintf(stderr, "usrsub-harness run: %s takes fixed steps: give --step (or use the"
                 " default dopri5, which chooses its own)\n", hx_method_name(io->method));
@@ -192,31 +212,82 @@ static int parse(int argc, char **argv, hx_simulation_options *so, const char **
     return 0;
 }
 
+/* The command file the run follows: --acf's, else MODEL.acf beside an .adm
+ * MODEL (the same name), unless --no-acf; NULL when none (docs/interface.md
+ * §9.9). */
+static const char *command_file_path(const char *model, const run_args *args, char *path,
+                                     size_t size)
+{
+    if (args->no_acf)
+        return NULL;
+    if (args->acf != NULL)
+        return args->acf;
+    const size_t n = strlen(model);
+    if (n < 4 || n >= size || strcasecmp(model + n - 4, ".adm") != 0)
+        return NULL;
+    snprintf(path, size, "%.*s.acf", (int)(n - 4), model);
+    return access(path, F_OK) == 0 ? path : NULL;
+}
+
+
 int hx_command_run(int argc, char **argv)
 {
     hx_simulation_options so = {0};
     hx_integrator_defaults(&so.integration);
+    /* the tolerances given are told from the defaults: a command file's ERROR
+     * stands unless they are */
+    const double rtol = so.integration.rtol, atol = so.integration.atol;
+    so.integration.rtol = so.integration.atol = 0.0;
     so.integration.method = HX_METHOD_DOPRI5;
     so.progress = 1;
-    const char *out = NULL;
-    const int parsed = parse(argc, argv, &so, &out);
+    run_args args = {0};
+    const int parsed = parse(argc, argv, &so, &args);
     if (parsed != 0)
         return parsed > 0 ? 0 : 2;
-    if (so.integration.output_interval <= 0.0)
-        so.integration.output_interval = so.integration.t_end / 1000.0;
-    hx_session s;
+    const char *out = args.out;
+    char acf_path[4096];
+    const char *acf = command_file_path(argv[optind], &args, acf_path, sizeof acf_path);
+    hx_command_schedule schedule = {0};
+    hx_command_file *commands = NULL; /* read here: its path is the start folder's */
     hx_message msg;
+    if (acf != NULL) {
+        fprintf(stderr, "run: following the command file %s\n", acf);
+        if ((commands = hx_command_file_read(acf, &msg)) == NULL) {
+            fprintf(stderr, "usrsub-harness run: %s\n", msg.text);
+            return 1;
+        }
+    } else if (!(so.integration.t_end > 0.0)) {
+        fprintf(stderr, "usrsub-harness run: --end T is needed (or a command file: --acf FILE)\n");
+        return 2;
+    }
+    hx_session s;
     if (hx_session_open(&s, argv[optind], stderr, &msg) != 0) {
         fprintf(stderr, "usrsub-harness run: %s\n", msg.text);
+        hx_command_file_free(commands);
         return 1;
     }
     hx_dynamics d;
+    memset(&d, 0, sizeof d); /* freed as it is when the schedule is refused */
     char path[4096];
-    if (hx_dynamics_init(&d, &s, &msg) != 0 ||
+    /* the command file's segments, its switches resolved on the model's loads */
+    const int scheduled = commands == NULL ||
+                          hx_command_schedule_make(commands, acf, s.model, argv[optind], rtol, atol,
+                                                   &args.given, stderr, &schedule, &msg) == 0;
+    hx_command_file_free(commands);
+    if (schedule.nsegments > 0)
+        so.integration.t_end = schedule.t_end;
+    if (so.integration.rtol <= 0.0)
+        so.integration.rtol = rtol;
+    if (so.integration.atol <= 0.0)
+        so.integration.atol = atol;
+    if (so.integration.output_interval <= 0.0)
+        so.integration.output_interval = so.integration.t_end / 1000.0;
+    if (!scheduled || hx_dynamics_init(&d, &s, &msg) != 0 ||
         (out != NULL && (so.csv = hx_open_output(hx_session_path(&s, out, path, sizeof path), &msg)) == NULL)) {
         fprintf(stderr, "usrsub-harness run: %s\n", msg.text);
         hx_dynamics_free(&d);
         hx_session_close(&s);
+        hx_command_schedule_free(&schedule);
         return 1;
     }
     /* the redundant constraint rows the set-up removed, each said once */
@@ -240,7 +311,10 @@ int hx_command_run(int argc, char **argv)
                 " diverge\n", so.integration.step, hx_method_name(so.integration.method), limit,
                 st.re, st.im);
     hx_simulation_result result;
-    const int status = hx_simulate(&d, &so, NULL, &result);
+    const int status = schedule.nsegments > 0
+                           ? hx_simulate_segments(&d, &so, schedule.segments, schedule.nsegments,
+                                                  NULL, &result)
+                           : hx_simulate(&d, &so, NULL, &result);
     hx_simulation_summary(stdout, &d, &so, &result);
     if (result.status == HX_INTEGRATION_UNSTABLE && limited)
         printf("  the step %g %s the stability limit %.3g of %s at t = 0 (|lambda| = %.4g)\n",
@@ -253,5 +327,6 @@ int hx_command_run(int argc, char **argv)
         fclose(so.csv);
     hx_dynamics_free(&d);
     hx_session_close(&s);
+    hx_command_schedule_free(&schedule);
     return status == 0 ? 0 : 1;
 }

@@ -185,6 +185,12 @@ static int fill(const hx_adm_spec *spec, const hx_adm_value *v, const hx_adm_sta
         if (!(c->error > 0.0))
             return hx_fail(msg, "ERROR=%g must be positive", c->error);
     }
+    for (int k = NINTEGRATORS + 1; integrator[k].name != NULL; ++k)
+        if (v[k].present) {
+            const size_t n = strlen(c->settings);
+            snprintf(c->settings + n, sizeof c->settings - n, "%s%s", n > 0 ? ", " : "",
+                     integrator[k].name);
+        }
     return 0;
 }
 

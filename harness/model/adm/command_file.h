@@ -46,9 +46,11 @@ typedef struct hx_command {
     /* ACCGRAV: the components given (given[k]) */
     double gravity[3];
     int gravity_given[3];
-    /* INTEGRATOR: its name ("" when not given) and ERROR (0 when not given) */
+    /* INTEGRATOR: its name ("" when not given), ERROR (0 when not given) and
+     * the names of its other settings given ("HMAX, KMAX"; "" when none) */
     char integrator[16];
     double error;
+    char settings[64];
 } hx_command;
 
 typedef struct hx_command_file {

@@ -83,6 +83,10 @@ typedef struct hx_dynamics {
     unsigned char *world_aligned; /* per force element: its output axes are the world's for
                                    * good (on ground, unturned) */
     struct hx_stateeqns *stateeqns; /* the Force_StateEqn elements (stateeqns.h) */
+    unsigned char *load_off;      /* per load: switched off (a command file's DEACTIVATE,
+                                   * docs/interface.md §9.9): it puts nothing on the bodies
+                                   * nor in the Jacobian. The one thing a run changes, and
+                                   * only between its segments, when nothing evaluates */
 } hx_dynamics;
 
 /* What the evaluations ask beyond the right-hand side. */

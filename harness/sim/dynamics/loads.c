@@ -118,6 +118,8 @@ int hx_loads_apply(const hx_dynamics *d, hx_dynamics_data *dd, double *power)
             v3_axpy(dd->force + 3 * k, m->bodies[k].mass / d->ucf, m->gravity);
     *power = 0.0;
     for (int k = 0; k < m->nloads; ++k) {
+        if (d->load_off[k])
+            continue;
         hx_load_share share;
         hx_message msg;
         if (hx_load_share_at(m, &dd->frames, k, &share, &msg) != 0)

@@ -24,6 +24,8 @@ int hx_load_blocks(hx_jacobian *jac, double t, const double *y)
     const hx_dynamics *d = jac->d;
     const hx_model *m = d->m;
     for (int k = 0; k < m->nloads; ++k) {
+        if (d->load_off[k])
+            continue; /* switched off: nothing on the bodies, nothing here */
         int bodies[HX_LOAD_BODIES_MAX];
         const int nbodies = hx_load_bodies(m, k, bodies);
         for (int i = 0; i < nbodies; ++i) {

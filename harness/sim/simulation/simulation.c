@@ -85,8 +85,31 @@ static int output_work(run_context *rc, double t, const double *y)
     return 0;
 }
 
+/* A later segment's counts added to the run's; its last step, order and
+ * the rest of what describes the end taken. */
+static void add_stats(hx_integrator_stats *run, const hx_integrator_stats *segment)
+{
+    const hx_integrator_stats before = *run;
+    *run = *segment;
+    run->steps += before.steps;
+    run->rejected += before.rejected;
+    run->evaluations += before.evaluations;
+    run->newton_iterations += before.newton_iterations;
+    run->jacobians += before.jacobians;
+    run->error_test_failures += before.error_test_failures;
+    run->convergence_failures += before.convergence_failures;
+    run->fd_jacobian_evaluations += before.fd_jacobian_evaluations;
+    run->partial_calls += before.partial_calls;
+    run->jacobian_seconds += before.jacobian_seconds;
+    if (before.stiff) { /* where it first seemed stiff */
+        run->stiff = 1;
+        run->t_stiff = before.t_stiff;
+    }
+}
+
 /* The run's work once its data is set up; the caller frees both. */
-static int simulate(run_context *rc, double *y, double *y_end)
+static int simulate(run_context *rc, const hx_segment *segments, int nsegments, double *y,
+                    double *y_end)
 {
     const hx_dynamics *d = rc->d;
     hx_dynamics_data *dd = rc->dd;
@@ -113,10 +136,27 @@ static int simulate(run_context *rc, double *y, double *y_end)
         opt->observer(opt->observer_ctx, d, dd, 0.0, y);
     hx_ode ode = {d->n, d->nq, d->nu, 2 /* the work accumulators */, rhs, project, advance, rc,
                   analytic ? jacobian : NULL, bdf ? &rc->jacobian->pattern : NULL};
-    hx_integrator_options io = opt->integration;
-    io.output = output;
     const double start = hx_seconds();
-    result->status = hx_integrate(&ode, 0.0, y, &io, &result->stats);
+    double t = 0.0;
+    for (int k = 0; k < nsegments; ++k) {
+        /* each segment from the state the one before it ended in (docs/interface.md
+         * §9.9): the integrator restarts there; its first output is after t */
+        for (int j = 0; j < d->m->nloads; ++j)
+            d->load_off[j] = segments[k].loads_off != NULL ? segments[k].loads_off[j] : 0;
+        hx_integrator_options io = opt->integration;
+        io.output = output;
+        io.t_end = segments[k].t_end;
+        io.output_interval = segments[k].output_interval;
+        io.rtol = segments[k].rtol;
+        io.atol = segments[k].atol;
+        hx_integrator_stats stats;
+        result->status = hx_integrate(&ode, t, y, &io, k == 0 ? &result->stats : &stats);
+        if (k > 0)
+            add_stats(&result->stats, &stats);
+        if (result->status != HX_INTEGRATION_OK)
+            break;
+        t = segments[k].t_end;
+    }
     result->seconds = hx_seconds() - start;
     if (bdf) {
         result->stats.partial_calls = rc->jacobian->partial_calls;
@@ -142,11 +182,21 @@ static int simulate(run_context *rc, double *y, double *y_end)
     result->max_phidot = dd->max_phidot;
     if (y_end != NULL)
         memcpy(y_end, y, sizeof(double) * (size_t)d->n);
+    memset(d->load_off, 0, (size_t)d->m->nloads); /* every load on again, as the model has it */
     return result->status == HX_INTEGRATION_OK ? 0 : -1;
 }
 
 int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
                 hx_simulation_result *result)
+{
+    const hx_segment whole = {opt->integration.t_end, opt->integration.output_interval,
+                              opt->integration.rtol, opt->integration.atol, NULL};
+    return hx_simulate_segments(d, opt, &whole, 1, y_end, result);
+}
+
+int hx_simulate_segments(const hx_dynamics *d, const hx_simulation_options *opt,
+                         const hx_segment *segments, int nsegments, double *y_end,
+                         hx_simulation_result *result)
 {
     memset(result, 0, sizeof *result);
     result->n = d->n;
@@ -166,7 +216,7 @@ int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *
         result->status = HX_INTEGRATION_FAILED;
     } else {
         run_context rc = {d, &dd, opt, result, hx_seconds(), hx_seconds(), &jac};
-        status = simulate(&rc, y, y_end);
+        status = simulate(&rc, segments, nsegments, y, y_end);
     }
     hx_jacobian_free(&jac);
     hx_dynamics_data_free(&dd);

@@ -52,6 +52,24 @@ typedef struct hx_simulation_result {
 int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
                 hx_simulation_result *result);
 
+/* One segment of a run (a command file's SIMULATE/DYNAMIC, docs/interface.md
+ * §9.9): its end time (absolute), the time between its CSV rows (0: every
+ * step), its tolerances, and the loads switched off during it (one flag per
+ * load of the model; NULL: none). */
+typedef struct hx_segment {
+    double t_end, output_interval, rtol, atol;
+    const unsigned char *loads_off;
+} hx_segment;
+
+/* The same run in segments, one after the other: each from the state the one
+ * before it ended in (the integrator restarted there), with its own output
+ * times (none at its start: the segment before wrote that row); one CSV and
+ * one result, counts summed. opt's t_end is the progress line's; the
+ * segments' own times and tolerances are those integrated. */
+int hx_simulate_segments(const hx_dynamics *d, const hx_simulation_options *opt,
+                         const hx_segment *segments, int nsegments, double *y_end,
+                         hx_simulation_result *result);
+
 /* Prints the summary lines of a result. */
 void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_options *opt,
                            const hx_simulation_result *result);

@@ -1,0 +1,188 @@
+/* A command file's run as segments (command_schedule.h). */
+#include "sim/simulation/command_schedule.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+/* The name of a path without its folder and extension, into out. */
+static void stem(const char *path, char *out, size_t size)
+{
+    const char *slash = strrchr(path, '/');
+    snprintf(out, size, "%s", slash != NULL ? slash + 1 : path);
+    char *dot = strrchr(out, '.');
+    if (dot != NULL && dot != out)
+        *dot = '\0';
+}
+
+/* Adams reads the dataset the first line names; the harness runs the one on
+ * its command line, and says so when they differ. */
+static void check_names(const hx_command_file *f, const char *path, const char *model_path,
+                        FILE *notes)
+{
+    char named[256], model[256];
+    stem(f->dataset, named, sizeof named);
+    stem(model_path, model, sizeof model);
+    if (notes != NULL && strcasecmp(named, model) != 0)
+        fprintf(notes, "%s:1: warning: the command file names the dataset '%s'; the model run"
+                " is %s (the command line's)\n", path, f->dataset, model_path);
+    if (notes != NULL && f->output[0] != '\0')
+        fprintf(notes, "%s:2: note: the outputs' name '%s' is not used (the CSV is --out's)\n",
+                path, f->output);
+}
+
+/* ACTIVATE or DEACTIVATE c on the flags of the loads (docs/interface.md
+ * §9.9): SFORCE names a scalar load, VFORCE, VTORQUE and GFORCE a vector one,
+ * by id; 0, or -1 with the reason. */
+static int switch_loads(const hx_command *c, const char *path, const hx_model *m,
+                        unsigned char *off, hx_message *msg)
+{
+    const char *what = c->kind == HX_COMMAND_ACTIVATE ? "ACTIVATE" : "DEACTIVATE";
+    const int scalar = strcmp(c->element, "SFORCE") == 0;
+    if (!scalar && strcmp(c->element, "VFORCE") != 0 && strcmp(c->element, "VTORQUE") != 0 &&
+        strcmp(c->element, "GFORCE") != 0)
+        return hx_fail(msg, "%s:%d: %s/%s: the harness switches SFORCE, VFORCE, VTORQUE and"
+                       " GFORCE given by FUNCTION expressions, not other elements yet", path,
+                       c->line, what, c->element);
+    for (int i = 0; i < c->nids; ++i) {
+        int found = 0;
+        for (int k = 0; k < m->nloads; ++k)
+            if (m->loads[k].id == c->ids[i] && (m->loads[k].kind != HX_LOAD_VECTOR) == scalar) {
+                off[k] = c->kind == HX_COMMAND_DEACTIVATE;
+                found = 1;
+            }
+        if (!found)
+            return hx_fail(msg, "%s:%d: %s/%s: the model has no %s/%d given by FUNCTION"
+                           " expressions (one given by a user routine is not switched yet)",
+                           path, c->line, what, c->element, c->element, c->ids[i]);
+    }
+    return 0;
+}
+
+static int refuse(const char *path, const hx_command *c, hx_message *msg)
+{
+    switch (c->kind) {
+    case HX_COMMAND_VARIABLE:
+        return hx_fail(msg, "%s:%d: VARIABLE/%d: redefining a FUNCTION between segments is not"
+                       " done by the harness yet (the model's expressions are compiled once,"
+                       " when it is read)", path, c->line, c->ids[0]);
+    case HX_COMMAND_ACCGRAV:
+        return hx_fail(msg, "%s:%d: ACCGRAV: changing gravity between segments is not done by"
+                       " the harness yet (gravity is the model's, read once)", path, c->line);
+    default:
+        return hx_fail(msg, "%s:%d: a command the run does not take", path, c->line);
+    }
+}
+
+/* The command line's --end cuts the schedule there (or draws its last
+ * segment on to it); its --output-interval, --rtol and --atol replace every
+ * segment's. */
+static void apply(hx_command_schedule *s, const hx_command_overrides *over)
+{
+    if (over->t_end > 0.0) {
+        int n = 0;
+        double start = 0.0;
+        while (n < s->nsegments && start < over->t_end)
+            start = s->segments[n++].t_end;
+        s->nsegments = n;
+        s->segments[n - 1].t_end = over->t_end;
+    }
+    for (int k = 0; k < s->nsegments; ++k) {
+        hx_segment *g = &s->segments[k];
+        if (over->output_interval > 0.0)
+            g->output_interval = over->output_interval;
+        if (over->rtol > 0.0)
+            g->rtol = over->rtol;
+        if (over->atol > 0.0)
+            g->atol = over->atol;
+    }
+    s->t_end = s->segments[s->nsegments - 1].t_end;
+}
+
+int hx_command_schedule_make(const hx_command_file *f, const char *path, const hx_model *m,
+                             const char *model_path,
+                             double rtol, double atol, const hx_command_overrides *over,
+                             FILE *notes, hx_command_schedule *out, hx_message *msg)
+{
+    memset(out, 0, sizeof *out);
+    check_names(f, path, model_path, notes);
+    const size_t nloads = (size_t)m->nloads;
+    unsigned char *off = calloc(nloads + 1, 1); /* the loads switched off so far */
+    if (off == NULL || (f->ncommands > 0 &&
+                        ((out->segments = calloc((size_t)f->ncommands, sizeof(hx_segment))) == NULL ||
+                         (out->loads_off = calloc((size_t)f->ncommands * nloads + 1, 1)) == NULL))) {
+        free(off);
+        hx_command_schedule_free(out);
+        return hx_fail(msg, "out of memory");
+    }
+    double t = 0.0;
+    int noted = 0;
+    for (int k = 0; k < f->ncommands; ++k) {
+        const hx_command *c = &f->commands[k];
+        if (c->kind == HX_COMMAND_STOP)
+            break;
+        if (c->kind == HX_COMMAND_INTEGRATOR) {
+            if (c->error > 0.0)
+                rtol = atol = c->error; /* Adams's ERROR: the local error, relative and absolute */
+            if (notes != NULL && !noted && (c->integrator[0] != '\0' || c->settings[0] != '\0')) {
+                fprintf(notes, "%s:%d: note: INTEGRATOR: %s%s%s read and of no effect (the"
+                        " integrator is --integrator's; ERROR is the run's rtol and atol)\n",
+                        path, c->line, c->integrator, c->integrator[0] != '\0' &&
+                        c->settings[0] != '\0' ? ", " : "", c->settings);
+                noted = 1;
+            }
+            continue;
+        }
+        if (c->kind == HX_COMMAND_ACTIVATE || c->kind == HX_COMMAND_DEACTIVATE) {
+            if (switch_loads(c, path, m, off, msg) != 0) {
+                free(off);
+                hx_command_schedule_free(out);
+                return -1;
+            }
+            continue;
+        }
+        if (c->kind != HX_COMMAND_SIMULATE) {
+            free(off);
+            hx_command_schedule_free(out);
+            return refuse(path, c, msg);
+        }
+        if (c->analysis == HX_ANALYSIS_STATIC) {
+            free(off);
+            hx_command_schedule_free(out);
+            return hx_fail(msg, "%s:%d: SIMULATE/STATIC: static equilibrium is not computed by"
+                           " the harness yet", path, c->line);
+        }
+        const double end = c->duration ? t + c->end : c->end;
+        if (!(end > t)) {
+            free(off);
+            hx_command_schedule_free(out);
+            return hx_fail(msg, "%s:%d: SIMULATE/DYNAMIC: END=%g is not after the time the run"
+                           " has reached, %g", path, c->line, end, t);
+        }
+        const double dt = c->steps > 0 ? (end - t) / c->steps : c->dtout;
+        const double outputs = (end - t) / dt;
+        if (notes != NULL && fabs(outputs - round(outputs)) > 1e-9 * outputs)
+            fprintf(notes, "%s:%d: warning: SIMULATE/DYNAMIC: DTOUT=%g does not divide the"
+                    " segment from %g to %g: its last output is before its end\n", path,
+                    c->line, dt, t, end);
+        unsigned char *flags = out->loads_off + (size_t)out->nsegments * nloads;
+        memcpy(flags, off, nloads);
+        out->segments[out->nsegments++] = (hx_segment){end, dt, rtol, atol, flags};
+        t = end;
+    }
+    free(off);
+    if (out->nsegments == 0) {
+        hx_command_schedule_free(out);
+        return hx_fail(msg, "%s: no SIMULATE/DYNAMIC command: nothing to run", path);
+    }
+    apply(out, over);
+    return 0;
+}
+
+void hx_command_schedule_free(hx_command_schedule *s)
+{
+    free(s->segments);
+    free(s->loads_off);
+    memset(s, 0, sizeof *s);
+}

@@ -1,0 +1,331 @@
+/*
+ * run with a command file (docs/interface.md §9.9), in-process with stdout
+ * and stderr captured: tests/data/oscillator.adm and the oscillator.acf
+ * beside it (two SIMULATE/DYNAMIC segments with different DTOUT) against a
+ * single run with the same output times and against the closed form; --acf
+ * and --no-acf; the command line over the file; the commands refused by
+ * name and file:line.
+ */
+#include <fcntl.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cmd/commands.h"
+#include "test_support.h"
+
+#define OSCILLATOR DATA_DIR "/oscillator.adm"
+
+typedef struct captured {
+    int status;
+    char out[16384], err[16384];
+} captured;
+
+static void read_back(const char *path, char *text, size_t size)
+{
+    FILE *f = fopen(path, "r");
+    size_t n = f != NULL ? fread(text, 1, size - 1, f) : 0;
+    text[n] = '\0';
+    if (f != NULL)
+        fclose(f);
+}
+
+/* Runs `run` with args (NULL-terminated), stdout and stderr to files (dup2),
+ * read back (as tests/test_commands.c does). */
+static void run(const char *const *args, captured *c)
+{
+    char out_path[512], err_path[512];
+    snprintf(out_path, sizeof out_path, "%s/acf_stdout.txt", test_temp_dir());
+    snprintf(err_path, sizeof err_path, "%s/acf_stderr.txt", test_temp_dir());
+    char *argv[32];
+    int argc = 0;
+    argv[argc++] = "run";
+    for (; args[argc - 1] != NULL && argc < 31; ++argc)
+        argv[argc] = (char *)args[argc - 1];
+    argv[argc] = NULL;
+    fflush(stdout);
+    fflush(stderr);
+    const int out_fd = open(out_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err_fd = open(err_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int saved_out = dup(STDOUT_FILENO), saved_err = dup(STDERR_FILENO);
+    assert_true(out_fd >= 0 && err_fd >= 0 && saved_out >= 0 && saved_err >= 0);
+    dup2(out_fd, STDOUT_FILENO);
+    dup2(err_fd, STDERR_FILENO);
+    close(out_fd);
+    close(err_fd);
+    c->status = hx_command_run(argc, argv);
+    fflush(stdout);
+    fflush(stderr);
+    dup2(saved_out, STDOUT_FILENO);
+    dup2(saved_err, STDERR_FILENO);
+    close(saved_out);
+    close(saved_err);
+    read_back(out_path, c->out, sizeof c->out);
+    read_back(err_path, c->err, sizeof c->err);
+}
+
+static const char *temp_path(const char *name)
+{
+    static char paths[8][512];
+    static int next;
+    char *path = paths[next++ % 8];
+    snprintf(path, 512, "%s/%s", test_temp_dir(), name);
+    return path;
+}
+
+#define MAX_ROWS 64
+
+/* A CSV's rows (header left out) as lines, and their times; the count. */
+typedef struct table {
+    int n;
+    double t[MAX_ROWS], x[MAX_ROWS], y[MAX_ROWS];
+    char row[MAX_ROWS][2048];
+} table;
+
+static void read_table(const char *path, table *tb)
+{
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    char line[2048];
+    tb->n = 0;
+    assert_non_null(fgets(line, sizeof line, f)); /* the header: t,body2.x,... */
+    assert_true(strncmp(line, "t,body2.x,", 10) == 0);
+    while (fgets(line, sizeof line, f) != NULL) {
+        assert_true(tb->n < MAX_ROWS);
+        snprintf(tb->row[tb->n], sizeof tb->row[0], "%s", line);
+        assert_int_equal(sscanf(line, "%lf,%lf,%lf", &tb->t[tb->n], &tb->x[tb->n], &tb->y[tb->n]),
+                         3);
+        tb->n++;
+    }
+    fclose(f);
+}
+
+/* The oscillator's closed form (tests/data/oscillator.adm): released at rest
+ * 0.1 m out, zeta omega = c / 2m = 1, omega_d = sqrt(k/m - 1) = sqrt(99). */
+static double closed_form(double t)
+{
+    const double w = sqrt(99.0);
+    return 1.0 + 0.1 * exp(-t) * (cos(w * t) + sin(w * t) / w);
+}
+
+static int steps_of(const char *out)
+{
+    const char *p = strstr(out, "steps ");
+    assert_non_null(p);
+    return atoi(p + 6);
+}
+
+/* ---- segments ------------------------------------------------------------------------------ */
+
+static void segments_follow_one_another(void **state)
+{
+    (void)state;
+    captured c;
+    table seg, one;
+    /* MODEL.acf beside MODEL.adm is followed, and said so */
+    run((const char *const[]){OSCILLATOR, "--quiet", "--out", temp_path("seg.csv"), NULL}, &c);
+    assert_int_equal(c.status, 0);
+    assert_contains(c.err, "run: following the command file " DATA_DIR "/oscillator.acf");
+    assert_contains(c.err, "oscillator.acf:3: note: INTEGRATOR: GSTIFF read and of no effect");
+    read_table(temp_path("seg.csv"), &seg);
+    /* 0 to 1 by 0.1, then 1 to 2 by 0.05: 11 + 20 rows, t = 1 once */
+    assert_int_equal(seg.n, 31);
+    for (int k = 0; k < seg.n; ++k) {
+        const double t = k <= 10 ? 0.1 * k : 1.0 + 0.05 * (k - 10);
+        assert_close(seg.t[k], t, 0.0, 1e-12);
+        /* ERROR=1e-9 is the tolerance: the closed form to well within 1e-7 */
+        assert_close(seg.x[k], closed_form(t), 0.0, 1e-7);
+    }
+    /* the same with a fixed step, against one run with the same output times
+     * (every 0.05 s): the segments' rows are the single run's, digit for
+     * digit (the second segment went on from the first's end state) */
+    run((const char *const[]){OSCILLATOR, "--quiet", "--integrator", "rk4", "--step", "0.001",
+                              "--out", temp_path("seg_rk4.csv"), NULL}, &c);
+    assert_int_equal(c.status, 0);
+    run((const char *const[]){OSCILLATOR, "--no-acf", "--end", "2", "--output-interval", "0.05",
+                              "--quiet", "--integrator", "rk4", "--step", "0.001", "--out",
+                              temp_path("one_rk4.csv"), NULL}, &c);
+    assert_int_equal(c.status, 0);
+    assert_null(strstr(c.err, "following the command file"));
+    read_table(temp_path("seg_rk4.csv"), &seg);
+    read_table(temp_path("one_rk4.csv"), &one);
+    assert_int_equal(seg.n, 31);
+    assert_int_equal(one.n, 41);
+    for (int k = 0; k < seg.n; ++k) {
+        const int j = k <= 10 ? 2 * k : k + 10; /* the single run's row at seg's time */
+        assert_string_equal(seg.row[k], one.row[j]);
+        assert_close(seg.x[k], closed_form(seg.t[k]), 0.0, 1e-7);
+    }
+}
+
+/* ---- which command file -------------------------------------------------------------------- */
+
+static void acf_and_no_acf(void **state)
+{
+    (void)state;
+    captured c;
+    table tb;
+    const char *acf = test_write_file("short.acf", "elsewhere.adm\n\n"
+                                      "SIMULATE/DYNAMIC, END=0.3, STEPS=3\n");
+    run((const char *const[]){OSCILLATOR, "--acf", acf, "--quiet", "--out", temp_path("a.csv"),
+                              NULL}, &c);
+    assert_int_equal(c.status, 0);
+    assert_contains(c.err, "run: following the command file", "short.acf");
+    /* Adams would read the dataset the first line names: the harness runs its own */
+    assert_contains(c.err, "short.acf:1: warning: the command file names the dataset"
+                    " 'elsewhere.adm'; the model run is " OSCILLATOR);
+    read_table(temp_path("a.csv"), &tb);
+    assert_int_equal(tb.n, 4);
+    assert_close(tb.t[3], 0.3, 0.0, 1e-12);
+    /* --no-acf: the command line alone, which then needs --end */
+    run((const char *const[]){OSCILLATOR, "--no-acf", "--quiet", NULL}, &c);
+    assert_int_equal(c.status, 2);
+    assert_contains(c.err, "--end T is needed");
+    assert_null(strstr(c.err, "following"));
+    run((const char *const[]){OSCILLATOR, "--no-acf", "--acf", acf, NULL}, &c);
+    assert_int_equal(c.status, 2);
+    assert_contains(c.err, "--acf and --no-acf");
+    run((const char *const[]){OSCILLATOR, "--acf", temp_path("missing.acf"), NULL}, &c);
+    assert_int_equal(c.status, 1);
+    assert_contains(c.err, "missing.acf: cannot open the command file");
+}
+
+/* ---- the command line over the file -------------------------------------------------------- */
+
+static void options_override_the_file(void **state)
+{
+    (void)state;
+    captured c;
+    table tb;
+    /* --end cuts the run inside the second segment */
+    run((const char *const[]){OSCILLATOR, "--end", "1.5", "--quiet", "--out", temp_path("e.csv"),
+                              NULL}, &c);
+    assert_int_equal(c.status, 0);
+    read_table(temp_path("e.csv"), &tb);
+    assert_int_equal(tb.n, 21);
+    assert_close(tb.t[20], 1.5, 0.0, 1e-12);
+    /* --output-interval replaces both DTOUT */
+    run((const char *const[]){OSCILLATOR, "--output-interval", "0.25", "--quiet", "--out",
+                              temp_path("i.csv"), NULL}, &c);
+    assert_int_equal(c.status, 0);
+    read_table(temp_path("i.csv"), &tb);
+    assert_int_equal(tb.n, 9);
+    for (int k = 0; k < tb.n; ++k)
+        assert_close(tb.t[k], 0.25 * k, 0.0, 1e-12);
+    /* ERROR=1e-9 is rtol and atol: --rtol and --atol of 1e-3 take fewer steps,
+     * as many as a file whose ERROR is 1e-3 */
+    run((const char *const[]){OSCILLATOR, "--quiet", NULL}, &c);
+    assert_int_equal(c.status, 0);
+    const int fine = steps_of(c.out);
+    run((const char *const[]){OSCILLATOR, "--rtol", "1e-3", "--atol", "1e-3", "--quiet", NULL}, &c);
+    assert_int_equal(c.status, 0);
+    const int coarse = steps_of(c.out);
+    assert_true(coarse < fine / 2);
+    const char *acf = test_write_file("coarse.acf", "oscillator\n\nINTEGRATOR/ERROR=1E-3\n"
+                                      "SIMULATE/DYNAMIC, END=1, DTOUT=0.1\n"
+                                      "SIMULATE/DYNAMIC, DURATION=1, DTOUT=0.05\n");
+    run((const char *const[]){OSCILLATOR, "--acf", acf, "--quiet", NULL}, &c);
+    assert_int_equal(c.status, 0);
+    assert_int_equal(steps_of(c.out), coarse);
+    assert_null(strstr(c.err, "note: INTEGRATOR")); /* nothing besides ERROR to note */
+}
+
+/* ---- refusals ------------------------------------------------------------------------------ */
+
+static void refuse(const char *command, const char *where, const char *what, const char *why)
+{
+    char text[512];
+    snprintf(text, sizeof text, "oscillator\n\nSIMULATE/DYNAMIC, END=1, STEPS=10\n%s\n"
+             "SIMULATE/DYNAMIC, END=2, STEPS=10\n", command);
+    const char *acf = test_write_file("refused.acf", text);
+    captured c;
+    run((const char *const[]){OSCILLATOR, "--acf", acf, "--quiet", "--out", temp_path("r.csv"),
+                              NULL}, &c);
+    assert_int_equal(c.status, 1);
+    assert_contains(c.err, where, what, why);
+    assert_null(strstr(c.out, "run:")); /* refused before the run */
+}
+
+static void what_the_run_cannot_do_is_refused(void **state)
+{
+    (void)state;
+    refuse("SIMULATE/STATIC", "refused.acf:4: ", "SIMULATE/STATIC",
+           "static equilibrium is not computed by the harness yet");
+    refuse("DEACTIVATE/JOINT, ID=1", "refused.acf:4: ", "DEACTIVATE/JOINT",
+           "the harness switches SFORCE, VFORCE, VTORQUE and GFORCE given by FUNCTION"
+           " expressions, not other elements yet");
+    refuse("ACTIVATE/SFORCE, ID=1,2", "refused.acf:4: ", "ACTIVATE/SFORCE",
+           "the model has no SFORCE/2 given by FUNCTION expressions");
+    refuse("DEACTIVATE/GFORCE, ID=1", "refused.acf:4: ", "DEACTIVATE/GFORCE",
+           "the model has no GFORCE/1"); /* its SFORCE/1 is a scalar load */
+    refuse("VARIABLE/3, FUNCTION=TIME", "refused.acf:4: ", "VARIABLE/3",
+           "redefining a FUNCTION between segments is not done by the harness yet");
+    refuse("ACCGRAV/JGRAV=-9.81", "refused.acf:4: ", "ACCGRAV",
+           "changing gravity between segments is not done by the harness yet");
+    refuse("PREFERENCES/SOLVERBIAS=CXX", "refused.acf:4: ", "PREFERENCES",
+           "a command the harness does not read");
+    refuse("SIMULATE/DYNAMIC, END=0.5, STEPS=5", "refused.acf:4: ", "SIMULATE/DYNAMIC",
+           "END=0.5 is not after the time the run has reached, 1");
+    /* STOP ends the file: what follows it is not read */
+    const char *acf = test_write_file("stop.acf", "oscillator\n\n"
+                                      "SIMULATE/DYNAMIC, END=0.2, STEPS=2\nSTOP\nACCGRAV/JGRAV=1\n");
+    captured c;
+    run((const char *const[]){OSCILLATOR, "--acf", acf, "--quiet", NULL}, &c);
+    assert_int_equal(c.status, 0);
+    assert_contains(c.out, "to t = 0.2\n");
+    acf = test_write_file("nothing.acf", "oscillator\n\nSTOP\n");
+    run((const char *const[]){OSCILLATOR, "--acf", acf, "--quiet", NULL}, &c);
+    assert_int_equal(c.status, 1);
+    assert_contains(c.err, "nothing.acf: no SIMULATE/DYNAMIC command: nothing to run");
+}
+
+/* ---- ACTIVATE and DEACTIVATE --------------------------------------------------------------- */
+
+/* tests/data/hanging.adm: at rest on its spring to 0.5 s; the spring
+ * deactivated, it falls freely, y = y0 - g (t - 0.5)^2 / 2 (worked in the
+ * dataset's comment; DOPRI5 is exact on a quadratic); activated again at
+ * 1 s, the spring, stretched 1.23 m more, pulls 245 N against 19.6 N of
+ * weight: the fall slows. */
+static void a_deactivated_spring_lets_the_mass_fall(void **state)
+{
+    (void)state;
+    const double y0 = -1.0981, g = 9.81;
+    const char *acf = test_write_file("hanging.acf", "hanging\n\n"
+                                      "SIMULATE/DYNAMIC, END=0.5, STEPS=5\n"
+                                      "DEACTIVATE/SFORCE, ID=1\n"
+                                      "SIMULATE/DYNAMIC, DURATION=0.5, STEPS=5\n"
+                                      "ACTIVATE/SFORCE, ID=1\n"
+                                      "SIMULATE/DYNAMIC, END=1.2, STEPS=2\n");
+    const char *const integrators[2] = {"dopri5", "bdf"}; /* bdf: its Jacobian without it */
+    for (int i = 0; i < 2; ++i) {
+        captured c;
+        table tb;
+        run((const char *const[]){DATA_DIR "/hanging.adm", "--acf", acf, "--integrator",
+                                  integrators[i], "--quiet", "--out", temp_path("fall.csv"),
+                                  NULL}, &c);
+        assert_int_equal(c.status, 0);
+        read_table(temp_path("fall.csv"), &tb);
+        assert_int_equal(tb.n, 13);
+        for (int k = 0; k <= 10; ++k) {
+            const double t = 0.1 * k, fall = t > 0.5 ? t - 0.5 : 0.0;
+            assert_close(tb.t[k], t, 0.0, 1e-12);
+            assert_close(tb.y[k], y0 - 0.5 * g * fall * fall, 0.0, i == 0 ? 1e-8 : 1e-5);
+        }
+        const double free_fall = y0 - 0.5 * g * 0.7 * 0.7;
+        assert_true(tb.y[12] > free_fall + 0.1);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(segments_follow_one_another),
+        cmocka_unit_test(acf_and_no_acf),
+        cmocka_unit_test(options_override_the_file),
+        cmocka_unit_test(what_the_run_cannot_do_is_refused),
+        cmocka_unit_test(a_deactivated_spring_lets_the_mass_fall),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
