@@ -231,12 +231,12 @@ static void bad_expressions_are_named(void **state)
                       " fy_expression=\"DX(20,99)\"/>\n" TAIL,
                  (const char *const[]){"unknown.xml:8:1: Force_Vector_OneBody 7: fy_expression:",
                                        "no Reference_Marker 99", NULL});
-    expect_error("varval.xml",
-                 HEAD "<Reference_Variable id=\"3\" type=\"EXPRESSION\" expr=\"DX(20,10)\"/>\n"
+    expect_error("aryval.xml",
+                 HEAD "<Reference_Array id=\"3\" type=\"IC\" num_element=\"1\"> 2 </Reference_Array>\n"
                       "<Force_Vector_OneBody id=\"7\" marker_id=\"20\""
-                      " fx_expression=\"1 + VARVAL(3)\"/>\n" TAIL,
-                 (const char *const[]){"varval.xml:9:5: Force_Vector_OneBody 7: fx_expression:",
-                                       "VARVAL(3)", "not simulated yet", NULL});
+                      " fx_expression=\"1 + ARYVAL(3,1)\"/>\n" TAIL,
+                 (const char *const[]){"aryval.xml:9:5: Force_Vector_OneBody 7: fx_expression:",
+                                       "ARYVAL(3,1)", "not simulated yet", NULL});
     expect_error("routine.xml",
                  HEAD "<Force_Vector_TwoBody id=\"6\" type=\"ForceOnly\" i_marker_id=\"20\""
                       " j_floating_marker_id=\"30\" fx_expression=\"1\""

@@ -44,8 +44,9 @@ int hx_frames_init(hx_frames *fr, const hx_model *m)
     fr->tracked = calloc((size_t)m->nmarkers + 1, sizeof *fr->tracked);
     fr->first_tracked = calloc((size_t)m->nbodies + 1, sizeof *fr->first_tracked);
     fr->diffs = calloc(2 * (size_t)m->nroutines_of[HX_ROUTINE_DIFF] + 1, sizeof *fr->diffs);
+    fr->variables = calloc((size_t)m->nvariables + 1, sizeof *fr->variables);
     if (fr->bodies == NULL || fr->markers == NULL || fr->tracked == NULL ||
-        fr->first_tracked == NULL || fr->diffs == NULL) {
+        fr->first_tracked == NULL || fr->diffs == NULL || fr->variables == NULL) {
         hx_frames_free(fr);
         return -1;
     }
@@ -84,6 +85,7 @@ void hx_frames_free(hx_frames *fr)
     free(fr->tracked);
     free(fr->first_tracked);
     free(fr->diffs);
+    free(fr->variables);
     memset(fr, 0, sizeof *fr);
 }
 
@@ -102,6 +104,7 @@ void hx_frames_copy(hx_frames *to, const hx_frames *from)
     memcpy(to->bodies, from->bodies, sizeof *to->bodies * (size_t)m->nbodies);
     memcpy(to->markers, from->markers, sizeof *to->markers * (size_t)m->nmarkers);
     memcpy(to->diffs, from->diffs, sizeof *to->diffs * 2 * (size_t)m->nroutines_of[HX_ROUTINE_DIFF]);
+    memcpy(to->variables, from->variables, sizeof *to->variables * (size_t)m->nvariables);
 }
 
 void hx_frames_update(hx_frames *fr)

@@ -30,6 +30,9 @@ typedef struct hx_frames {
     /* the Control_Diff states, two per element in the order of their slots
      * (model.h): the value and its rate (DIF and DIF1), ic and ic_dot at first */
     double *diffs;
+    /* the Reference_Variable values by index, computed after the frames when the
+     * model's loads read them (model.h's variables_read; host/variable_values.h) */
+    double *variables;
 } hx_frames;
 
 /* Frames at the model's initial pose and velocities, its markers current.
@@ -38,7 +41,7 @@ int hx_frames_init(hx_frames *fr, const hx_model *m);
 void hx_frames_free(hx_frames *fr);
 /* A second set equal to from (scratch frames for a probe); 0 or -1. */
 int hx_frames_clone(hx_frames *to, const hx_frames *from);
-/* Copies time, frames and Control_Diff values between two sets of the same model. */
+/* Copies time, frames, Control_Diff and variable values between two sets of the same model. */
 void hx_frames_copy(hx_frames *to, const hx_frames *from);
 
 /* The kinematics stage: world frames of the tracked markers of moving bodies

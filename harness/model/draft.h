@@ -92,6 +92,11 @@ int hx_draft_resolve_stateeqns(hx_draft *d);
 /* The routines' pass (routine_elements.c): Motion_Joint's joints, after the
  * joints; 0 or -1. */
 int hx_draft_resolve_routines(hx_draft *d);
+/* The variables' pass (variable_programs.c): the expressions of the
+ * Reference_Variable elements linked, the order they are computed in
+ * (model.h's variable_order), a cycle of VARVALs refused; after the arrays
+ * and the routines; 0 or -1. */
+int hx_draft_link_variables(hx_draft *d);
 /* The requests' pass (request_elements.c): their markers' indices, their
  * expressions linked against the model; 0 or -1. */
 int hx_draft_resolve_requests(hx_draft *d);

@@ -16,7 +16,7 @@ static const char *const vector_attrs[6] = {"fx_expression", "fy_expression", "f
 
 /* The engine's "file:line:column: what" as "file:line:column: element id:
  * attribute: what" (the draft's first error wins). */
-static void fail_expression(hx_draft *d, const char *element, int id, const char *attr,
+void hx_draft_fail_expression(hx_draft *d, const char *element, int id, const char *attr,
                             const char *text)
 {
     if (d->failed)
@@ -41,8 +41,7 @@ static void fail_expression(hx_draft *d, const char *element, int id, const char
     d->failed = 1;
 }
 
-/* Attribute name of e parsed into *out (NULL when absent); 0 or -1. */
-static int parse_attr(hx_draft *d, const hx_element_read *e, const char *name,
+int hx_draft_parse_expression(hx_draft *d, const hx_element_read *e, const char *name,
                       hx_expr_program **out)
 {
     *out = NULL;
@@ -56,7 +55,7 @@ static int parse_attr(hx_draft *d, const hx_element_read *e, const char *name,
     hx_message why;
     *out = hx_expr_parse(text, strlen(text), &where, &why);
     if (*out == NULL) {
-        fail_expression(d, e->name, e->id, name, why.text);
+        hx_draft_fail_expression(d, e->name, e->id, name, why.text);
         return -1;
     }
     return 0;
@@ -83,7 +82,7 @@ void hx_build_vector_load(hx_draft *d, const hx_element_read *e, int i_id, int j
     raw_refs *refs = &d->rloads[d->m->nloads - 1];
     refs->ids[0] = i_id, refs->ids[1] = j_id, refs->ids[2] = ref_id;
     for (int k = 0; k < 6; ++k)
-        if (parse_attr(d, e, vector_attrs[k], k < 3 ? &l->force[k] : &l->torque[k - 3]) != 0)
+        if (hx_draft_parse_expression(d, e, vector_attrs[k], k < 3 ? &l->force[k] : &l->torque[k - 3]) != 0)
             return;
 }
 
@@ -94,7 +93,7 @@ void hx_build_scalar_load(hx_draft *d, const hx_element_read *e, int torque,
     if (l == NULL)
         return;
     l->action_only = hx_attr_number(e, "is_action_only", 0.0) != 0.0;
-    if (parse_attr(d, e, value_attr, &l->value) != 0)
+    if (hx_draft_parse_expression(d, e, value_attr, &l->value) != 0)
         return;
     raw_refs *refs = &d->rloads[d->m->nloads - 1];
     refs->ids[0] = hx_attr_int(e, "i_marker_id", 0);
@@ -109,22 +108,29 @@ static int link_one(hx_draft *d, const hx_load *l, hx_expr_program *p, const cha
     const char *element = hx_load_element_name(l);
     hx_message why;
     if (hx_expr_link(p, m, &why) != 0) {
-        fail_expression(d, element, l->id, attr, why.text);
+        hx_draft_fail_expression(d, element, l->id, attr, why.text);
         return -1;
     }
     const hx_expr_input *in = hx_expr_inputs(p);
     for (int k = 0; k < hx_expr_input_count(p); ++k) {
         if (in[k].kind == HX_EXPR_INPUT_TIME)
             continue;
+        const int variable = in[k].variable;
+        if (variable >= 0 && !m->variables[variable].reads_diff) {
+            /* a variable's value, computed before the forces (docs/interface.md §7.10) */
+            m->variables_read = 1;
+            continue;
+        }
         if (in[k].kind != HX_EXPR_INPUT_MEASURE) {
-            /* the values of variables, Control_Diffs and arrays are computed by
-             * stages the forces do not wait for yet */
+            /* Control_Diff states and IC arrays: the load's Jacobian columns would be
+             * those of the Control_Diff states, which its differences do not move yet */
             char name[64], what[HX_MESSAGE_MAX];
-            snprintf(what, sizeof what, "%s:%d:%d: %s: a force's expression reads TIME and the"
-                     " measures of markers; reading a variable, a Control_Diff or an array"
-                     " is not simulated yet", d->path, in[k].line, in[k].column,
+            snprintf(what, sizeof what, "%s:%d:%d: %s: a force's expression reads TIME, the"
+                     " measures of markers and variables that read those; reading a"
+                     " Control_Diff (itself or through a variable) or an IC array is not"
+                     " simulated yet", d->path, in[k].line, in[k].column,
                      hx_expr_input_text(&in[k], name, sizeof name));
-            fail_expression(d, element, l->id, attr, what);
+            hx_draft_fail_expression(d, element, l->id, attr, what);
             return -1;
         }
         for (int i = 0; i < in[k].nids && i < 4; ++i)

@@ -19,6 +19,17 @@ void hx_build_vector_load(hx_draft *d, const hx_element_read *e, int i_id, int j
 void hx_build_scalar_load(hx_draft *d, const hx_element_read *e, int torque,
                           const char *value_attr);
 
+/* Attribute `name` of e parsed by the expression engine into *out (NULL when
+ * absent), from the attribute's place in the file; 0, or -1 with the draft
+ * failed naming the element, the attribute and file:line:column. */
+struct hx_expr_program;
+int hx_draft_parse_expression(hx_draft *d, const hx_element_read *e, const char *name,
+                              struct hx_expr_program **out);
+/* The engine's "file:line:column: what" as "file:line:column: element id:
+ * attribute: what" (the draft's first error wins). */
+void hx_draft_fail_expression(hx_draft *d, const char *element, int id, const char *attr,
+                              const char *text);
+
 /* Links every load's expressions against the model (its markers resolved),
  * marks the markers they measure tracked, and refuses what a force
  * expression cannot read yet; 0, or -1 with the draft failed. */

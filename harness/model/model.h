@@ -136,8 +136,8 @@ typedef struct hx_load {
     int line;
 } hx_load;
 
-/* A Reference_Variable: one measure the harness answers itself, or a number
- * (docs/interface.md §7.10). */
+/* A Reference_Variable: one measure the harness answers itself, or a number,
+ * or any function expression (docs/interface.md §7.10, §8). */
 typedef struct hx_variable {
     int id;
     char function[3];   /* "DX" .. "WZ" or "DM"; "" for a number */
@@ -145,6 +145,8 @@ typedef struct hx_variable {
     int nmarkers;
     double sign;        /* -1 for a leading minus */
     double number;      /* the value of a plain number */
+    hx_expr_program *program; /* an expression beyond one measure, linked; NULL: the above */
+    int reads_diff;     /* it reads a Control_Diff's state, itself or through VARVAL */
     int line;
 } hx_variable;
 
@@ -299,6 +301,9 @@ typedef struct hx_model {
     int nstrings;
     hx_variable *variables;
     int nvariables;
+    int *variable_order;     /* the variables' indices, each after those it reads (VARVAL) */
+    int variables_read;      /* a load's expression reads a variable: the dynamics computes
+                              * their values at each evaluation (frames.h) */
     hx_array *arrays;
     int narrays;
     hx_stateeqn *stateeqns;

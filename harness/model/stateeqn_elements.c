@@ -12,6 +12,7 @@
 #include <strings.h>
 
 #include "model/draft.h"
+#include "model/load_elements.h"
 #include "model/number_list.h"
 #include "model/routine_elements.h"
 #include "model/stateeqn_elements.h"
@@ -91,10 +92,11 @@ void hx_build_variable(hx_draft *d, const hx_element_read *e)
     }
     hx_variable v = {.id = e->id, .line = e->line};
     hx_message why;
-    if (hx_parse_variable_expression(expr, &v, &why) != 0) {
-        hx_draft_fail(d, e->line, "Reference_Variable %d: attribute expr: %s", e->id, why.text);
+    /* one measure or a number as before (the Force_StateEqn inputs' form); any
+     * other text is the engine's, linked once the model is whole */
+    if (hx_parse_variable_expression(expr, &v, &why) != 0 &&
+        hx_draft_parse_expression(d, e, "expr", &v.program) != 0)
         return;
-    }
     hx_variable *slot = hx_draft_push(d, (void **)&m->variables, &m->nvariables,
                                       &d->cap_variables, sizeof *slot, NULL, 0);
     if (slot != NULL)
@@ -385,6 +387,13 @@ static int resolve_arrays(hx_draft *d, hx_stateeqn *f, const raw_stateeqn *raw)
     for (int i = 0; i < u->count; ++i) {
         f->inputs[i] = u->variables[i];
         const hx_variable *v = &m->variables[u->variables[i]];
+        if (v->program != NULL) {
+            hx_draft_fail(d, f->line, "Force_StateEqn %d: its U array %d names Reference_Variable"
+                          " %d, an expression beyond one measure: a Force_StateEqn's inputs are"
+                          " one measure or a number each (docs/interface.md §7.10)", f->id, u->id,
+                          v->id);
+            return -1;
+        }
         for (int j = 0; j < v->nmarkers; ++j) /* states keep the frames its inputs read */
             if (v->marker_ids[j] != 0)
                 m->markers[hx_model_marker(m, v->marker_ids[j])].tracked = 1;

@@ -43,7 +43,7 @@ int hx_adm_build_variable(hx_adm_reader *r, hx_adm_entry *e)
             return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
                                " FUNCTION=USER(...)");
         hx_adm_element_text(&el, "type", "EXPRESSION");
-        hx_adm_element_text(&el, "expr", function);
+        hx_adm_element_expression(&el, "expr", e, "FUNCTION");
     }
     return hx_adm_element_build(r, e, &el, NULL);
 }

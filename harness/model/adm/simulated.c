@@ -5,7 +5,7 @@
  * UNIVERSAL, HOOKE, PLANAR; between any parts; no initial conditions; a
  * JPRIM always), forces
  * given by function expressions (docs/interface.md §8) or by a user routine,
- * a VARIABLE by one measure or a user routine; then what names an
+ * a VARIABLE by any expression or a user routine; then what names an
  * element that is not simulated (the COUPLER or MOTION of such a joint, the
  * ARRAY of such a VARIABLE, the FORCE_STATEEQN of such an ARRAY). Each is
  * named in a warning with its line and why, and counted as the XML reader
@@ -16,7 +16,6 @@
 #include <strings.h>
 
 #include "model/adm/reader.h"
-#include "model/variable_expression.h"
 
 int hx_adm_is_user(const char *expression)
 {
@@ -72,12 +71,6 @@ static const char *why_not(const hx_adm_entry *e, char *why, size_t size)
                      " not simulate yet (it runs FIELD=USER(...), FIESUB)");
         else if (!hx_adm_is_user(function))
             snprintf(why, size, "a FUNCTION expression, which this harness does not evaluate yet");
-    } else if (is(e, "VARIABLE")) {
-        hx_variable v;
-        hx_message m;
-        if (!hx_adm_is_user(function) && hx_parse_variable_expression(function, &v, &m) != 0)
-            snprintf(why, size, "a FUNCTION expression, which this harness does not evaluate yet"
-                     " (it evaluates one measure such as DX(20,10,10), or a number)");
     }
     return why;
 }

@@ -1,10 +1,12 @@
 /* The dynamics' model and data, and one evaluation (dynamics.h). */
 #include "sim/dynamics/dynamics.h"
+#include "host/variable_values.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraint_matrix.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/redundancy.h"
 #include "sim/dynamics/element_forces.h"
+#include "sim/dynamics/failure.h"
 #include "sim/dynamics/loads.h"
 #include "sim/dynamics/routines.h"
 #include "sim/dynamics/stateeqns.h"
@@ -165,6 +167,11 @@ int hx_dynamics_evaluate(const hx_dynamics *d, hx_dynamics_data *dd, double t, c
 {
     const int nb = d->m->nbodies;
     hx_dynamics_kinematics(d, dd, t, y);
+    if (d->m->variables_read) { /* the variables the loads read, each once */
+        hx_message msg;
+        if (hx_variables_values(&dd->frames, dd->frames.variables, &msg) != 0)
+            return hx_dynamics_fail(dd, "%s", msg.text);
+    }
     memset(dd->force, 0, sizeof(double) * 3 * (size_t)nb);
     memset(dd->torque, 0, sizeof(double) * 3 * (size_t)nb);
     if (hx_loads_apply(d, dd, &ydot[d->load_work]) != 0 ||

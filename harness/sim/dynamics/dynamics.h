@@ -10,6 +10,8 @@
  *     them and no evaluation reads what an earlier one left.
  * One evaluation runs the stages in order, each given what it reads:
  *   kinematics   the bodies' and markers' frames at (t, y)      bodies.c
+ *   variables    the Reference_Variable values, when a load reads one
+ *                                                    host/variable_values.c
  *   forces       gravity and loads, the user force elements, the
  *                Force_StateEqn elements (their state rates too)  loads.c,
  *                                                    element_forces.c, stateeqns.c

@@ -15,7 +15,7 @@ static int value_at(const hx_load *l, const hx_expr_program *p, const hx_frames 
     *value = 0.0;
     if (p == NULL)
         return 0;
-    const hx_expr_context c = {fr, NULL}; /* load expressions read no variables (linked so) */
+    const hx_expr_context c = {fr, fr->variables}; /* computed before the loads */
     hx_expr_fault fault;
     if (hx_expr_eval(p, &c, value, &fault) == 0)
         return 0;
@@ -79,35 +79,59 @@ int hx_load_share_at(const hx_model *m, const hx_frames *fr, int k, hx_load_shar
     return 0;
 }
 
+/* Body b added to bodies[0 .. *n) unless there. */
+static void add_body(int *bodies, int *n, int b)
+{
+    for (int i = 0; i < *n; ++i)
+        if (bodies[i] == b)
+            return;
+    if (*n < HX_LOAD_BODIES_MAX)
+        bodies[(*n)++] = b;
+}
+
+static void add_program_bodies(const hx_model *m, const hx_expr_program *p, int *bodies, int *n);
+
+/* The bodies variable k reads, through the variables it reads in turn (they
+ * form no cycle: model/variable_programs.c). */
+static void add_variable_bodies(const hx_model *m, int k, int *bodies, int *n)
+{
+    const hx_variable *v = &m->variables[k];
+    if (v->program != NULL) {
+        add_program_bodies(m, v->program, bodies, n);
+        return;
+    }
+    for (int i = 0; i < v->nmarkers; ++i)
+        if (v->marker_ids[i] != 0)
+            add_body(bodies, n, m->markers[hx_model_marker(m, v->marker_ids[i])].body);
+}
+
+static void add_program_bodies(const hx_model *m, const hx_expr_program *p, int *bodies, int *n)
+{
+    const hx_expr_input *in = hx_expr_inputs(p);
+    for (int j = 0; j < hx_expr_input_count(p); ++j) {
+        if (in[j].variable >= 0)
+            add_variable_bodies(m, in[j].variable, bodies, n);
+        for (int i = 0; i < in[j].nids && i < 4; ++i)
+            if (in[j].kind == HX_EXPR_INPUT_MEASURE && in[j].index[i] >= 0)
+                add_body(bodies, n, m->markers[in[j].index[i]].body);
+    }
+}
+
 int hx_load_bodies(const hx_model *m, int k, int *bodies)
 {
     const hx_load *l = &m->loads[k];
-    int n = 0;
+    int n = 0; /* distinct, in the order first named */
     const int other = l->kind == HX_LOAD_VECTOR ? l->ref_marker : l->j_marker;
     const int named[3] = {l->i_marker, other, l->kind == HX_LOAD_VECTOR ? l->j_marker : -1};
     for (int i = 0; i < 3; ++i)
         if (named[i] >= 0)
-            bodies[n++] = m->markers[named[i]].body;
+            add_body(bodies, &n, m->markers[named[i]].body);
     const hx_expr_program *programs[7] = {l->force[0],  l->force[1],  l->force[2], l->torque[0],
                                           l->torque[1], l->torque[2], l->value};
-    for (int p = 0; p < 7; ++p) {
-        if (programs[p] == NULL)
-            continue;
-        const hx_expr_input *in = hx_expr_inputs(programs[p]);
-        for (int j = 0; j < hx_expr_input_count(programs[p]); ++j)
-            for (int i = 0; i < in[j].nids && i < 4; ++i)
-                if (in[j].kind == HX_EXPR_INPUT_MEASURE && in[j].index[i] >= 0)
-                    bodies[n++] = m->markers[in[j].index[i]].body;
-    }
-    int distinct = 0; /* in the order first named */
-    for (int i = 0; i < n; ++i) {
-        int seen = 0;
-        for (int j = 0; j < distinct && !seen; ++j)
-            seen = bodies[j] == bodies[i];
-        if (!seen)
-            bodies[distinct++] = bodies[i];
-    }
-    return distinct;
+    for (int p = 0; p < 7; ++p)
+        if (programs[p] != NULL)
+            add_program_bodies(m, programs[p], bodies, &n);
+    return n;
 }
 
 int hx_loads_apply(const hx_dynamics *d, hx_dynamics_data *dd, double *power)

@@ -21,12 +21,16 @@ int hx_load_share_at(const hx_model *m, const hx_frames *fr, int k, hx_load_shar
                      hx_message *msg);
 
 /* The most bodies hx_load_bodies lists: the three markers the load names and
- * the four of each of its expressions' inputs. */
+ * the four of each of its expressions' inputs (a variable read adds those it
+ * reads, which are distinct bodies of the model: more only in a model of
+ * more bodies than this). */
 #define HX_LOAD_BODIES_MAX (3 + 7 * 64 * 4)
 
 /* The bodies load k depends on, each once (ground included): those of the
  * markers it names (I, J or the reference marker) and of every marker its
- * expressions measure, known from the parse (docs/interface.md §8.6).
+ * expressions measure, known from the parse (docs/interface.md §8.6),
+ * and of those the variables they read measure, through the variables those
+ * read in turn.
  * Returns their count; bodies holds HX_LOAD_BODIES_MAX. */
 int hx_load_bodies(const hx_model *m, int k, int *bodies);
 

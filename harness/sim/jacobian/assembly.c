@@ -6,9 +6,11 @@
  */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "base/difference_step.h"
 #include "base/vecmath.h"
+#include "host/variable_values.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/jacobian/jacobian_parts.h"
 
@@ -67,6 +69,14 @@ void hx_jacobian_move_body(hx_jacobian *jac, int b, const double *y)
     for (int k = jac->body_marker_start[b]; k < jac->body_marker_start[b + 1]; ++k)
         hx_marker_frame(d->m, &jac->moved.bodies[b], jac->body_markers[k],
                         &jac->moved.markers[jac->body_markers[k]]);
+    if (d->m->variables_read) {
+        /* the variables the loads read, at the moved body; a fault leaves them not
+         * finite, which the load's evaluation reports as its input's fault */
+        hx_message msg;
+        if (hx_variables_values(&jac->moved, jac->moved.variables, &msg) != 0)
+            for (int k = 0; k < d->m->nvariables; ++k)
+                jac->moved.variables[k] = NAN;
+    }
 }
 
 void hx_jacobian_restore_body(hx_jacobian *jac, int b)
@@ -75,6 +85,7 @@ void hx_jacobian_restore_body(hx_jacobian *jac, int b)
     jac->moved.bodies[b] = fr->bodies[b];
     for (int k = jac->body_marker_start[b]; k < jac->body_marker_start[b + 1]; ++k)
         jac->moved.markers[jac->body_markers[k]] = fr->markers[jac->body_markers[k]];
+    memcpy(jac->moved.variables, fr->variables, sizeof(double) * (size_t)jac->d->m->nvariables);
 }
 
 void hx_jacobian_applied_force(hx_jacobian *jac, const hx_applied_force *a, int col, int b,

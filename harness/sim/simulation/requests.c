@@ -9,6 +9,7 @@
 #include "expr/evaluate.h"
 #include "frames/measure_functions.h"
 #include "host/state_inputs.h"
+#include "host/variable_values.h"
 #include "sim/simulation/requests.h"
 
 /* One measure of the frames named, in the order of its arguments. */
@@ -87,11 +88,10 @@ int hx_requests_csv_row(FILE *f, const hx_frames *fr, hx_message *msg)
     if (m->nvariables > 0) {
         if ((variables = malloc(sizeof(double) * (size_t)m->nvariables)) == NULL)
             return hx_fail(msg, "out of memory");
-        for (int k = 0; k < m->nvariables; ++k)
-            if (hx_variable_value(fr, &m->variables[k], &variables[k]) != 0) {
-                free(variables);
-                return hx_fail(msg, "Reference_Variable %d: not answered", m->variables[k].id);
-            }
+        if (hx_variables_values(fr, variables, msg) != 0) {
+            free(variables);
+            return -1;
+        }
     }
     int status = 0;
     for (int k = 0; k < m->nrequests && status == 0; ++k) {
