@@ -11,6 +11,7 @@
  */
 #include "sim/dynamics/joint_equations.h"
 
+#include <stdio.h>
 #include <string.h>
 
 #include "base/vecmath.h"
@@ -152,6 +153,19 @@ int hx_joint_equations_count(enum hx_joint_type type)
 int hx_joint_equation_is_length(enum hx_joint_type type, int e)
 {
     return recipes[type].row[e].kind != DOT1;
+}
+
+const char *hx_joint_equation_name(enum hx_joint_type type, int e, char *text, size_t size)
+{
+    static const char axis_name[3] = {'x', 'y', 'z'};
+    const recipe_row *w = &recipes[type].row[e];
+    if (w->kind == POINT)
+        snprintf(text, size, "x_I - x_J along %c", axis_name[w->a]);
+    else if (w->kind == DOT1)
+        snprintf(text, size, "%c_I . %c_J", axis_name[w->a], axis_name[w->b]);
+    else
+        snprintf(text, size, "%c_J . (x_I - x_J)", axis_name[w->b]);
+    return text;
 }
 
 void hx_joint_equations_eval(enum hx_joint_type type, const hx_joint_side *ji,

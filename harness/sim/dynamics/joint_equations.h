@@ -13,6 +13,8 @@
 #ifndef HX_SIM_DYNAMICS_JOINT_EQUATIONS_H
 #define HX_SIM_DYNAMICS_JOINT_EQUATIONS_H
 
+#include <stddef.h>
+
 #include "frames/frames.h"
 
 #define HX_JOINT_MAX_EQUATIONS 6
@@ -24,6 +26,10 @@ int hx_joint_equations_count(enum hx_joint_type type);
  * point-in-plane row, scaled by the model's length in constraints.c), 0 when
  * it is a product of two unit axes. */
 int hx_joint_equation_is_length(enum hx_joint_type type, int e);
+
+/* Equation e of the type in words, into text: "x_I - x_J along x" (the
+ * origins, world axes), "z_I . y_J" (the markers' axes), "x_J . (x_I - x_J)". */
+const char *hx_joint_equation_name(enum hx_joint_type type, int e, char *text, size_t size);
 
 /* One side of a joint: its body's frame (world) and the marker's place and
  * axes in the body (hx_marker's r_local, R_local). */

@@ -64,30 +64,6 @@ done:
     return status;
 }
 
-/* The joint types' equations in joint_equations.c's order. */
-static const char *equation_name(enum hx_joint_type type, int e)
-{
-    static const char *const point[3] = {"x_I - x_J along x", "x_I - x_J along y",
-                                         "x_I - x_J along z"};
-    static const char *const fixed[] = {"z_I . x_J", "z_I . y_J", "x_I . y_J"};
-    static const char *const translational[] = {"z_I . x_J", "z_I . y_J", "x_I . y_J",
-                                                "x_J . (x_I - x_J)", "y_J . (x_I - x_J)"};
-    static const char *const cylindrical[] = {"z_I . x_J", "z_I . y_J", "x_J . (x_I - x_J)",
-                                              "y_J . (x_I - x_J)"};
-    static const char *const planar[] = {"z_I . x_J", "z_I . y_J", "z_J . (x_I - x_J)"};
-    switch (type) {
-    case HX_JOINT_TRANSLATIONAL: return translational[e];
-    case HX_JOINT_CYLINDRICAL: return cylindrical[e];
-    case HX_JOINT_PLANAR: return planar[e];
-    case HX_JOINT_FIXED:
-    case HX_JOINT_REVOLUTE:
-    case HX_JOINT_SPHERICAL: return e < 3 ? point[e] : fixed[e - 3];
-    case HX_JOINT_UNIVERSAL: return e < 3 ? point[e] : "z_I . z_J";
-    case HX_JOINT_HOOKE: return e < 3 ? point[e] : "x_I . y_J";
-    }
-    return "?";
-}
-
 const char *hx_redundancy_name_row(const hx_dynamics *d, int row, char *text, size_t size)
 {
     const hx_model *m = d->m;
@@ -99,8 +75,10 @@ const char *hx_redundancy_name_row(const hx_dynamics *d, int row, char *text, si
         if (d->joint_row[k] >= 0 && d->joint_row[k] <= row) {
             const hx_joint *j = &m->joints[k];
             const int e = row - d->joint_row[k];
+            char equation[32];
             snprintf(text, size, "JOINT/%d %s: equation %d (%s)", j->id,
-                     hx_joint_type_name(j->type), e + 1, equation_name(j->type, e));
+                     hx_joint_type_name(j->type), e + 1,
+                     hx_joint_equation_name(j->type, e, equation, sizeof equation));
             return text;
         }
     snprintf(text, size, "row %d", row + 1);
