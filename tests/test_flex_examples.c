@@ -210,14 +210,14 @@ static void a_damped_joint_loses_energy_monotonically(void **state)
     csv_free(&t);
 }
 
-/* Writes a copy of flex_revolute.xml naming a .gfj of stiffness k (N/mm;
+/* Writes a copy of the example (flex_revolute.xml, flex_double_pendulum.xml) naming a .gfj of stiffness k (N/mm;
  * k (200 mm)^2 about x and y, 2 % of critical damping) into the temporary
  * folder; each k has its own file (a library parses a file once). */
-static const char *revolute_like(double k)
+static const char *revolute_like(const char *example, double k)
 {
-    char text[4096], gfj[64], xml[64];
+    char text[4096], gfj[64], xml[96], path[512];
     snprintf(gfj, sizeof gfj, "flex_revolute_%.0e.gfj", k);
-    snprintf(xml, sizeof xml, "flex_revolute_%.0e.xml", k);
+    snprintf(xml, sizeof xml, "%s_%.0e.xml", example, k);
     const double kr = k * 200.0 * 200.0, c = 2.0 * 0.02 * sqrt(k * 1000.0 * 2.0) / 1000.0;
     const double diagonal[2][6] = {{k, k, k, kr, kr, 0}, {c, c, c, c * 4e4, c * 4e4, 0}};
     int len = snprintf(text, sizeof text, "%s", gfj_head);
@@ -230,7 +230,8 @@ static const char *revolute_like(double k)
                                 r == col ? diagonal[m][r] : 0.0, col < 5 ? " " : "\n");
     }
     test_write_file(gfj, text);
-    FILE *f = fopen(EXAMPLES_DIR "/flex_revolute.xml", "r");
+    snprintf(path, sizeof path, "%s/%s.xml", EXAMPLES_DIR, example);
+    FILE *f = fopen(path, "r");
     assert_non_null(f);
     const size_t n = fread(text, 1, sizeof text - 1, f);
     text[n] = '\0';
@@ -260,7 +261,7 @@ static void a_joint_stiff_but_for_one_rotation_is_a_revolute_joint(void **state)
            "  %-10s %-16s %-16s %s\n", "k N/mm", "parasitic mm", "angle error rad",
            "dopri5 steps");
     for (double k = 1e3; k <= 1e5; k *= 10.0) {
-        const char *model_path = revolute_like(k);
+        const char *model_path = revolute_like("flex_revolute", k);
         sim s;
         sim_run(&s, model_path, HX_METHOD_DOPRI5, 1e-9, 1.0, 0.001);
         const long steps = s.result.stats.steps;
@@ -294,6 +295,74 @@ static void a_joint_stiff_but_for_one_rotation_is_a_revolute_joint(void **state)
     csv_free(&rev);
 }
 
+/* A body's turn about z from its quaternion columns (q0, q3 at column c, c + 3). */
+static double turn_about_z(const csv_table *t, int r, int q0)
+{
+    return 2.0 * atan2(csv_at(t, r, q0 + 3), csv_at(t, r, q0));
+}
+
+/* The angle between two turns, in (-pi, pi]. */
+static double angle_between(double a, double b)
+{
+    return remainder(a - b, 2.0 * M_PI);
+}
+
+/* The flexible joint's specification: stiff entries simulate a revolute joint between two
+ * bodies. The lower link of a double pendulum on the flexible joint against the same link
+ * on a revolute joint to the upper link (double_pendulum.xml: both links moving, the
+ * joint's rows and multipliers): the links' angles and the pivot's parasitic motion close
+ * in on the revolute joint's as 1/k. */
+static void a_stiff_flexible_joint_between_moving_links_is_a_revolute_joint(void **state)
+{
+    (void)state;
+    char reference[512], csv[512];
+    snprintf(reference, sizeof reference, "%s/double_revolute.csv", test_temp_dir());
+    snprintf(csv, sizeof csv, "%s/flex_double.csv", test_temp_dir());
+    const char *args[] = {"--end", "1", "--integrator", "dopri5", "--rtol", "1e-10", "--atol",
+                          "1e-12", "--output-interval", "0.001", "--quiet", NULL};
+    assert_int_equal(sim_run_csv("double_pendulum.xml", reference, args), 0);
+    csv_table rev;
+    csv_read(reference, &rev);
+    const int upper_q0 = csv_column(reference, "body2.q0"), lower_q0 = csv_column(reference, "body3.q0");
+    double previous_motion = 0.0, previous_error = 0.0, swing = 0.0;
+    printf("flexible joint as a revolute joint between moving links (1 s):\n"
+           "  %-10s %-16s %s\n", "k N/mm", "parasitic mm", "angle error rad");
+    for (double k = 1e3; k <= 1e5; k *= 10.0) {
+        const char *model_path = revolute_like("flex_double_pendulum", k);
+        assert_int_equal(sim_run_csv(model_path, csv, args), 0);
+        const int dx = csv_column(csv, "force1.dx"), upper = csv_column(csv, "joint1.q"),
+                  lower = csv_column(csv, "body3.q0");
+        csv_table t;
+        csv_read(csv, &t);
+        const int rows = t.rows < rev.rows ? t.rows : rev.rows;
+        assert_true(rows > 990);
+        double motion = 0.0, error = 0.0;
+        for (int r = 0; r < rows; ++r) {
+            assert_close(csv_at(&t, r, 0), csv_at(&rev, r, 0), 0, 1e-9); /* the same times */
+            const double x = csv_at(&t, r, dx), y = csv_at(&t, r, dx + 1), z = csv_at(&t, r, dx + 2);
+            motion = fmax(motion, sqrt(x * x + y * y + z * z));
+            const double rev_lower = turn_about_z(&rev, r, lower_q0);
+            error = fmax(error, fabs(angle_between(csv_at(&t, r, upper),
+                                                   turn_about_z(&rev, r, upper_q0))));
+            error = fmax(error, fabs(angle_between(turn_about_z(&t, r, lower), rev_lower)));
+            swing = fmax(swing, fabs(rev_lower));
+        }
+        csv_free(&t);
+        printf("  %-10.0e %-16.3g %.3g\n", k, motion, error);
+        /* the pivot carries at most the weight of one link and its centripetal force, 2 kg
+         * (9.81 + 0.2 m w^2) with w well below 20 rad/s: under 200 N, so under 200 / k mm */
+        assert_true(motion > 0.0 && motion < 200.0 / k);
+        if (previous_motion > 0.0) {
+            assert_true(previous_motion / motion > 7.0 && previous_motion / motion < 13.0);
+            assert_true(previous_error / error > 5.0);
+        }
+        previous_motion = motion, previous_error = error;
+    }
+    assert_true(swing > 0.3);          /* the lower link does swing */
+    assert_true(previous_error < 1e-3); /* and at k = 1e5 follows the revolute joint closely */
+    csv_free(&rev);
+}
+
 static void check_passes_on_the_flexible_joint_examples(void **state)
 {
     (void)state;
@@ -313,6 +382,7 @@ int main(void)
         cmocka_unit_test(a_conservative_joint_keeps_its_energy),
         cmocka_unit_test(a_damped_joint_loses_energy_monotonically),
         cmocka_unit_test(a_joint_stiff_but_for_one_rotation_is_a_revolute_joint),
+        cmocka_unit_test(a_stiff_flexible_joint_between_moving_links_is_a_revolute_joint),
         cmocka_unit_test(check_passes_on_the_flexible_joint_examples),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
