@@ -178,7 +178,7 @@ int hx_draft_resolve_requests(hx_draft *d)
         }
         for (int j = 0; j < 8; ++j) {
             hx_message why;
-            const int linked = q->f[j] != NULL ? hx_expr_link(q->f[j], m, &why) : 0;
+            const int linked = q->f[j] != NULL ? hx_expr_link_output(q->f[j], m, &why) : 0;
             if (linked == 0)
                 continue;
             if (linked != HX_EXPR_UNANSWERED) {
