@@ -154,15 +154,18 @@ static void pendulum_at_the_bottom_pulls_by_its_speed(void **state)
     release(&e);
 }
 
-/* A pendulum off the bottom, its force by hand: level (the centre at
- * (L, 0, c) = (1.5, 0, 0.4), off the hinge's plane by c), at rest, a reduced
- * REVOLUTE about z: alpha = -m g L / (Izz + m L^2) (clockwise), so the joint
- * takes F_y = m g + m alpha L = m g (1 - m L^2 / (Izz + m L^2)) = m g Izz /
- * (Izz + m L^2) = 19.62 * 0.4 / (0.4 + 4.5) = 1.60163265..., F_x = 0 (no
- * speed). Moments about I (fixed, omega = 0, the axes principal):
- * T + r x W = r x m a + Izz alpha z with r = (L, 0, c), W = (0, -m g, 0),
- * a = (0, alpha L, 0); its x: T_x = -c m alpha L - c m g = -c F_y = -0.64065...;
- * its y 0; its z (the axis) none: the joint carries no torque about it. */
+/* A pendulum off the bottom, its force and torque by hand: level (the centre
+ * at r = (L, 0, c) = (1.5, 0, 0.4) from the hinge, off the hinge's plane by c),
+ * turning at w = 2 about z, a product of inertia Ixz = 0.05 (the tensor's
+ * entry -0.05, §7.8), a reduced REVOLUTE about z, m = 2, Izz = 0.4:
+ *   alpha = -m g L / (Izz + m L^2) = -29.43 / 4.9 = -6.00612... (clockwise);
+ *   m a_cm = m (alpha z x r - w^2 (L, 0, 0)) = (-12, 3 alpha, 0), W = (0, -19.62, 0):
+ *   F = m a - W = (-12, 3 alpha + 19.62, 0) = (-12, 1.60163..., 0).
+ * Moments about I (fixed): T = r x m a - r x W + I alpha + w x I w, with
+ *   r x m a = (-1.2 alpha, -4.8, 4.5 alpha), -r x W = (-7.848, 0, 29.43),
+ *   I alpha z = (-0.05 alpha, 0, 0.4 alpha), w z x I w z = w^2 z x (-0.05, 0, 0.4)
+ *   = (0, -0.2, 0):
+ *   T = (-1.25 alpha - 7.848, -5, 0): its z (the axis) sums to 0, as it must. */
 static void pendulum_level_by_hand(void **state)
 {
     (void)state;
@@ -172,14 +175,15 @@ static void pendulum_level_by_hand(void **state)
              "<Force_Gravity grav_x=\"0\" grav_y=\"-9.81\" grav_z=\"0\"/>\n"
              "<Body_Ground id=\"1\"/>\n<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
              "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"2\" inertia_xx=\"0.3\" inertia_yy=\"0.2\""
-             " inertia_zz=\"0.4\"/>\n"
+             " inertia_zz=\"0.4\" inertia_xz=\"0.05\" w_ic_z=\"2\"/>\n"
              "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"1.5\" pos_z=\"0.4\"/>\n"
              "<Reference_Marker id=\"21\" body_id=\"2\"/>\n%s\n</Model></MotionSolve>\n",
              JOINT_IJ("REVOLUTE", 21, 10));
     evaluated e;
     evaluate_text(&e, "level.xml", text);
-    const double Fy = 19.62 * 0.4 / 4.9;
-    expect_six(of(&e, 1, 0), 0, Fy, 0, -0.4 * Fy, 0, 0, TOL);
+    const double alpha = -29.43 / 4.9;
+    assert_close(e.ydot[e.m.d.nq], alpha, 0, TOL);
+    expect_six(of(&e, 1, 0), -12, 3 * alpha + 19.62, 0, -1.25 * alpha - 7.848, -5, 0, TOL);
     release(&e);
 }
 
