@@ -17,6 +17,7 @@
 #include "model/expr/expr.h"
 #include "model_runs.h"
 #include "sim/dynamics/reactions.h"
+#include "sim/simulation/requests.h"
 #include "sim_support.h"
 #include "test_support.h"
 
@@ -449,6 +450,45 @@ static void joint_without_reactions_is_a_fault(void **state)
     release(&e);
 }
 
+/* The dataset's REQUEST reads JOINT() as the XML's Post_Request does: the
+ * pendulum at the bottom (w = 2, L = 1.5, m = 2) holds 31.62 up on the part,
+ * -31.62 on ground at J (the same point: no torque). An SFORCE that reads it
+ * is refused with its place. */
+static void dataset_request_and_force(void **state)
+{
+    (void)state;
+    static const char *const head =
+        "pendulum\n"
+        "ACCGRAV/IGRAV = 0, JGRAV = -9.81, KGRAV = 0\n"
+        "PART/1, GROUND\n"
+        "MARKER/10, PART = 1\n"
+        "PART/2, MASS = 2, CM = 20, IP = 0.3, 0.2, 0.4, WZ = 2\n"
+        "MARKER/20, PART = 2, QP = 0, -1.5, 0\n"
+        "MARKER/21, PART = 2\n"
+        "JOINT/1, REVOLUTE, I = 21, J = 10\n";
+    char text[2048];
+    snprintf(text, sizeof text, "%sREQUEST/5, F2=JOINT(1,0,2,0)\\F3=JOINT(1,0,3,0)"
+             "\\F4=JOINT(1,1,3,0)\\F8=JOINT(1,1,8,0)\nEND\n", head);
+    evaluated e;
+    evaluate_text(&e, "request.adm", text);
+    double out[8];
+    hx_message msg;
+    assert_int_equal(hx_requests_values(&e.m.data.frames, 0, NULL, e.r, out, &msg), 0);
+    assert_close(out[1], 0.0, 0, TOL);
+    assert_close(out[2], 31.62, 0, TOL);
+    assert_close(out[3], -31.62, 0, TOL);
+    assert_close(out[7], 0.0, 0, TOL);
+    /* without the reactions: the request's fault names it */
+    assert_int_equal(hx_requests_values(&e.m.data.frames, 0, NULL, NULL, out, &msg), -1);
+    assert_contains(msg.text, "request.adm:9:", "JOINT", "no joint reactions");
+    release(&e);
+    /* line 9, the function's column 44 */
+    snprintf(text, sizeof text, "%sSFORCE/4, TRANSLATION, I = 20, J = 10, FUNCTION = JOINT(1,0,3,0)"
+             "\nEND\n", head);
+    expect_error("sforce.adm", text, (const char *const[]){"sforce.adm:9:", "SFORCE/4",
+                 "JOINT(1,0,3,0)", "algebraic loop", NULL});
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -462,6 +502,7 @@ int main(void)
         cmocka_unit_test(request_equals_the_csv_columns),
         cmocka_unit_test(joint_in_a_force_or_variable_is_refused),
         cmocka_unit_test(joint_without_reactions_is_a_fault),
+        cmocka_unit_test(dataset_request_and_force),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
