@@ -489,6 +489,45 @@ static void dataset_request_and_force(void **state)
                  "JOINT(1,0,3,0)", "algebraic loop", NULL});
 }
 
+/* A bundled example evaluated at its initial state. */
+static void evaluate_example(evaluated *e, const char *path)
+{
+    open_model(&e->m, path);
+    e->y = model_state(&e->m);
+    e->ydot = model_state(&e->m);
+    model_initial_state(&e->m, e->y);
+    if (hx_dynamics_rhs(&e->m.d, &e->m.data, 0.0, e->y, e->ydot) != 0)
+        fail_msg("%s", e->m.data.message);
+    e->r = calloc(6 * (size_t)e->m.session.model->njoints + 1, sizeof(double));
+    assert_non_null(e->r);
+    hx_reactions_all(&e->m.d, &e->m.data, e->ydot, e->r);
+}
+
+/* Bevel gears (the bundled example, mm and N: ucf 1000): two reduced revolutes
+ * coupled, a torque on the first. Each gear's centre is on its axis, its axes
+ * principal, its spin along one of them, so the joint holds the weight alone,
+ * m g / ucf: 0.0123 * 9810 / 1000 = 0.120663 and 0.02775 * 9810 / 1000 =
+ * 0.2722275 N up (z), and no torque: what the balance leaves about each axis,
+ * the coupler's and the applied torque's share, is not the joint's. The rack
+ * and pinion the same: the rack (2 kg, sliding along x, its I at its centre)
+ * 2 * 9810 / 1000 = 19.62 N up and nothing along x, where the coupler pushes;
+ * the pinion 0.5 * 9.81 = 4.905 N. */
+static void coupled_gears_hold_their_weight_only(void **state)
+{
+    (void)state;
+    evaluated e;
+    evaluate_example(&e, EXAMPLES_DIR "/rack_pinion.xml");
+    assert_true(fabs(e.m.data.lambda[0]) > 1e-6);
+    expect_six(of(&e, 51, 0), 0, 0, 19.62, 0, 0, 0, 1e-12);
+    expect_six(of(&e, 41, 0), 0, 0, 4.905, 0, 0, 0, 1e-12);
+    release(&e);
+    evaluate_example(&e, EXAMPLES_DIR "/bevel_gears.xml");
+    assert_true(fabs(e.m.data.lambda[0]) > 1e-6); /* the coupler pushes */
+    expect_six(of(&e, 1, 0), 0, 0, 0.120663, 0, 0, 0, 1e-12);
+    expect_six(of(&e, 2, 0), 0, 0, 0.2722275, 0, 0, 0, 1e-12);
+    release(&e);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -503,6 +542,7 @@ int main(void)
         cmocka_unit_test(joint_in_a_force_or_variable_is_refused),
         cmocka_unit_test(joint_without_reactions_is_a_fault),
         cmocka_unit_test(dataset_request_and_force),
+        cmocka_unit_test(coupled_gears_hold_their_weight_only),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
