@@ -76,7 +76,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         hx_expr_free(p);
         return 0;
     }
-    const hx_expr_context c = {&frames, variables};
+    const hx_expr_context c = {&frames, variables, NULL};
     const int n = hx_expr_input_count(p);
     double *scratch = malloc(sizeof(double) * (hx_expr_scratch_size(p) + 1));
     double *adjoint = malloc(sizeof(double) * (size_t)(n + 1));

@@ -52,7 +52,7 @@ void expr_close(expr_fixture *f)
 
 hx_expr_context expr_context(expr_fixture *f)
 {
-    hx_expr_context c = {&f->frames, f->variables};
+    hx_expr_context c = {&f->frames, f->variables, NULL};
     return c;
 }
 

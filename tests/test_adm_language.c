@@ -139,7 +139,7 @@ static void continuation_lines_and_comments(void **state)
      * at t = 1 their ends, at t = 0.5 half way (the cubic step's middle) */
     hx_frames fr;
     assert_int_equal(hx_frames_init(&fr, m), 0);
-    const hx_expr_context c = {&fr, NULL};
+    const hx_expr_context c = {&fr, NULL, NULL};
     static const double at[2][2] = {{1.0, 0.5}, {5.0, 2.5}}, at6[2] = {6.0, 3.0};
     for (int i = 0; i < 2; ++i) {
         double v0, v1;

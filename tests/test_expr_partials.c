@@ -323,7 +323,7 @@ typedef struct worker {
 static void *work(void *arg)
 {
     worker *w = arg;
-    const hx_expr_context c = {w->frames, w->variables};
+    const hx_expr_context c = {w->frames, w->variables, NULL};
     double scratch[512], value, partials[8];
     hx_expr_fault fault;
     for (int k = 0; k < 2000; ++k) {
@@ -348,7 +348,7 @@ static void threads_share_a_program(void **state)
         w[t].p = p, w[t].frames = &fixture.frames;
         const double v[5] = {0.95 - 0.01 * t, -2.0 + t, 2.3 + 0.1 * t, 0.7, -0.5 + 0.2 * t};
         memcpy(w[t].variables, v, sizeof v);
-        const hx_expr_context c = {&fixture.frames, w[t].variables};
+        const hx_expr_context c = {&fixture.frames, w[t].variables, NULL};
         double scratch[512];
         hx_expr_fault fault;
         assert_int_equal(hx_expr_eval_partials(p, &c, &w[t].value, w[t].partials, scratch,

@@ -198,7 +198,7 @@ static void dataset_variables_and_requests(void **state)
     char row[256] = "";
     FILE *f = tmpfile();
     assert_non_null(f);
-    assert_int_equal(hx_requests_csv_row(f, &m.data.frames, &msg), 0);
+    assert_int_equal(hx_requests_csv_row(f, &m.data.frames, NULL, &msg), 0);
     rewind(f);
     assert_non_null(fgets(row, sizeof row, f));
     fclose(f);

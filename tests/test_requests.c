@@ -50,7 +50,7 @@ static void expect_values(const hx_frames *fr, int k, const double want[8], doub
 {
     double got[8];
     hx_message msg;
-    assert_int_equal(hx_requests_values(fr, k, NULL, got, &msg), 0);
+    assert_int_equal(hx_requests_values(fr, k, NULL, NULL, got, &msg), 0);
     for (int j = 0; j < 8; ++j) {
         if (fabs(got[j] - want[j]) > tol)
             fail_msg("request %d component %d: %.15g, expected %.15g",
@@ -207,7 +207,7 @@ static void test_fault_of_an_expression(void **state)
     hx_frames fr;
     assert_int_equal(hx_frames_init(&fr, m), 0);
     double got[8];
-    assert_int_equal(hx_requests_values(&fr, 0, NULL, got, &msg), -1);
+    assert_int_equal(hx_requests_values(&fr, 0, NULL, NULL, got, &msg), -1);
     assert_contains(msg.text, "fault.adm:7:20: REQUEST/4 F3: LOG");
     hx_frames_free(&fr);
     hx_model_free(m);

@@ -20,6 +20,10 @@ typedef struct hx_expr_context {
     const double *variables;   /* the variables' current values by index (model->variables),
                                 * which the caller keeps: VARVAL and ARYVAL of a U array read
                                 * them; may be NULL when the program reads none */
+    const double *reactions;   /* the joints' reactions by index (model->joints), six each:
+                                * the force and torque on I's body at I's origin, world axes
+                                * (sim/dynamics/reactions.h); JOINT and JPRIM read them; NULL
+                                * but where the accelerations are known (a request's output) */
 } hx_expr_context;
 
 /* The value at c. Returns 0, or -1 with the fault (kind, function, what, the

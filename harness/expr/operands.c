@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+#include "base/vecmath.h"
 #include "frames/measure_functions.h"
 #include "model/curve.h"
 #include "model/expr/functions.h"
@@ -42,6 +43,42 @@ static int variable(const hx_expr_context *c, const hx_expr_input *in, double *v
     return 0;
 }
 
+/* JOINT(id, jflag, comp, rm), JPRIM(...) (docs/interface.md §7.14): jflag 0 the
+ * reaction on I at I, 1 the one on J at J (-F, and -(T + (x_I - x_J) x F));
+ * comp 1..8 FM, FX, FY, FZ, TM, TX, TY, TZ, the components in rm's axes. */
+static int reaction(const hx_expr_context *c, const hx_expr_input *in, double *value,
+                    hx_expr_fault *fault)
+{
+    const char *name = hx_expr_function_at(in->function)->name;
+    if (c->reactions == NULL)
+        return fault_of(fault, HX_EXPR_FAULT_INPUT, name, "no joint reactions were given to read"
+                        " it from (they are known at output times only)", 0, 0.0);
+    const double *on_i = c->reactions + 6 * in->index[0];
+    double F[3], T[3];
+    v3_copy(F, on_i), v3_copy(T, on_i + 3);
+    if (in->ids[1] == 1) {
+        hx_frame scratch[2];
+        const hx_frame *i = hx_frames_marker(c->frames, in->index[1], &scratch[0]);
+        const hx_frame *j = hx_frames_marker(c->frames, in->index[2], &scratch[1]);
+        double d[3], dxF[3];
+        v3_sub(d, i->p, j->p);
+        v3_cross(dxF, d, F);
+        v3_add(T, T, dxF);
+        v3_scale(F, F, -1.0), v3_scale(T, T, -1.0);
+    }
+    const int comp = in->ids[2], torque = comp > 4;
+    const double *v = torque ? T : F;
+    if (comp == 1 || comp == 5) {
+        *value = v3_norm(v);
+        return 0;
+    }
+    hx_frame scratch;
+    double in_rm[3];
+    m3_tapply(in_rm, hx_frames_marker(c->frames, in->index[3], &scratch)->R, v);
+    *value = in_rm[comp - (torque ? 6 : 2)];
+    return 0;
+}
+
 int hx_expr_operand_input(const hx_expr_program *p, const hx_expr_context *c, int k,
                           double *value, hx_expr_fault *fault)
 {
@@ -59,6 +96,10 @@ int hx_expr_operand_input(const hx_expr_program *p, const hx_expr_context *c, in
     }
     case HX_EXPR_INPUT_VARVAL:
         if (variable(c, in, value, fault) != 0)
+            return -1;
+        break;
+    case HX_EXPR_INPUT_REACTION:
+        if (reaction(c, in, value, fault) != 0)
             return -1;
         break;
     case HX_EXPR_INPUT_DIF:

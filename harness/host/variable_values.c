@@ -9,7 +9,7 @@
 int hx_variables_values(const hx_frames *fr, double *values, hx_message *msg)
 {
     const hx_model *m = fr->model;
-    const hx_expr_context c = {fr, values};
+    const hx_expr_context c = {fr, values, NULL};
     for (int i = 0; i < m->nvariables; ++i) {
         const int k = m->variable_order != NULL ? m->variable_order[i] : i;
         const hx_variable *v = &m->variables[k];

@@ -105,7 +105,8 @@ void hx_build_builtin_request(hx_draft *d, const hx_element_read *e)
         {"MARKER_ACCELERATION", "accelerations of markers are not answered by the harness (its"
          " measures are displacements and velocities, docs/interface.md §8.5)"},
         {"MARKER_FORCE", "the forces at a marker are not answered by the harness (it keeps no"
-         " joint reactions and no per-marker sum of the applied forces)"},
+         " per-marker sum of the applied forces; a joint's reaction is JOINT() or JPRIM() in"
+         " an EXPRESSION request)"},
         {"ELEMENTAL_FORCE", "the forces of an element by its type are not answered by the harness"
          " (a force element's loads are the CSV's forceID columns)"},
     };
@@ -178,7 +179,7 @@ int hx_draft_resolve_requests(hx_draft *d)
         }
         for (int j = 0; j < 8; ++j) {
             hx_message why;
-            const int linked = q->f[j] != NULL ? hx_expr_link(q->f[j], m, &why) : 0;
+            const int linked = q->f[j] != NULL ? hx_expr_link_output(q->f[j], m, &why) : 0;
             if (linked == 0)
                 continue;
             if (linked != HX_EXPR_UNANSWERED) {

@@ -161,8 +161,9 @@ static int build_builtin_request(hx_adm_reader *r, hx_adm_entry *e)
                            " docs/interface.md §8.5): give DISPLACEMENT, VELOCITY or F1..F8");
     if (type == 3)
         return hx_adm_fail(r, e, e->line, "FORCE: the forces at a marker are not answered by the"
-                           " harness (it keeps no joint reactions and no per-marker sum of the"
-                           " applied forces): give DISPLACEMENT, VELOCITY or F1..F8");
+                           " harness (it keeps no per-marker sum of the applied forces; a"
+                           " joint's reaction is JOINT() or JPRIM() in F1..F8): give"
+                           " DISPLACEMENT, VELOCITY or F1..F8");
     if (type >= 0 && nf > 0)
         return hx_adm_fail(r, e, e->line, "%s with F1..F8: give one or the other", types[type]);
     if (type < 0 && nf == 0)

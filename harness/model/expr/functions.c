@@ -96,7 +96,7 @@ static const hx_expr_function table[HX_FN_COUNT] = {
     [HX_FN_TY] = {"TY", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, K]])", FORCE},
     [HX_FN_TZ] = {"TZ", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, K]])", FORCE},
     [HX_FN_TM] = {"TM", HX_FK_UNANSWERED, 1, 2, ALL_IDS, "(I[, J])", FORCE},
-    [HX_FN_JOINT] = ELEMENT_FORCE("JOINT"),
+    [HX_FN_JOINT] = {"JOINT", HX_FK_REACTION, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", NULL},
     [HX_FN_SFORCE] = ELEMENT_FORCE("SFORCE"),
     [HX_FN_VFORCE] = ELEMENT_FORCE("VFORCE"),
     [HX_FN_VTORQ] = ELEMENT_FORCE("VTORQ"),
@@ -105,7 +105,7 @@ static const hx_expr_function table[HX_FN_COUNT] = {
     [HX_FN_BUSHING] = ELEMENT_FORCE("BUSHING"),
     [HX_FN_FIELD] = ELEMENT_FORCE("FIELD"),
     [HX_FN_COUPLER] = ELEMENT_FORCE("COUPLER"),
-    [HX_FN_JPRIM] = ELEMENT_FORCE("JPRIM"),
+    [HX_FN_JPRIM] = {"JPRIM", HX_FK_REACTION, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", NULL},
     [HX_FN_GCON] = ELEMENT_FORCE("GCON"),
     [HX_FN_ORIENT] = {"ORIENT", HX_FK_UNANSWERED, 3, 4, ALL_IDS, "(system, component, I[, J])",
                       "the page that defines it could be read only up to its eleventh orientation"

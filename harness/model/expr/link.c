@@ -2,7 +2,8 @@
  * A program's ids resolved against a model (expr.h): markers, variables,
  * Control_Diffs, arrays, splines and curves by id to their indices, each id
  * the model does not define named with its place in the text; a function
- * the harness does not answer yet is refused here.
+ * the harness does not answer yet is refused here, and so is a joint's
+ * reaction anywhere but in an output expression.
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -27,7 +28,32 @@ static int fail_at(hx_expr_program *p, hx_message *msg, int line, int column, co
     return hx_fail(msg, "%s:%d:%d: %s", p->file, line, column, what);
 }
 
-static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
+/* JOINT(id, jflag, comp, rm), JPRIM(...): the joint, its markers and rm. */
+static int link_reaction(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
+                         const char *text, int output, hx_message *msg)
+{
+    const int primitive = in->function == HX_FN_JPRIM;
+    if (!output)
+        return fail_at(p, msg, in->line, in->column, "%s: a joint's reaction is known only"
+                       " once the accelerations are, after the forces and variables: a force"
+                       " or variable that reads it closes an algebraic loop, which the harness"
+                       " does not solve (REQUEST and Post_Request expressions may read it)",
+                       text);
+    const int k = primitive ? hx_model_primitive(m, in->ids[0]) : hx_model_joint(m, in->ids[0]);
+    if (k < 0)
+        return fail_at(p, msg, in->line, in->column, "%s: no %s %d in the model", text,
+                       primitive ? "Constraint_Jprim (JPRIM)" : "Constraint_Joint (JOINT)",
+                       in->ids[0]);
+    in->index[0] = k;
+    in->index[1] = m->joints[k].i_marker, in->index[2] = m->joints[k].j_marker;
+    in->index[3] = in->ids[3] == 0 ? -1 : hx_model_marker(m, in->ids[3]);
+    if (in->ids[3] != 0 && in->index[3] < 0)
+        return fail_at(p, msg, in->line, in->column, "%s: rm (argument 4): no Reference_Marker"
+                       " %d in the model", text, in->ids[3]);
+    return 0;
+}
+
+static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, int output,
                       hx_message *msg)
 {
     char text[96];
@@ -36,6 +62,7 @@ static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
     in->variable = -1;
     switch (in->kind) {
     case HX_EXPR_INPUT_TIME: return 0;
+    case HX_EXPR_INPUT_REACTION: return link_reaction(p, in, m, text, output, msg);
     case HX_EXPR_INPUT_MEASURE:
         for (int k = 0; k < 4; ++k) {
             in->index[k] = in->ids[k] == 0 ? -1 : hx_model_marker(m, in->ids[k]);
@@ -84,7 +111,7 @@ static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
     }
 }
 
-int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg)
+static int link_program(hx_expr_program *p, const hx_model *m, int output, hx_message *msg)
 {
     p->model = NULL;
     for (int k = 0; k < p->nops; ++k) {
@@ -115,8 +142,18 @@ int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg)
         }
     }
     for (int k = 0; k < p->ninputs; ++k)
-        if (link_input(p, &p->inputs[k], m, msg) != 0)
+        if (link_input(p, &p->inputs[k], m, output, msg) != 0)
             return -1;
     p->model = m;
     return 0;
+}
+
+int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg)
+{
+    return link_program(p, m, 0, msg);
+}
+
+int hx_expr_link_output(hx_expr_program *p, const hx_model *m, hx_message *msg)
+{
+    return link_program(p, m, 1, msg);
 }

@@ -281,6 +281,18 @@ static int known_call(parser *p, int code, const hx_expr_token *name)
         memcpy(p->tree->nodes[k].ids, ids + 1, 3 * sizeof(int));
         p->tree->nodes[k].nids = 3;
         return k;
+    case HX_FK_REACTION: /* (id, jflag, comp, rm) */
+        if (ids[1] > 1)
+            return fail_at(p, places[2], places[3], "%s: jflag (argument 2) is %d: 0 (on the I"
+                           " marker, at it) or 1 (on the J marker, at it)", f->name, ids[1]);
+        if (ids[2] < 1 || ids[2] > 8)
+            return fail_at(p, places[4], places[5], "%s: comp (argument 3) is %d: 1 to 8 (FM, FX,"
+                           " FY, FZ, TM, TX, TY, TZ)", f->name, ids[2]);
+        if ((k = add_node(p, HX_NODE_INPUT, code, line, column)) < 0)
+            return -1;
+        memcpy(p->tree->nodes[k].ids, ids, 4 * sizeof(int));
+        p->tree->nodes[k].nids = count;
+        return k;
     case HX_FK_MEASURE:
         if (ids[0] == 0)
             return fail_at(p, places[0], places[1], "%s: its I marker is 0: I names a marker"

@@ -15,7 +15,7 @@ static int value_at(const hx_load *l, const hx_expr_program *p, const hx_frames 
     *value = 0.0;
     if (p == NULL)
         return 0;
-    const hx_expr_context c = {fr, fr->variables}; /* computed before the loads */
+    const hx_expr_context c = {fr, fr->variables, NULL}; /* computed before the loads */
     hx_expr_fault fault;
     if (hx_expr_eval(p, &c, value, &fault) == 0)
         return 0;

@@ -3,6 +3,7 @@
 
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/failure.h"
+#include "sim/dynamics/reactions.h"
 #include "sim/dynamics/routines.h"
 #include "sim/simulation/requests.h"
 #include "sim/simulation/simulation.h"
@@ -43,19 +44,22 @@ void hx_csv_header(FILE *f, const hx_dynamics *d)
     hx_stateeqns_csv_header(f, d);
     hx_routines_csv_header(f, d);
     hx_requests_csv_header(f, m);
-    fprintf(f, ",energy,dissipated,phi,phidot\n");
+    fprintf(f, ",energy,dissipated,phi,phidot");
+    /* the joints' reactions after every other column (docs/harness.md) */
+    for (int k = 0; k < m->njoints; ++k) {
+        const char *kind = hx_joint_type_is_primitive(m->joints[k].type) ? "jprim" : "joint";
+        const int id = m->joints[k].id;
+        fprintf(f, ",%s%d.fx,%s%d.fy,%s%d.fz,%s%d.tx,%s%d.ty,%s%d.tz", kind, id, kind, id, kind,
+                id, kind, id, kind, id, kind, id);
+    }
+    fprintf(f, "\n");
 }
 
-int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
-               const hx_energy *energy, const hx_energy *energy0)
+/* The row's values after the evaluation at (t, y), the joints' reactions given. */
+static int row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+               const hx_energy *energy, const hx_energy *energy0, const double *reactions)
 {
     const hx_model *m = d->m;
-    double *ydot = malloc(sizeof(double) * (size_t)d->n);
-    if (ydot == NULL || hx_dynamics_rhs(d, dd, t, y, ydot) != 0) {
-        free(ydot);
-        return -1;
-    }
-    free(ydot);
     double phi, phidot;
     if (hx_constraints_residuals(d, dd, t, y, &phi, &phidot) != 0)
         return -1;
@@ -92,10 +96,28 @@ int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
     if (hx_routines_csv_row(f, d, dd, y) != 0)
         return -1;
     hx_message msg;
-    if (hx_requests_csv_row(f, &dd->frames, &msg) != 0)
+    if (hx_requests_csv_row(f, &dd->frames, reactions, &msg) != 0)
         return hx_dynamics_fail(dd, "%s", msg.text);
-    fprintf(f, ",%.15g,%.15g,%.3g,%.3g\n", energy->total, hx_dissipated(energy, energy0), phi,
+    fprintf(f, ",%.15g,%.15g,%.3g,%.3g", energy->total, hx_dissipated(energy, energy0), phi,
             phidot);
+    for (int k = 0; k < 6 * m->njoints; ++k)
+        fprintf(f, ",%.15g", reactions[k]);
+    fprintf(f, "\n");
     return 0;
 }
 
+int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+               const hx_energy *energy, const hx_energy *energy0)
+{
+    const hx_model *m = d->m;
+    double *ydot = malloc(sizeof(double) * ((size_t)d->n + 6 * (size_t)m->njoints));
+    if (ydot == NULL || hx_dynamics_rhs(d, dd, t, y, ydot) != 0) {
+        free(ydot);
+        return -1;
+    }
+    double *reactions = ydot + d->n; /* before anything else evaluates on dd */
+    hx_reactions_all(d, dd, ydot, reactions);
+    const int status = row(f, d, dd, t, y, energy, energy0, reactions);
+    free(ydot);
+    return status;
+}

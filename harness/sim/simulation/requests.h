@@ -13,17 +13,20 @@
 
 /* The eight values of request k of fr's model at fr (current for the
  * request's markers: tracked ones updated, the others computed here).
- * variables holds the model's variables' values (NULL when it has none).
+ * variables holds the model's variables' values (NULL when it has none),
+ * reactions the joints' (sim/dynamics/reactions.h; NULL: JOINT and JPRIM
+ * fail).
  * 0, or -1 with "file:line:column: REQUEST/5 F2: what at t = ..." in msg
  * (a fault of an expression). */
-int hx_requests_values(const hx_frames *fr, int k, const double *variables, double out[8],
-                       hx_message *msg);
+int hx_requests_values(const hx_frames *fr, int k, const double *variables,
+                       const double *reactions, double out[8], hx_message *msg);
 
 /* ",request5.1,...,request5.8" for each request, in the order read. */
 void hx_requests_csv_header(FILE *f, const hx_model *m);
 
 /* Their values at fr, each with 15 significant digits; 0, or -1 with msg
  * (nothing written for the request at fault and after it). */
-int hx_requests_csv_row(FILE *f, const hx_frames *fr, hx_message *msg);
+int hx_requests_csv_row(FILE *f, const hx_frames *fr, const double *reactions,
+                        hx_message *msg);
 
 #endif
