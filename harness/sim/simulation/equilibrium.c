@@ -26,6 +26,7 @@
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/failure.h"
+#include "sim/dynamics/loads.h"
 
 /* R: a stiffness this small against the model's (its force per length, or
  * per radian times its length) on the diagonal. A direction nothing holds
@@ -254,6 +255,35 @@ static int refuse_unconverged(const solver *sv, int iterations, double residual)
                             " largest on %s", iterations, sv->t, residual, sv->F, text);
 }
 
+/* The model's force F, after an evaluation at the start: the largest of the
+ * parts' weights, the loads (a couple over the model's length) and the force
+ * elements' loads, each alone (their sum on a part is near zero near an
+ * equilibrium: no scale). */
+static int model_force(solver *sv)
+{
+    const hx_dynamics *d = sv->d;
+    const hx_model *m = d->m;
+    double F = 0.0;
+    for (int k = 0; k < m->nbodies; ++k)
+        if (d->dof[k].kind != HX_DOF_GROUND)
+            F = fmax(F, m->bodies[k].mass * v3_norm(m->gravity) / d->ucf);
+    for (int k = 0; k < m->nforces; ++k)
+        F = fmax(F, fmax(v3_norm(sv->dd->element_load + 6 * k),
+                         v3_norm(sv->dd->element_load + 6 * k + 3) / sv->L));
+    for (int k = 0; k < m->nloads; ++k) {
+        hx_load_share share;
+        hx_message msg;
+        if (d->load_off[k])
+            continue;
+        if (hx_load_share_at(m, &sv->dd->frames, k, &share, &msg) != 0)
+            return hx_dynamics_fail(sv->dd, "%s", msg.text);
+        for (int j = 0; j < share.count; ++j)
+            F = fmax(F, fmax(v3_norm(share.F[j]), v3_norm(share.T[j]) / sv->L));
+    }
+    sv->F = F;
+    return 0;
+}
+
 /* The loop, once the solver's work is set up; y is moved in place. */
 static int solve(solver *sv, double *y, hx_equilibrium_result *result)
 {
@@ -262,10 +292,8 @@ static int solve(solver *sv, double *y, hx_equilibrium_result *result)
         y[d->nq + sv->var[i]] = 0.0;
     if (hx_constraints_project(d, sv->dd, sv->t, y) != 0 || unbalanced(sv, y, sv->h) != 0)
         return -1;
-    sv->F = 0.0; /* the model's force: the largest load on a part at the start */
-    for (int k = 0; k < d->m->nbodies; ++k)
-        sv->F = fmax(sv->F, fmax(v3_norm(sv->dd->force + 3 * k),
-                                 v3_norm(sv->dd->torque + 3 * k) / sv->L));
+    if (model_force(sv) != 0)
+        return -1;
     if (!(sv->F > 0.0))
         sv->F = 1.0; /* nothing loads the model: every h is zero */
     for (int i = 0; i < sv->nv; ++i)

@@ -9,9 +9,10 @@
 
 #include "sim/dynamics/dynamics.h"
 
-/* Converged when every part's unbalanced force is within this of the model's
- * force (the largest load on a part at the start) and its torque within this
- * of that force times the model's length. */
+/* Converged when every component of the parts' unbalanced loads is within
+ * this of the model's force (the largest of the parts' weights, the loads and
+ * the force elements' loads, each alone, at the start; a couple over the
+ * model's length) or, for a turn, of that force times the model's length. */
 #define HX_EQUILIBRIUM_TOLERANCE 1e-10
 #define HX_EQUILIBRIUM_ITERATIONS 50
 
