@@ -4,7 +4,8 @@
  * from it: a mass on a vertical spring, a pendulum at 60 degrees on a
  * reduced REVOLUTE and on a SPHERICAL (rows), one started above the
  * horizontal, two masses hung in a chain of springs, a bar on a torsion
- * spring against gravity; the refusals (a falling part named, no
+ * spring against gravity, a pendulum on a stiff spring not yet loaded (a
+ * direction of no stiffness at the start); the refusals (a falling part named, no
  * convergence); SIMULATE/STATIC in a command file and run --static (the
  * equilibrium the CSV's first row, the dynamic run after it at rest).
  */
@@ -139,6 +140,31 @@ static void mass_on_a_spring_settles_m_g_over_k_below(void **state)
     done(&o);
 }
 
+/* The same in mm (ucf 1000, the model's length 1000 mm, a turn's 1): k = 0.4
+ * N/mm settles 19.62 / 0.4 = 49.05 mm lower, at y = -1049.05 mm. */
+static const char spring_mm[] =
+    "equilibrium test\nUNITS/\n, FORCE = NEWTON\n, MASS = KILOGRAM\n, LENGTH = MILLIMETER\n"
+    ", TIME = SECOND\nACCGRAV/\n, IGRAV = 0\n, JGRAV = -9810\n, KGRAV = 0\n"
+    "PART/1, GROUND\nMARKER/10, PART = 1\n"
+    "PART/2, MASS = 2, CM = 20, IP = 100, 100, 100\n"
+    "MARKER/20, PART = 2, QP = 0, -1000, 0\n"
+    "SFORCE/1, TRANSLATION, I = 20, J = 10, FUNCTION = -0.4*(DM(20,10) - 1000)\n"
+    "END\n";
+
+static void mass_on_a_spring_in_mm(void **state)
+{
+    (void)state;
+    solved o;
+    solve(&o, "eq_spring_mm.adm", spring_mm);
+    converged(&o);
+    const double *p = centre(&o, 1);
+    assert_float_equal(p[1], -1049.05, 1e-9);
+    assert_float_equal(p[0], 0.0, 1e-9);
+    assert_true(o.result.iterations <= 2); /* the step in mm, not in the system's units */
+    assert_float_equal(o.result.force_scale, 19.62, 1e-12); /* the weight, in N */
+    done(&o);
+}
+
 static void pendulum_hangs_down(void **state)
 {
     (void)state;
@@ -185,6 +211,32 @@ static void torsion_spring_against_gravity(void **state)
     solve(&o, "eq_torsion.adm", torsion);
     converged(&o);
     assert_float_equal(o.y[o.d.dof[1].q], -0.44312552849, 1e-10);
+    done(&o);
+}
+
+/* The pendulum hung on a stiff spring at its pivot (k = 1e7 N/m each way, a
+ * VFORCE), started hanging with the spring unloaded: at the start its turn
+ * about the pivot has no stiffness at all (the spring's pull on the moved
+ * pivot and its moment about the centre cancel; gravity's share comes with
+ * the load), the Newton matrix singular but for R. It sags m g / k =
+ * 9.81e-7 and does not turn. */
+static void pendulum_on_a_stiff_unloaded_spring(void **state)
+{
+    (void)state;
+    solved o;
+    solve(&o, "eq_stiff.adm", HEAD
+          "MARKER/11, PART = 1\n"
+          "PART/2, MASS = 1, CM = 20, IP = 0.01, 0.02, 0.03\n"
+          "MARKER/20, PART = 2, QP = 0, -0.5, 0\n"
+          "MARKER/21, PART = 2\n"
+          "VFORCE/1, I = 21, JFLOAT = 11, RM = 10, FX = -1E7*DX(21,10)\\"
+          "FY = -1E7*DY(21,10)\\FZ = -1E7*DZ(21,10)\n"
+          "END\n");
+    converged(&o);
+    const double *p = centre(&o, 1);
+    assert_float_equal(p[1], -0.5 - 9.81e-7, 1e-13);
+    assert_float_equal(p[0], 0.0, 1e-13);
+    assert_float_equal(p[3], 1.0, 1e-12); /* not turned */
     done(&o);
 }
 
@@ -308,9 +360,11 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(mass_on_a_spring_settles_m_g_over_k_below),
+        cmocka_unit_test(mass_on_a_spring_in_mm),
         cmocka_unit_test(pendulum_hangs_down),
         cmocka_unit_test(chain_of_springs_hangs_straight),
         cmocka_unit_test(torsion_spring_against_gravity),
+        cmocka_unit_test(pendulum_on_a_stiff_unloaded_spring),
         cmocka_unit_test(a_falling_part_is_refused_by_name),
         cmocka_unit_test(no_convergence_names_the_part),
         cmocka_unit_test(command_file_static_then_dynamic_stays_at_rest),

@@ -29,12 +29,19 @@
 #include "sim/dynamics/loads.h"
 
 /* R: a stiffness this small against the model's (its force per length, or
- * per radian times its length) on the diagonal. A direction nothing holds
- * and nothing pushes along (a spherical pendulum's spin about the vertical)
- * then takes no step; one that the load pushes along and nothing holds (a
- * falling part) shows as a step R alone carries: no equilibrium. */
+ * per radian times its length), or against its stiffest entry, on the
+ * diagonal. A direction nothing holds and nothing pushes along (a spherical
+ * pendulum's spin about the vertical) then takes no step; one that the load
+ * pushes along and nothing holds (a falling part) shows as a step R alone
+ * carries: no equilibrium. */
 #define REGULARIZATION 1e-8
-#define UNHELD_SHARE 0.1  /* of the unbalanced loads carried by R: no equilibrium */
+#define REGULARIZATION_STIFFEST 1e-12 /* a direction stiff parts cancel in (a part on stiff
+                                       * springs not yet loaded, turning about its pivot)
+                                       * keeps a pivot above the elimination's floor, 1e-14
+                                       * of the largest entry */
+#define UNHELD_SHARE 0.1  /* of the unbalanced loads carried by R: nothing holds a part */
+#define UNHELD_ITERATIONS 3 /* iterations in a row of it: no equilibrium */
+#define DAMPINGS 20       /* raisings of R for a step within the limits */
 #define MAX_TURN 0.5      /* radians a Newton step turns a part at most */
 #define MAX_SHIFT 0.5     /* of the model's length a Newton step moves a part at most */
 #define HALVINGS 8        /* of a step that does not lower the unbalanced loads */
@@ -49,10 +56,12 @@ typedef struct solver {
     int *body;           /* per unknown: its part */
     double *scale;       /* per unknown: F, or F L for a turn */
     double *length;      /* per unknown: L, or 1 for a turn */
+    double *reg;         /* per unknown: R's diagonal, in the system's units */
     double *ydot, *trial; /* n each */
     double *gen;         /* nu: the generalized forces */
     double *h, *hp, *hm, *dx; /* nv each */
     double *A, *b;       /* na x na, na */
+    double *A0;          /* the saddle system with R, kept for solves with R raised */
     double *phi, *G;     /* nrows, 12 a row */
 } solver;
 
@@ -120,14 +129,16 @@ static void displace(const solver *sv, const double *y, const double *dx, double
     memcpy(u, y + d->nq, sizeof(double) * (size_t)d->nu);
 }
 
-/* The saddle system at y, h its unbalanced loads: K by central differences,
- * R, and the active constraint rows on the unknowns, each scaled to the
- * model's stiffness F / L (the system's pivots then of one size). */
+/* The saddle system at y, in units of the model (each unknown over its
+ * length, each load over its scale: K's entries near 1 for gravity's
+ * stiffness): K by central differences, R on its diagonal, and the active
+ * constraint rows on the unknowns, each over its largest entry. */
 static int newton_matrix(solver *sv, const double *y)
 {
     const hx_dynamics *d = sv->d;
     const int nv = sv->nv, na = sv->na;
     memset(sv->A, 0, sizeof(double) * (size_t)na * (size_t)na);
+    double stiffest = 0.0;
     for (int j = 0; j < nv; ++j) {
         const double step = hx_difference_step(0.0, DIFFERENCE, sv->length[j]);
         memset(sv->dx, 0, sizeof(double) * (size_t)nv);
@@ -138,9 +149,15 @@ static int newton_matrix(solver *sv, const double *y)
         displace(sv, y, sv->dx, -1.0, sv->trial);
         if (unbalanced(sv, sv->trial, sv->hm) != 0)
             return -1;
-        for (int i = 0; i < nv; ++i)
-            sv->A[i * na + j] = (sv->hp[i] - sv->hm[i]) / (2.0 * step);
-        sv->A[j * na + j] += REGULARIZATION * sv->scale[j] / sv->length[j];
+        for (int i = 0; i < nv; ++i) {
+            double *K = &sv->A[i * na + j];
+            *K = (sv->hp[i] - sv->hm[i]) / (2.0 * step) * sv->length[j] / sv->scale[i];
+            stiffest = fmax(stiffest, fabs(*K));
+        }
+    }
+    for (int j = 0; j < nv; ++j) {
+        sv->reg[j] = fmax(REGULARIZATION, REGULARIZATION_STIFFEST * stiffest);
+        sv->A[j * na + j] += sv->reg[j];
     }
     if (na == nv)
         return 0;
@@ -155,7 +172,7 @@ static int newton_matrix(solver *sv, const double *y)
             for (int c = 0; c < row->width[bl]; ++c)
                 for (int i = 0; i < nv; ++i)
                     if (sv->var[i] == row->u[bl] + c) {
-                        line[i] = sv->G[12 * r + row->slot[bl] + c];
+                        line[i] = sv->G[12 * r + row->slot[bl] + c] * sv->length[i];
                         big = fmax(big, fabs(line[i]));
                     }
         if (big == 0.0) { /* the row holds only driven parts: not the solve's */
@@ -163,7 +180,7 @@ static int newton_matrix(solver *sv, const double *y)
             continue;
         }
         for (int i = 0; i < nv; ++i) {
-            line[i] *= sv->F / sv->L / big;
+            line[i] /= big;
             sv->A[i * na + k] = line[i];
         }
         ++k;
@@ -172,20 +189,49 @@ static int newton_matrix(solver *sv, const double *y)
     return 0;
 }
 
-/* The Newton step into sv->dx; the system solved of size sv->na in a matrix
- * of stride na. */
-static int newton_step(solver *sv, int na)
+/* The saddle system compacted to the rows taken (stride sv->na) and kept in
+ * A0; na the stride it was built with. */
+static void keep_matrix(solver *sv, int na)
 {
     const int n = sv->na;
-    if (n != na) /* compact the rows taken to stride n for hx_solve */
+    if (n != na)
         for (int i = 0; i < n; ++i)
             memmove(sv->A + (size_t)i * n, sv->A + (size_t)i * na, sizeof(double) * (size_t)n);
+    memcpy(sv->A0, sv->A, sizeof(double) * (size_t)n * (size_t)n);
+}
+
+/* The Newton step with R times `damping` into sv->dx (sv->b keeps it in the
+ * system's units). */
+static int newton_step(solver *sv, double damping)
+{
+    const int n = sv->na;
+    memcpy(sv->A, sv->A0, sizeof(double) * (size_t)n * (size_t)n);
+    for (int j = 0; j < sv->nv; ++j)
+        sv->A[j * n + j] += (damping - 1.0) * sv->reg[j];
     for (int i = 0; i < n; ++i)
-        sv->b[i] = i < sv->nv ? -sv->h[i] : 0.0;
+        sv->b[i] = i < sv->nv ? -sv->h[i] / sv->scale[i] : 0.0;
     if (hx_solve(n, sv->A, sv->b) != 0)
         return -1;
-    memcpy(sv->dx, sv->b, sizeof(double) * (size_t)sv->nv);
+    for (int i = 0; i < sv->nv; ++i)
+        sv->dx[i] = sv->b[i] * sv->length[i];
+    /* a step against the loads (their work -h.dx < 0: up to an unstable equilibrium, a
+     * pendulum started above the horizontal to the top) is turned to go with them */
+    double work = 0.0;
+    for (int i = 0; i < sv->nv; ++i)
+        work += sv->h[i] * sv->dx[i];
+    if (work < 0.0)
+        for (int i = 0; i < sv->nv; ++i)
+            sv->dx[i] = -sv->dx[i];
     return 0;
+}
+
+/* How far dx goes beyond the step's limits: its largest ratio to them. */
+static double beyond_limits(const solver *sv)
+{
+    double ratio = 0.0;
+    for (int i = 0; i < sv->nv; ++i)
+        ratio = fmax(ratio, fabs(sv->dx[i]) / (turns(sv, i) ? MAX_TURN : MAX_SHIFT * sv->L));
+    return ratio;
 }
 
 /* A part's unbalanced force and torque relative to F and F L. */
@@ -300,6 +346,7 @@ static int solve(solver *sv, double *y, hx_equilibrium_result *result)
         sv->scale[i] = turns(sv, i) ? sv->F * sv->L : sv->F;
     result->force_scale = sv->F;
     const int na = sv->na;
+    int unheld_iterations = 0;
     for (int it = 0;; ++it) {
         double squares;
         const double residual = largest(sv, sv->h, &squares);
@@ -312,33 +359,35 @@ static int solve(solver *sv, double *y, hx_equilibrium_result *result)
         sv->na = na;
         if (newton_matrix(sv, y) != 0)
             return -1;
-        if (newton_step(sv, na) != 0)
+        keep_matrix(sv, na);
+        if (newton_step(sv, 1.0) != 0)
             return hx_dynamics_fail(sv->dd, "static equilibrium: the Newton matrix is singular"
                                     " at t = %g (constraints that lock each other?)", sv->t);
-        /* the share of the loads the regularization alone carries (hp as scratch) */
+        /* the share of the loads the regularization alone carries (hp as scratch): a
+         * part nothing holds, when it lasts (a direction may have no stiffness at one
+         * iterate only: a pendulum on a pivot spring not yet loaded) */
         double held = 0.0, unheld = 0.0;
         for (int i = 0; i < sv->nv; ++i) {
-            sv->hp[i] = REGULARIZATION * sv->dx[i] / sv->length[i];
+            sv->hp[i] = sv->reg[i] * sv->b[i];
             unheld += sv->hp[i] * sv->hp[i];
             held += (sv->h[i] / sv->scale[i]) * (sv->h[i] / sv->scale[i]);
         }
-        if (unheld > UNHELD_SHARE * UNHELD_SHARE * held)
+        unheld_iterations = unheld > UNHELD_SHARE * UNHELD_SHARE * held ? unheld_iterations + 1
+                                                                       : 0;
+        if (unheld_iterations == UNHELD_ITERATIONS)
             return refuse_unheld(sv, sv->hp);
-        /* a step against the loads (their work -h.dx < 0: up to an unstable equilibrium, a
-         * pendulum started above the horizontal to the top) is turned to go with them */
-        double work = 0.0;
-        for (int i = 0; i < sv->nv; ++i)
-            work += sv->h[i] * sv->dx[i];
-        if (work < 0.0)
-            for (int i = 0; i < sv->nv; ++i)
-                sv->dx[i] = -sv->dx[i];
-        /* the step limited, then halved until it is taken */
-        double s = 1.0;
-        for (int i = 0; i < sv->nv; ++i) {
-            const double limit = turns(sv, i) ? MAX_TURN : MAX_SHIFT * sv->L;
-            if (fabs(sv->dx[i]) * s > limit)
-                s = limit / fabs(sv->dx[i]);
+        /* a step beyond the limits: scaled down whole; when R carries it, R raised
+         * (Levenberg-Marquardt) until it is within them instead, so that the direction
+         * nothing holds takes a limited step while the stiff ones take theirs */
+        double damping = 1.0, ratio = beyond_limits(sv);
+        for (int k = 0; k < DAMPINGS && unheld_iterations > 0 && ratio > 1.0; ++k) {
+            damping *= 4.0 * ratio;
+            if (newton_step(sv, damping) != 0)
+                return hx_dynamics_fail(sv->dd, "static equilibrium: the Newton matrix is"
+                                        " singular at t = %g", sv->t);
+            ratio = beyond_limits(sv);
         }
+        double s = ratio > 1.0 ? 1.0 / ratio : 1.0;
         int taken = 0;
         for (int k = 0; k <= HALVINGS && !taken; ++k, s *= 0.5) {
             displace(sv, y, sv->dx, s, sv->trial);
@@ -380,17 +429,19 @@ int hx_equilibrium_solve(const hx_dynamics *d, hx_dynamics_data *dd, double t, d
     sv.body = malloc(sizeof(int) * (nu + 1));
     sv.scale = malloc(sizeof(double) * (nu + 1));
     sv.length = malloc(sizeof(double) * (nu + 1));
+    sv.reg = malloc(sizeof(double) * (nu + 1));
     sv.ydot = malloc(sizeof(double) * (n + 1));
     sv.trial = malloc(sizeof(double) * (n + 1));
     sv.gen = calloc(nu + 1, sizeof(double));
     sv.h = malloc(sizeof(double) * (4 * nu + 1));
     sv.A = malloc(sizeof(double) * (na * na + 1));
     sv.b = malloc(sizeof(double) * (na + 1));
+    sv.A0 = malloc(sizeof(double) * (na * na + 1));
     sv.phi = malloc(sizeof(double) * (nr + 1));
     sv.G = malloc(sizeof(double) * (12 * nr + 1));
     int status = -1;
-    if (!sv.var || !sv.body || !sv.scale || !sv.length || !sv.ydot || !sv.trial || !sv.gen ||
-        !sv.h || !sv.A || !sv.b || !sv.phi || !sv.G) {
+    if (!sv.var || !sv.body || !sv.scale || !sv.length || !sv.reg || !sv.ydot || !sv.trial ||
+        !sv.gen || !sv.h || !sv.A || !sv.A0 || !sv.b || !sv.phi || !sv.G) {
         hx_fail(msg, "out of memory");
     } else {
         sv.hp = sv.h + nu, sv.hm = sv.h + 2 * nu, sv.dx = sv.h + 3 * nu;
@@ -412,7 +463,8 @@ int hx_equilibrium_solve(const hx_dynamics *d, hx_dynamics_data *dd, double t, d
         if (status != 0)
             hx_fail(msg, "%s", dd->message);
     }
-    free(sv.var), free(sv.body), free(sv.scale), free(sv.length), free(sv.ydot);
-    free(sv.trial), free(sv.gen), free(sv.h), free(sv.A), free(sv.b), free(sv.phi), free(sv.G);
+    free(sv.var), free(sv.body), free(sv.scale), free(sv.length), free(sv.reg), free(sv.ydot);
+    free(sv.trial), free(sv.gen), free(sv.h), free(sv.A), free(sv.A0), free(sv.b), free(sv.phi);
+    free(sv.G);
     return status;
 }
