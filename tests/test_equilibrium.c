@@ -326,6 +326,14 @@ static void command_file_static_then_dynamic_stays_at_rest(void **state)
     assert_float_equal(x[3], 0.0, 1e-10);    /* the equilibrium */
     assert_float_equal(x[5], 0.0, 1e-9);
     csv_free(&t);
+    /* a SIMULATE/STATIC last: the run is that equilibrium alone, one row */
+    test_write_file("eq_acf.acf", "eq_acf\n\nSIMULATE/STATIC\nSTOP\n");
+    assert_int_equal(sim_run_csv(model, csv, (const char *const[]){"--quiet", NULL}), 0);
+    csv_read(csv, &t);
+    assert_int_equal(t.rows, 1);
+    column_values(csv, "body2.x", &t, x);
+    assert_float_equal(x[0], 0.0, 1e-10);
+    csv_free(&t);
 }
 
 static void run_static_starts_from_the_equilibrium(void **state)
