@@ -251,8 +251,6 @@ static void refuse(const char *command, const char *where, const char *what, con
 static void what_the_run_cannot_do_is_refused(void **state)
 {
     (void)state;
-    refuse("SIMULATE/STATIC", "refused.acf:4: ", "SIMULATE/STATIC",
-           "static equilibrium is not computed by the harness yet");
     refuse("DEACTIVATE/JOINT, ID=1", "refused.acf:4: ", "DEACTIVATE/JOINT",
            "the harness switches SFORCE, VFORCE, VTORQUE and GFORCE given by FUNCTION"
            " expressions, not other elements yet");
@@ -278,7 +276,7 @@ static void what_the_run_cannot_do_is_refused(void **state)
     acf = test_write_file("nothing.acf", "oscillator\n\nSTOP\n");
     run((const char *const[]){OSCILLATOR, "--acf", acf, "--quiet", NULL}, &c);
     assert_int_equal(c.status, 1);
-    assert_contains(c.err, "nothing.acf: no SIMULATE/DYNAMIC command: nothing to run");
+    assert_contains(c.err, "nothing.acf: no SIMULATE command: nothing to run");
 }
 
 /* ---- ACTIVATE and DEACTIVATE --------------------------------------------------------------- */

@@ -26,6 +26,8 @@ static void usage(FILE *f)
             "  --acf FILE          follow this command file (SIMULATE/DYNAMIC segments,\n"
             "                      INTEGRATOR's ERROR); the options given override its values\n"
             "  --no-acf            do not follow MODEL.acf beside MODEL.adm\n"
+            "  --static            start from the static equilibrium: the parts moved to where\n"
+            "                      the loads balance, velocities zero (as SIMULATE/STATIC)\n"
             "  --integrator NAME   dopri5 (default: adaptive, error-controlled) |\n"
             "                      bdf (implicit, variable order and step: stiff models) |\n"
             "                      rk4 | euler | symplectic-euler (fixed steps: give --step) |\n"
@@ -149,6 +151,7 @@ static int parse(int argc, char **argv, hx_simulation_options *so, run_args *arg
         {"jacobian", required_argument, NULL, 'j'},   {"max-order", required_argument, NULL, 'O'},
         {"linear-solver", required_argument, NULL, 'L'},
         {"acf", required_argument, NULL, 'A'},        {"no-acf", no_argument, NULL, 'N'},
+        {"static", no_argument, NULL, 'S'},
         {"help", no_argument, NULL, 'h'},             {0, 0, 0, 0}};
     hx_integrator_options *io = &so->integration;
     int opt;
@@ -183,6 +186,7 @@ static int parse(int argc, char **argv, hx_simulation_options *so, run_args *arg
         case 'o': args->out = optarg; break;
         case 'A': args->acf = optarg; break;
         case 'N': args->no_acf = 1; break;
+        case 'S': so->static_start = 1; break;
         case 'I': bad = hx_option_positive("run", "output-interval", optarg, &io->output_interval); break;
         case 'r': bad = hx_option_positive("run", "rtol", optarg, &io->rtol); break;
         case 'a': bad = hx_option_positive("run", "atol", optarg, &io->atol); break;

@@ -86,7 +86,11 @@ static void apply(hx_command_schedule *s, const hx_command_overrides *over)
         while (n < s->nsegments && start < over->t_end)
             start = s->segments[n++].t_end;
         s->nsegments = n;
-        s->segments[n - 1].t_end = over->t_end;
+        hx_segment *last = &s->segments[n - 1];
+        const double from = n > 1 ? s->segments[n - 2].t_end : 0.0;
+        last->t_end = over->t_end;
+        if (!(last->output_interval > 0.0)) /* a SIMULATE/STATIC last, drawn on */
+            last->output_interval = (last->t_end - from) / 1000.0;
     }
     for (int k = 0; k < s->nsegments; ++k) {
         hx_segment *g = &s->segments[k];
@@ -117,7 +121,7 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
         return hx_fail(msg, "out of memory");
     }
     double t = 0.0;
-    int noted = 0;
+    int noted = 0, statics = 0; /* statics: a SIMULATE/STATIC since the last segment */
     for (int k = 0; k < f->ncommands; ++k) {
         const hx_command *c = &f->commands[k];
         if (c->kind == HX_COMMAND_STOP)
@@ -148,10 +152,8 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
             return refuse(path, c, msg);
         }
         if (c->analysis == HX_ANALYSIS_STATIC) {
-            free(off);
-            hx_command_schedule_free(out);
-            return hx_fail(msg, "%s:%d: SIMULATE/STATIC: static equilibrium is not computed by"
-                           " the harness yet", path, c->line);
+            statics = 1; /* the next segment starts with the equilibrium */
+            continue;
         }
         const double end = c->duration ? t + c->end : c->end;
         if (!(end > t)) {
@@ -168,13 +170,19 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
                     c->line, dt, t, end);
         unsigned char *flags = out->loads_off + (size_t)out->nsegments * nloads;
         memcpy(flags, off, nloads);
-        out->segments[out->nsegments++] = (hx_segment){end, dt, rtol, atol, flags};
+        out->segments[out->nsegments++] = (hx_segment){end, dt, rtol, atol, flags, statics};
+        statics = 0;
         t = end;
+    }
+    if (statics) { /* a SIMULATE/STATIC last: the equilibrium alone, a segment of no length */
+        unsigned char *flags = out->loads_off + (size_t)out->nsegments * nloads;
+        memcpy(flags, off, nloads);
+        out->segments[out->nsegments++] = (hx_segment){t, 0.0, rtol, atol, flags, 1};
     }
     free(off);
     if (out->nsegments == 0) {
         hx_command_schedule_free(out);
-        return hx_fail(msg, "%s: no SIMULATE/DYNAMIC command: nothing to run", path);
+        return hx_fail(msg, "%s: no SIMULATE command: nothing to run", path);
     }
     apply(out, over);
     return 0;

@@ -10,6 +10,7 @@
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/jacobian/jacobian.h"
+#include "sim/simulation/equilibrium.h"
 
 typedef struct run_context {
     const hx_dynamics *d;
@@ -107,6 +108,29 @@ static void add_stats(hx_integrator_stats *run, const hx_integrator_stats *segme
     }
 }
 
+/* The loads a segment switches off (docs/interface.md §9.9). */
+static void switch_loads(const hx_dynamics *d, const hx_segment *g)
+{
+    for (int j = 0; j < d->m->nloads; ++j)
+        d->load_off[j] = g->loads_off != NULL ? g->loads_off[j] : 0;
+}
+
+/* y moved to the static equilibrium at t (equilibrium.h); the energy balance
+ * is counted from there. */
+static int find_equilibrium(run_context *rc, double t, double *y)
+{
+    hx_simulation_result *result = rc->result;
+    hx_message msg;
+    if (hx_equilibrium_solve(rc->d, rc->dd, t, y, &result->equilibrium, &msg) != 0) {
+        snprintf(result->message, sizeof result->message, "%s", msg.text);
+        result->status = HX_INTEGRATION_FAILED;
+        return -1;
+    }
+    result->statics++;
+    result->energy0 = hx_energy_of(rc->d, rc->dd, t, y);
+    return 0;
+}
+
 /* The run's work once its data is set up; the caller frees both. */
 static int simulate(run_context *rc, const hx_segment *segments, int nsegments, double *y,
                     double *y_end)
@@ -120,6 +144,11 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
         result->status = HX_INTEGRATION_FAILED;
         return -1;
     }
+    if (nsegments > 0)
+        switch_loads(d, &segments[0]);
+    if ((opt->static_start || (nsegments > 0 && segments[0].equilibrium)) &&
+        find_equilibrium(rc, 0.0, y) != 0)
+        return -1;
     result->energy0 = hx_energy_of(d, dd, 0.0, y);
     result->energy_scale = fmax(fabs(result->energy0.total), fabs(result->energy0.kinetic));
     const int bdf = opt->integration.method == HX_METHOD_BDF;
@@ -141,8 +170,18 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
     for (int k = 0; k < nsegments; ++k) {
         /* each segment from the state the one before it ended in (docs/interface.md
          * §9.9): the integrator restarts there; its first output is after t */
-        for (int j = 0; j < d->m->nloads; ++j)
-            d->load_off[j] = segments[k].loads_off != NULL ? segments[k].loads_off[j] : 0;
+        switch_loads(d, &segments[k]);
+        if (k > 0 && segments[k].equilibrium) { /* SIMULATE/STATIC between segments: its row */
+            if (find_equilibrium(rc, t, y) != 0)
+                break;
+            if (opt->csv != NULL &&
+                hx_csv_row(opt->csv, d, dd, t, y, &result->energy0, &result->energy0) != 0) {
+                result->status = HX_INTEGRATION_FAILED;
+                break;
+            }
+        }
+        if (!(segments[k].t_end > t)) /* the equilibrium alone */
+            continue;
         hx_integrator_options io = opt->integration;
         io.output = output;
         io.t_end = segments[k].t_end;
@@ -190,7 +229,7 @@ int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *
                 hx_simulation_result *result)
 {
     const hx_segment whole = {opt->integration.t_end, opt->integration.output_interval,
-                              opt->integration.rtol, opt->integration.atol, NULL};
+                              opt->integration.rtol, opt->integration.atol, NULL, 0};
     return hx_simulate_segments(d, opt, &whole, 1, y_end, result);
 }
 
@@ -265,6 +304,10 @@ void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_op
     struct rusage usage;
     if (getrusage(RUSAGE_SELF, &usage) == 0)
         fprintf(f, "  peak memory %.1f MB (the whole process)\n", (double)usage.ru_maxrss / 1024.0);
+    if (r->statics > 0)
+        fprintf(f, "  static equilibri%s: %d; the last in %d Newton iterations, unbalanced loads"
+                " %.3g of the model's force %.6g\n", r->statics == 1 ? "um" : "a", r->statics,
+                r->equilibrium.iterations, r->equilibrium.residual, r->equilibrium.force_scale);
     if (d->nrows > 0)
         fprintf(f, "  largest constraint residual |phi| %.3g, |dphi/dt| %.3g\n", r->max_phi,
                 r->max_phidot);

@@ -14,6 +14,7 @@
 #include "sim/dynamics/dynamics.h"
 #include "sim/dynamics/energy.h"
 #include "sim/ode/integrator.h"
+#include "sim/simulation/equilibrium.h"
 
 /* Called at each output time after the CSV row, with the run's data (its
  * kinematics at (t, y)); non-zero stops the run. */
@@ -27,6 +28,7 @@ typedef struct hx_simulation_options {
     hx_observer_fn *observer;
     void *observer_ctx;
     int skip_energy;         /* no energy at the output times (timed runs; no CSV) */
+    int static_start;        /* the static equilibrium first (run --static, equilibrium.h) */
 } hx_simulation_options;
 
 typedef struct hx_simulation_result {
@@ -44,26 +46,33 @@ typedef struct hx_simulation_result {
     char jacobian[1024];      /* BDF with analytic partials: where they came from */
     long jacobian_outside;    /* entries the Jacobian found outside its sparsity (0) */
     int n;                    /* the state's size */
+    int statics;              /* static equilibria found (SIMULATE/STATIC, run --static) */
+    hx_equilibrium_result equilibrium; /* the last one's */
     char message[1024];
 } hx_simulation_result;
 
-/* Integrates from the model's initial state; y_end (may be NULL) receives
+/* Integrates from the model's initial state (its static equilibrium with
+ * opt->static_start); y_end (may be NULL) receives
  * the final state (d->n values). */
 int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
                 hx_simulation_result *result);
 
 /* One segment of a run (a command file's SIMULATE/DYNAMIC, docs/interface.md
  * §9.9): its end time (absolute), the time between its CSV rows (0: every
- * step), its tolerances, and the loads switched off during it (one flag per
- * load of the model; NULL: none). */
+ * step), its tolerances, the loads switched off during it (one flag per
+ * load of the model; NULL: none), and whether it starts with the static
+ * equilibrium (a SIMULATE/STATIC before it; a segment that ends where it
+ * starts is that equilibrium alone). */
 typedef struct hx_segment {
     double t_end, output_interval, rtol, atol;
     const unsigned char *loads_off;
+    int equilibrium;
 } hx_segment;
 
 /* The same run in segments, one after the other: each from the state the one
  * before it ended in (the integrator restarted there), with its own output
- * times (none at its start: the segment before wrote that row); one CSV and
+ * times (none at its start: the segment before wrote that row; a segment
+ * that starts with the static equilibrium writes its row there); one CSV and
  * one result, counts summed. opt's t_end is the progress line's; the
  * segments' own times and tolerances are those integrated. */
 int hx_simulate_segments(const hx_dynamics *d, const hx_simulation_options *opt,
