@@ -14,6 +14,9 @@
  * --initial` prints them. */
 #include "oracle_model.h"
 
+#include <cstdio>
+#include <cstdlib>
+
 namespace oracle {
 namespace {
 
@@ -174,6 +177,15 @@ Model cylindrical_on_moving()
     return m;
 }
 
+/* a position as scripts/joint_chain_model.sh prints it (awk's "%.10g"), so
+ * that a bar's left end is where the previous one's right end is, bit for bit */
+double as_printed(double x)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", x);
+    return std::strtod(text, nullptr);
+}
+
 }  // namespace
 
 /* (f) The chain of scripts/joint_chain_model.sh n: bar i (body i + 1), 1 kg,
@@ -193,9 +205,9 @@ Model chain(int n)
         const double x = 0.2 * (i - 1);
         const int id = 100 * i;
         m.bodies.push_back({i + 1, id, 1.0, 0.0001, 0.00333333333333, 0.00333333333333, 0.0, 0.0, 0.0});
-        m.markers.push_back(marker(id, i + 1, x + 0.1, 0, 0));
-        m.markers.push_back(marker(id + 1, i + 1, x, 0, 0));
-        m.markers.push_back(marker(id + 2, i + 1, x + 0.2, 0, 0));
+        m.markers.push_back(marker(id, i + 1, as_printed(x + 0.1), 0, 0));
+        m.markers.push_back(marker(id + 1, i + 1, as_printed(x), 0, 0));
+        m.markers.push_back(marker(id + 2, i + 1, as_printed(x + 0.2), 0, 0));
         m.joints.push_back({i, "SPHERICAL", id + 1, i == 1 ? 10 : id - 100 + 2, {0.0, 0.0, 0.0}});
     }
     m.driver_joint = 0;
