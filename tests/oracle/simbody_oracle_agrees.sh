@@ -15,7 +15,8 @@
 #     for the harness, `simbody_oracle chain --bodies N` for Simbody) over
 #     0.5 s, at every 0.01 s, DOPRI5 and BDF, at the tight tolerances below;
 #     then its negative control: the same chain with the last bar 1 % heavier
-#     must disagree.
+#     must disagree. Also the oracle's --time line (read by
+#     scripts/oracle_speed.sh) and its refusals of a bad --bodies.
 #
 # Tolerances, per model of size L (its largest reach): position 1e-6 L,
 # orientation 1e-6 rad, velocity 1e-5 L/s, angular velocity 1e-5 rad/s.
@@ -57,8 +58,26 @@ if [ "$chain" != 0 ]; then
     echo "FAIL chain $chain: the control's mass was not changed"
     exit 1
   fi
-  "$oracle" chain --bodies "$chain" --out "$work/chain$chain.oracle.csv" --end $end --interval $interval ||
-    { echo "FAIL chain $chain: the oracle did not run"; exit 1; }
+  "$oracle" chain --bodies "$chain" --out "$work/chain$chain.oracle.csv" --end $end --interval $interval \
+    --time >"$work/chain$chain.oracle.txt" || { echo "FAIL chain $chain: the oracle did not run"; exit 1; }
+  cat "$work/chain$chain.oracle.txt"
+  # --time, in the words scripts/oracle_speed.sh reads: a positive time, and
+  # realizations of Runge-Kutta-Merson's 5 stages per attempted step (4 to 6)
+  if ! awk '/^simbody_oracle time: integration / { t = $4; r = $7; a = $11; sub(/,/, "", r); sub(/,/, "", a)
+            ok = t > 0 && r >= 4 * a && r <= 6 * a && a > 0 }
+            END { exit !ok }' "$work/chain$chain.oracle.txt"; then
+    echo "FAIL chain $chain: the oracle's --time line is missing or its counts do not fit"
+    failures=$((failures + 1))
+  fi
+  for bad in "chain --out x" "chain --bodies 0 --out x" "chain --bodies 1025 --out x" "double_spherical --bodies 2 --out x"; do
+    # shellcheck disable=SC2086 # the words of a command line
+    "$oracle" $bad 2>"$work/bad.txt" >/dev/null
+    status=$?
+    if [ "$status" != 2 ] || ! grep -q -- "--bodies" "$work/bad.txt"; then
+      echo "FAIL simbody_oracle $bad: exit $status, not 2 with a message naming --bodies"
+      failures=$((failures + 1))
+    fi
+  done
   for integrator in dopri5 bdf mutant; do
     model="$work/chain$chain.xml" method=$integrator
     if [ "$integrator" = mutant ]; then model="$work/mutant_chain$chain.xml" method=dopri5; fi
