@@ -63,6 +63,12 @@ struct Model {
 const Model *find_model(const std::string &name);
 std::vector<std::string> model_names();
 
+/* The chain of n bars on SPHERICAL joints that scripts/joint_chain_model.sh n
+ * writes (docs/performance.md, "Joints between bodies"): the same ids, masses,
+ * inertias and marker positions, so that the harness runs that script's XML
+ * and Simbody this. */
+Model chain(int n);
+
 }  // namespace oracle
 
 #endif

@@ -1,6 +1,7 @@
-/* The five mechanisms of the oracle, each with the numbers of its XML twin
+/* The mechanisms of the oracle: five, each with the numbers of its XML twin
  * (tests/oracle/NAME.xml): SI units (m, kg, s, N), gravity 9.81 along -y.
  * A change here is a change there: the comparison fails on any difference.
+ * And the chain of scripts/joint_chain_model.sh, for any number of bars.
  *
  * Speeds are those of the Simbody mobilizer a tree joint becomes, whose F and
  * M frames coincide at t = 0 (simbody_oracle.cpp): REVOLUTE one rate about
@@ -12,6 +13,9 @@
  * of mass) are what Simbody computes from these: `simbody_oracle NAME
  * --initial` prints them. */
 #include "oracle_model.h"
+
+#include <cstdio>
+#include <cstdlib>
 
 namespace oracle {
 namespace {
@@ -172,6 +176,45 @@ Model cylindrical_on_moving()
     m.driver_joint = 0;
     return m;
 }
+
+/* a position as scripts/joint_chain_model.sh prints it (awk's "%.10g"), so
+ * that a bar's left end is where the previous one's right end is, bit for bit */
+double as_printed(double x)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", x);
+    return std::strtod(text, nullptr);
+}
+
+}  // namespace
+
+/* (f) The chain of scripts/joint_chain_model.sh n: bar i (body i + 1), 1 kg,
+ * 0.2 m along x, its centre-of-mass marker 100 i at x = 0.2 (i - 1) + 0.1, its
+ * left end 100 i + 1, its right end 100 i + 2; inertias 1e-4 and
+ * 0.00333333333333 kg m^2 (the script's digits); joint 1 from bar 1's left end
+ * to ground's marker 10 at the origin, joint i from bar i's left end to bar
+ * i - 1's right end; released at rest, straight along x. */
+Model chain(int n)
+{
+    Model m;
+    m.name = "chain";
+    m.ground = 1;
+    m.gravity[0] = 0, m.gravity[1] = -9.81, m.gravity[2] = 0;
+    m.markers.push_back(marker(10, 1, 0, 0, 0));
+    for (int i = 1; i <= n; ++i) {
+        const double x = 0.2 * (i - 1);
+        const int id = 100 * i;
+        m.bodies.push_back({i + 1, id, 1.0, 0.0001, 0.00333333333333, 0.00333333333333, 0.0, 0.0, 0.0});
+        m.markers.push_back(marker(id, i + 1, as_printed(x + 0.1), 0, 0));
+        m.markers.push_back(marker(id + 1, i + 1, as_printed(x), 0, 0));
+        m.markers.push_back(marker(id + 2, i + 1, as_printed(x + 0.2), 0, 0));
+        m.joints.push_back({i, "SPHERICAL", id + 1, i == 1 ? 10 : id - 100 + 2, {0.0, 0.0, 0.0}});
+    }
+    m.driver_joint = 0;
+    return m;
+}
+
+namespace {
 
 const std::vector<Model> &all_models()
 {

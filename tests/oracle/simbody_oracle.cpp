@@ -5,9 +5,17 @@
  * axes, at the centre of mass), so that a comparison goes column by column
  * (docs/testing.md, "The Simbody oracle").
  *
- *   simbody_oracle NAME --out FILE.csv [--end T] [--interval DT] [--accuracy A]
+ *   simbody_oracle NAME --out FILE.csv [--end T] [--interval DT] [--accuracy A] [--time]
  *   simbody_oracle NAME --initial     the XML's v_ic / w_ic of each body
  *   simbody_oracle --list
+ *
+ * NAME is a model of --list, or `chain --bodies N`: the chain of N bars on
+ * spherical joints of scripts/joint_chain_model.sh N. --time adds a line
+ * with the wall time of the integration alone (the calls of stepTo: neither
+ * the building of the model nor the writing of rows) and Simbody's counts,
+ * its realizations of the state to accelerations (its right-hand sides)
+ * among them, for the comparison of speed (docs/performance.md, "Against
+ * Simbody").
  *
  * Simbody works in joint coordinates: each tree joint is a mobilizer whose F
  * and M frames coincide at t = 0 (the joint frame W, below), so the model
@@ -15,6 +23,7 @@
  * constraint. Nothing of the harness is used. */
 #include <Simbody.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -233,9 +242,10 @@ void write_row(FILE *f, const Built &b, const oracle::Model &m, const State &s, 
 
 int usage()
 {
-    std::fprintf(stderr, "usage: simbody_oracle NAME --out FILE.csv [--end T] [--interval DT] [--accuracy A]\n"
+    std::fprintf(stderr, "usage: simbody_oracle NAME --out FILE.csv [--end T] [--interval DT] [--accuracy A] [--time]\n"
                          "       simbody_oracle NAME --initial\n"
-                         "       simbody_oracle --list\n");
+                         "       simbody_oracle --list\n"
+                         "NAME: one of --list, or chain --bodies N (1 <= N <= 1024)\n");
     return 2;
 }
 
@@ -250,18 +260,16 @@ int main(int argc, char **argv)
     }
     if (argc < 3)
         return usage();
-    const oracle::Model *m = oracle::find_model(argv[1]);
-    if (m == nullptr) {
-        std::fprintf(stderr, "simbody_oracle: no model '%s' (--list names them)\n", argv[1]);
-        return 2;
-    }
     const char *out = nullptr;
-    bool initial = false;
+    bool initial = false, timed = false;
     double end = 1.0, interval = 0.01, accuracy = 1e-12;
+    int chain_bodies = 0;
     for (int k = 2; k < argc; ++k) {
         const std::string a = argv[k];
         if (a == "--initial")
             initial = true;
+        else if (a == "--time")
+            timed = true;
         else if (k + 1 < argc && a == "--out")
             out = argv[++k];
         else if (k + 1 < argc && a == "--end")
@@ -270,8 +278,26 @@ int main(int argc, char **argv)
             interval = std::atof(argv[++k]);
         else if (k + 1 < argc && a == "--accuracy")
             accuracy = std::atof(argv[++k]);
+        else if (k + 1 < argc && a == "--bodies")
+            chain_bodies = std::atoi(argv[++k]);
         else
             return usage();
+    }
+    oracle::Model chain;
+    const oracle::Model *m = nullptr;
+    if (std::string(argv[1]) == "chain") {
+        if (chain_bodies < 1 || chain_bodies > 1024) {
+            std::fprintf(stderr, "simbody_oracle: chain needs --bodies N, 1 <= N <= 1024\n");
+            return 2;
+        }
+        chain = oracle::chain(chain_bodies);
+        m = &chain;
+    } else if (chain_bodies != 0) {
+        std::fprintf(stderr, "simbody_oracle: --bodies is for the chain only\n");
+        return 2;
+    } else if ((m = oracle::find_model(argv[1])) == nullptr) {
+        std::fprintf(stderr, "simbody_oracle: no model '%s' (--list names them)\n", argv[1]);
+        return 2;
     }
     if (!initial && (out == nullptr || !(end > 0) || !(interval > 0) || !(accuracy > 0)))
         return usage();
@@ -304,11 +330,13 @@ int main(int argc, char **argv)
         const double energy0 = b.system.calcEnergy(integ.getState());
         write_row(f, b, *m, integ.getState(), last_q);
         const int rows = (int)std::lround(end / interval);
-        double worst_qerr = 0;
+        double worst_qerr = 0, stepping = 0;
         for (int k = 1; k <= rows; ++k) {
             const double t = k * interval;
             while (integ.getTime() < t) {
+                const auto start = std::chrono::steady_clock::now();
                 const Integrator::SuccessfulStepStatus status = integ.stepTo(t);
+                stepping += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 if (status == Integrator::EndOfSimulation)
                     fail("the integrator ended the simulation at t = " + std::to_string(integ.getTime()));
             }
@@ -323,6 +351,12 @@ int main(int argc, char **argv)
                     " largest loop residual %.3g m\n",
                     m->name.c_str(), rows + 1, end, integ.getNumStepsTaken(), accuracy, energy0,
                     energy1 - energy0, worst_qerr);
+        if (timed) /* one line, its words fixed: scripts/oracle_speed.sh reads it */
+            std::printf("simbody_oracle time: integration %.6f s, realizations %d, steps %d, attempted %d,"
+                        " projections %d, %.4g us per realization\n",
+                        stepping, integ.getNumRealizations(), integ.getNumStepsTaken(),
+                        integ.getNumStepsAttempted(), integ.getNumProjections(),
+                        integ.getNumRealizations() ? 1e6 * stepping / integ.getNumRealizations() : 0.0);
     } catch (const std::exception &e) {
         std::fprintf(stderr, "simbody_oracle %s: %s\n", m->name.c_str(), e.what());
         return 1;
