@@ -487,6 +487,17 @@ static void screw_and_rackpin_by_hand(void **state)
     assert_close(one_row(HX_JOINT_RACKPIN, &l, pinion.pos0, R, xr, Rrack), 0.0, 0, 1e-15);
     assert_close(one_row(HX_JOINT_RACKPIN, &l, pinion.pos0, R, rack.pos0, Rrack),
                  -0.1 * M_PI / 2, 0, 1e-15);
+    /* a turn undefined (the screw's x_I along z_J): finite, the angle's row 0 */
+    double G[12], gamma[1], phi[1];
+    hx_frame world;
+    memset(&world, 0, sizeof world);
+    m3_identity(world.R);
+    const double down[9] = {0, 0, 1, 0, 1, 0, -1, 0, 0}; /* x_I = -Z exactly */
+    const hx_joint_side si = {&world, x, down}, sj = {&world, mj.pos0, mj.R0};
+    hx_joint_equations_eval(HX_JOINT_SCREW, &l, &si, &sj, phi, G, gamma);
+    assert_true(isfinite(phi[0]) && isfinite(gamma[0]));
+    for (int c = 0; c < 12; ++c)
+        assert_true(isfinite(G[c]) && (c == 2 || c == 8 || G[c] == 0.0)); /* s: v_I, v_J along z */
     /* the other types have no law */
     hx_joint revolute = {.type = HX_JOINT_REVOLUTE, .pitch = 3};
     hx_joint_equations_law(&revolute, &mi, &mj, &l);

@@ -146,7 +146,9 @@ static double rate(const term *t, const side *i, const side *j)
  * - 2 theta_dot (a a_dot + b b_dot) / n (the a_dot b_dot terms cancel). */
 static void angle(term *t, const term *a, const term *b, const side *i, const side *j)
 {
-    const double n = a->phi * a->phi + b->phi * b->phi;
+    /* a and b both 0 (the turn undefined: refused at t = 0, resolve.c): a zero
+     * row, which the set-up or the step names as singular, no NaN */
+    const double n = fmax(a->phi * a->phi + b->phi * b->phi, 1e-300);
     const double ad = rate(a, i, j), bd = rate(b, i, j);
     term g;
     const term zero = {0};
