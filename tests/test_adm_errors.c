@@ -136,7 +136,7 @@ static void unsimulated_statements_are_named(void **state)
     char text[4096];
     dataset(text, sizeof text,
             "MARKER/22, PART=2\nPART/3, MASS=1, CM=30, IP=1,1,1\nMARKER/30, PART=3\n"
-            "JOINT/3, CONVEL, I=21, J=10\n"                          /* line 10 */
+            "JOINT/3, INLINE, I=21, J=10\n"                          /* line 10 */
             "JOINT/4, REVOLUTE, I=30, J=10\nJOINT/5, TRANSLATIONAL, I=30, J=10\n"
             "COUPLER/1, JOINTS=3, 4, SCALES=1, 2\n"                  /* line 13 */
             "DIFF/4, IC=0,\n, FUNCTION = -100*(DM(21,10) - 5)\n"
@@ -149,8 +149,8 @@ static void unsimulated_statements_are_named(void **state)
     char *warnings = NULL;
     hx_model *m = read_warned(path, &warnings);
     assert_contains(warnings,
-                    "unsimulated.adm:10: warning: JOINT/3: a CONVEL joint, which the harness"
-                    " does not simulate yet",
+                    "unsimulated.adm:10: warning: JOINT/3: a INLINE joint, a primitive, which the"
+                    " harness simulates as a JPRIM",
                     "unsimulated.adm:13: warning: COUPLER/1: it names JOINT/3, which is not simulated",
                     "unsimulated.adm:14: warning: DIFF/4: a FUNCTION expression, which this harness"
                     " does not evaluate yet",

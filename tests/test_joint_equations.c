@@ -5,7 +5,8 @@
  * full rank; G against central differences of phi at random unassembled
  * states; gamma against the second difference of phi along a motion with
  * constant twists (there w_dot = 0, so phi_ddot = -gamma). Each with I on
- * ground (static), J on ground and both moving.
+ * ground (static), J on ground and both moving. RACKPIN's and SCREW's law
+ * from the markers at t = 0 and their equation, turns and wrap, by hand.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -16,12 +17,15 @@
 #include "sim/dynamics/joint_equations.h"
 #include "test_support.h"
 
-#define NTYPES 14
+#define NTYPES 17
 static const enum hx_joint_type types[NTYPES] = {
     HX_JOINT_FIXED,     HX_JOINT_REVOLUTE,  HX_JOINT_TRANSLATIONAL, HX_JOINT_CYLINDRICAL,
     HX_JOINT_SPHERICAL, HX_JOINT_UNIVERSAL, HX_JOINT_HOOKE,         HX_JOINT_PLANAR,
+    HX_JOINT_CONVEL,    HX_JOINT_RACKPIN,   HX_JOINT_SCREW,
     HX_JOINT_ATPOINT,   HX_JOINT_INLINE,    HX_JOINT_INPLANE,       HX_JOINT_ORIENTATION,
     HX_JOINT_PARALLEL_AXES, HX_JOINT_PERPENDICULAR};
+/* RACKPIN's and SCREW's law in the sampled tests: s - 0.1 = 0.3 (theta - 0.2) */
+static const hx_joint_law law = {0.3, 0.1, 0.2};
 enum { BOTH_MOVE, I_STATIC, J_STATIC };
 
 static double uniform(void)
@@ -57,7 +61,7 @@ typedef struct pair {
 static void eval(enum hx_joint_type type, const pair *p, double *phi, double *G, double *gamma)
 {
     const hx_joint_side i = {&p->fi, p->si, p->Ai}, j = {&p->fj, p->sj, p->Aj};
-    hx_joint_equations_eval(type, &i, &j, phi, G, gamma);
+    hx_joint_equations_eval(type, &law, &i, &j, phi, G, gamma);
 }
 
 static void column(const double R[9], int k, double a[3])
@@ -97,6 +101,26 @@ static void assembled(enum hx_joint_type type, pair *p)
     case HX_JOINT_PLANAR:
         rotation(Q, 2, a), d[0] = b, d[1] = uniform();
         break;
+    case HX_JOINT_CONVEL: { /* z_I away from z_J: half a turn about x_J, then a bend about n */
+        const double n[3] = {cos(a), sin(a), 0.0};
+        rotation(A, 0, M_PI), m3_axis_angle(B, n, 0.5 * b), m3_mul(Q, A, B);
+        break;
+    }
+    case HX_JOINT_RACKPIN: /* any turn (x_I, y_I not near normal to z_J: theta is
+                            * defined); the travel -d_z = s by the law at theta(Q) */
+        do
+            random_rotation(Q);
+        while (Q[6] * Q[6] + Q[7] * Q[7] < 0.25);
+        random_vector(d, 2.0);
+        d[2] = -(law.s0 + law.ratio * (atan2(-Q[7], Q[6]) - law.theta0));
+        break;
+    case HX_JOINT_SCREW: /* any turn (x_I not near z_J); d_z = s by the law at theta(Q) */
+        do
+            random_rotation(Q);
+        while (Q[0] * Q[0] + Q[3] * Q[3] < 0.25);
+        random_vector(d, 2.0);
+        d[2] = law.s0 + law.ratio * (atan2(Q[3], Q[0]) - law.theta0);
+        break;
     case HX_JOINT_ATPOINT:
         random_rotation(Q);
         break;
@@ -135,9 +159,10 @@ static void assembled(enum hx_joint_type type, pair *p)
  * marker's velocity (world). */
 static void free_motion(enum hx_joint_type type, const pair *p, double w[3], double v[3])
 {
-    double MI[9], MJ[9], xj[3], yj[3], zj[3], xi[3], zi[3];
+    double MI[9], MJ[9], xj[3], yj[3], zj[3], xi[3], yi[3], zi[3], n[3], t[3];
     m3_mul(MI, p->fi.R, p->Ai), m3_mul(MJ, p->fj.R, p->Aj);
     column(MJ, 0, xj), column(MJ, 1, yj), column(MJ, 2, zj), column(MI, 0, xi), column(MI, 2, zi);
+    column(MI, 1, yi);
     const double a = uniform(), b = uniform();
     v3_set(w, 0, 0, 0), v3_set(v, 0, 0, 0);
     switch (type) {
@@ -164,6 +189,29 @@ static void free_motion(enum hx_joint_type type, const pair *p, double w[3], dou
     case HX_JOINT_PLANAR:
         v3_scale(w, zj, a), v3_scale(v, xj, b), v3_axpy(v, uniform(), yj);
         break;
+    case HX_JOINT_CONVEL: /* both shafts turning alike (z_I + z_J), and the bend about n */
+        v3_cross(n, zi, zj), v3_scale(n, n, 1.0 / v3_norm(n));
+        v3_add(w, zi, zj), v3_scale(w, w, a), v3_axpy(w, b, n);
+        break;
+    case HX_JOINT_RACKPIN: { /* theta = atan2(-y_I.z_J, x_I.z_J); s_dot = -v.z_J */
+        random_vector(w, 1.0), random_vector(v, 1.0);
+        const double A = -v3_dot(yi, zj), B = v3_dot(xi, zj);
+        v3_cross(t, w, yi);
+        const double Ad = -v3_dot(t, zj);
+        v3_cross(t, w, xi);
+        const double Bd = v3_dot(t, zj), thetadot = (B * Ad - A * Bd) / (A * A + B * B);
+        v3_axpy(v, -v3_dot(v, zj) - law.ratio * thetadot, zj);
+        break;
+    }
+    case HX_JOINT_SCREW: { /* theta = atan2(x_I.y_J, x_I.x_J); s_dot = v.z_J */
+        random_vector(w, 1.0), random_vector(v, 1.0);
+        const double A = v3_dot(xi, yj), B = v3_dot(xi, xj);
+        v3_cross(t, w, xi);
+        const double Ad = v3_dot(t, yj), Bd = v3_dot(t, xj);
+        const double thetadot = (B * Ad - A * Bd) / (A * A + B * B);
+        v3_axpy(v, -v3_dot(v, zj) + law.ratio * thetadot, zj);
+        break;
+    }
     case HX_JOINT_ATPOINT:
         random_vector(w, 1.0);
         break;
@@ -211,7 +259,7 @@ static double row_times(const double *G, int row, const double *w12)
 static void equation_counts(void **state)
 {
     (void)state;
-    const int expected[NTYPES] = {6, 5, 5, 4, 3, 4, 4, 3, 3, 2, 1, 3, 2, 1};
+    const int expected[NTYPES] = {6, 5, 5, 4, 3, 4, 4, 3, 4, 1, 1, 3, 2, 1, 3, 2, 1};
     for (int k = 0; k < NTYPES; ++k)
         assert_int_equal(hx_joint_equations_count(types[k]), expected[k]);
 }
@@ -386,6 +434,76 @@ static void gamma_against_second_differences(void **state)
             }
 }
 
+/* phi of a one-row joint with I's and J's markers at these world poses. */
+static double one_row(enum hx_joint_type type, const hx_joint_law *l, const double xi[3],
+                      const double Ri[9], const double xj[3], const double Rj[9])
+{
+    hx_frame world;
+    memset(&world, 0, sizeof world);
+    m3_identity(world.R);
+    const hx_joint_side i = {&world, xi, Ri}, j = {&world, xj, Rj};
+    double phi[6];
+    hx_joint_equations_eval(type, l, &i, &j, phi, NULL, NULL);
+    return phi[0];
+}
+
+static void screw_and_rackpin_by_hand(void **state)
+{
+    (void)state;
+    /* SCREW, PITCH 0.5: k = 0.5 / (2 pi) per radian. At t = 0 I is 0.125
+     * up J's z and turned a quarter: s0 = 0.125, theta0 = pi / 2. */
+    hx_joint screw = {.type = HX_JOINT_SCREW, .pitch = 0.5};
+    hx_marker mi = {.pos0 = {0, 0, 0.125}}, mj = {.pos0 = {0, 0, 0}};
+    rotation(mi.R0, 2, M_PI / 2), m3_identity(mj.R0);
+    hx_joint_law l;
+    hx_joint_equations_law(&screw, &mi, &mj, &l);
+    assert_close(l.ratio, 0.5 / (2 * M_PI), 1e-15, 0);
+    assert_close(l.s0, 0.125, 0, 1e-15);
+    assert_close(l.theta0, M_PI / 2, 1e-15, 0);
+    double R[9], x[3] = {0, 0, 0.25};
+    rotation(R, 2, M_PI); /* a quarter turn more: 0.125 further up */
+    assert_close(one_row(HX_JOINT_SCREW, &l, x, R, mj.pos0, mj.R0), 0.0, 0, 1e-15);
+    x[2] = 0.125; /* turned, not moved: k pi / 2 = 0.125 short */
+    assert_close(one_row(HX_JOINT_SCREW, &l, x, R, mj.pos0, mj.R0), -0.125, 0, 1e-15);
+    x[2] = 0.125 + 3 * 0.5; /* three turns on: the same place of the thread */
+    assert_close(one_row(HX_JOINT_SCREW, &l, x, mi.R0, mj.pos0, mj.R0), 0.0, 0, 1e-14);
+    x[2] = 0.125 + 0.3; /* 0.3 up, not turned: 0.3 - 0.5, the nearest turn's thread */
+    assert_close(one_row(HX_JOINT_SCREW, &l, x, mi.R0, mj.pos0, mj.R0), -0.2, 0, 1e-15);
+    /* RACKPIN, PD 0.2: k = 0.1. The pinion I at the origin (z_I = Z); the
+     * rack J 0.1 below it along X (z_J = X, x_J = Y, y_J = Z), x_I along z_J:
+     * s0 = 0, theta0 = 0. The pinion's point in contact, (0, -0.1, 0), moves
+     * at w Z x (0, -0.1, 0) = (0.1 w, 0, 0): a quarter turn takes the rack
+     * 0.1 pi / 2 along +X. */
+    hx_joint rackpin = {.type = HX_JOINT_RACKPIN, .pitch_diameter = 0.2};
+    hx_marker pinion = {.pos0 = {0, 0, 0}}, rack = {.pos0 = {0, -0.1, 0}};
+    const double Rrack[9] = {0, 0, 1, 1, 0, 0, 0, 1, 0};
+    m3_identity(pinion.R0), m3_copy(rack.R0, Rrack);
+    hx_joint_equations_law(&rackpin, &pinion, &rack, &l);
+    assert_close(l.ratio, 0.1, 1e-15, 0);
+    assert_close(l.s0, 0.0, 0, 1e-15);
+    assert_close(l.theta0, 0.0, 0, 1e-15);
+    rotation(R, 2, M_PI / 2);
+    double xr[3] = {0.1 * M_PI / 2, -0.1, 0};
+    assert_close(one_row(HX_JOINT_RACKPIN, &l, pinion.pos0, R, xr, Rrack), 0.0, 0, 1e-15);
+    assert_close(one_row(HX_JOINT_RACKPIN, &l, pinion.pos0, R, rack.pos0, Rrack),
+                 -0.1 * M_PI / 2, 0, 1e-15);
+    /* a turn undefined (the screw's x_I along z_J): finite, the angle's row 0 */
+    double G[12], gamma[1], phi[1];
+    hx_frame world;
+    memset(&world, 0, sizeof world);
+    m3_identity(world.R);
+    const double down[9] = {0, 0, 1, 0, 1, 0, -1, 0, 0}; /* x_I = -Z exactly */
+    const hx_joint_side si = {&world, x, down}, sj = {&world, mj.pos0, mj.R0};
+    hx_joint_equations_eval(HX_JOINT_SCREW, &l, &si, &sj, phi, G, gamma);
+    assert_true(isfinite(phi[0]) && isfinite(gamma[0]));
+    for (int c = 0; c < 12; ++c)
+        assert_true(isfinite(G[c]) && (c == 2 || c == 8 || G[c] == 0.0)); /* s: v_I, v_J along z */
+    /* the other types have no law */
+    hx_joint revolute = {.type = HX_JOINT_REVOLUTE, .pitch = 3};
+    hx_joint_equations_law(&revolute, &mi, &mj, &l);
+    assert_true(l.ratio == 0.0 && l.s0 == 0.0 && l.theta0 == 0.0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -394,6 +512,7 @@ int main(void)
         cmocka_unit_test(assembled_states_hold_and_free_motions_are_free),
         cmocka_unit_test(jacobian_against_differences),
         cmocka_unit_test(gamma_against_second_differences),
+        cmocka_unit_test(screw_and_rackpin_by_hand),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -7,7 +7,7 @@
  * and a spherical joint against their small-angle period; the bundled
  * four-bar and slider-crank against their closed-form kinematics, with
  * DOPRI5 and BDF (constraint residuals, energy); the errors of joints the
- * harness does not run. The primitives (Constraint_Jprim) are in the first;
+ * harness does not run and of RACK_PINION's and SCREW's values. The primitives (Constraint_Jprim) are in the first;
  * their motions in test_joint_primitives.c.
  */
 #include <math.h>
@@ -20,12 +20,13 @@
 #include "sim_support.h"
 #include "test_support.h"
 
-#define NTYPES 14
+#define NTYPES 17
 static const char *const type_names[NTYPES] = {
     "FIXED",   "REVOLUTE", "TRANSLATIONAL", "CYLINDRICAL", "SPHERICAL",     "UNIVERSAL",
-    "HOOKE",   "PLANAR",   "ATPOINT",       "INLINE",      "INPLANE",       "ORIENTATION",
+    "HOOKE",   "PLANAR",   "CONSTANT_VELOCITY", "RACK_PINION", "SCREW",
+    "ATPOINT", "INLINE",   "INPLANE",       "ORIENTATION",
     "PARALLEL_AXES", "PERPENDICULAR"};
-static const int type_rows[NTYPES] = {6, 5, 5, 4, 3, 4, 4, 3, 3, 2, 1, 3, 2, 1};
+static const int type_rows[NTYPES] = {6, 5, 5, 4, 3, 4, 4, 3, 4, 1, 1, 3, 2, 1, 3, 2, 1};
 
 static double uniform(void)
 {
@@ -51,7 +52,8 @@ static const char *two_body_model(const char *type, int where)
              "<Body_Rigid id=\"3\" cg_id=\"30\" mass=\"2\" inertia_xx=\"0.4\" inertia_yy=\"0.3\" inertia_zz=\"0.2\"/>\n"
              "<Reference_Marker id=\"30\" body_id=\"3\" pos_x=\"-0.4\" pos_z=\"0.3\" psi=\"-0.3\" theta=\"0.6\" phi=\"0.2\"/>\n"
              "<Reference_Marker id=\"31\" body_id=\"3\" pos_x=\"0.2\" pos_y=\"0.4\" psi=\"0.9\" theta=\"-0.5\" phi=\"1.2\"/>\n"
-             "<Constraint_%s id=\"1\" type=\"%s\" i_marker_id=\"%d\" j_marker_id=\"%d\"/>\n"
+             "<Constraint_%s id=\"1\" type=\"%s\" i_marker_id=\"%d\" j_marker_id=\"%d\""
+             " pitch_diameter=\"0.3\" pitch=\"-0.25\"/>\n"
              "%s</Model></MotionSolve>\n",
              hx_joint_type_is_primitive((enum hx_joint_type)hx_joint_type_from_name(type)) ? "Jprim"
                                                                                       : "Joint",
@@ -375,8 +377,31 @@ static void joints_the_harness_refuses(void **state)
         const char *joints;
         const char *needles[3];
     } cases[] = {
+        {"<Constraint_Joint id=\"1\" type=\"GEAR\" i_marker_id=\"21\" j_marker_id=\"10\"/>",
+         {"bad.xml:8:", "Constraint_Joint 1", "type \"GEAR\""}},
+        /* a SCREW needs its pitch (not 0), a RACK_PINION its pitch diameter (> 0) */
         {"<Constraint_Joint id=\"1\" type=\"SCREW\" i_marker_id=\"21\" j_marker_id=\"10\"/>",
-         {"bad.xml:8:", "Constraint_Joint 1", "type \"SCREW\""}},
+         {"bad.xml:8:", "Constraint_Joint 1", "a SCREW joint needs pitch"}},
+        {"<Constraint_Joint id=\"1\" type=\"SCREW\" i_marker_id=\"21\" j_marker_id=\"10\""
+         " pitch=\"0\"/>",
+         {"bad.xml:8:", "Constraint_Joint 1", "pitch = 0: expected a pitch not 0"}},
+        {"<Constraint_Joint id=\"1\" type=\"RACK_PINION\" i_marker_id=\"21\" j_marker_id=\"10\""
+         " pitch=\"1\"/>",
+         {"bad.xml:8:", "Constraint_Joint 1", "a RACK_PINION joint needs pitch_diameter"}},
+        {"<Constraint_Joint id=\"1\" type=\"RACKPIN\" i_marker_id=\"21\" j_marker_id=\"10\""
+         " pitch_diameter=\"-2\"/>",
+         {"bad.xml:8:", "Constraint_Joint 1", "pitch_diameter = -2: expected a diameter > 0"}},
+        /* their turn needs z_J across z_I (RACK_PINION), x_I across z_J (SCREW): 21 and 10
+         * have the world's axes */
+        {"<Constraint_Joint id=\"1\" type=\"RACKPIN\" i_marker_id=\"21\" j_marker_id=\"10\""
+         " pitch_diameter=\"2\"/>",
+         {"bad.xml:8:", "Constraint_Joint 1", "rack axis z_J must be across the pinion's axis"}},
+        {"<Constraint_Joint id=\"1\" type=\"SCREW\" i_marker_id=\"21\" j_marker_id=\"10\""
+         " pitch=\"2\"/>\n<Reference_Marker id=\"22\" body_id=\"2\" psi=\"1.5707963267948966\""
+         " theta=\"1.5707963267948966\"/>\n"
+         "<Constraint_Joint id=\"2\" type=\"SCREW\" i_marker_id=\"10\" j_marker_id=\"22\""
+         " pitch=\"2\"/>",
+         {"bad.xml:10:", "Constraint_Joint 2", "a SCREW's x_I must be across z_J"}},
         /* a primitive is a Constraint_Jprim's type, not a Constraint_Joint's, and back */
         {"<Constraint_Joint id=\"1\" type=\"INLINE\" i_marker_id=\"21\" j_marker_id=\"10\"/>",
          {"bad.xml:8:", "Constraint_Joint 1", "type \"INLINE\""}},

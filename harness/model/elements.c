@@ -10,6 +10,7 @@
 #include <strings.h>
 
 #include "base/vecmath.h"
+#include "model/joint_elements.h"
 #include "model/load_elements.h"
 #include "model/orientation.h"
 #include "model/units.h"
@@ -267,48 +268,6 @@ static void build_marker(hx_draft *d, const hx_element_read *e)
 
 /* ---- constraints -------------------------------------------------------------------------- */
 
-static const hx_attr_spec joint_attrs[] = {
-    ID, REQUIRED("type", HX_ATTR_TEXT), REQUIRED("i_marker_id", HX_ATTR_INT),
-    REQUIRED("j_marker_id", HX_ATTR_INT), IGNORED("is_virtual"), END};
-
-/* A Constraint_Joint or, primitive, a Constraint_Jprim: its own types, its own ids. */
-static void build_any_joint(hx_draft *d, const hx_element_read *e, int primitive)
-{
-    hx_model *m = d->m;
-    const char *element = primitive ? "Constraint_Jprim" : "Constraint_Joint";
-    if ((primitive ? hx_model_primitive(m, e->id) : hx_model_joint(m, e->id)) >= 0) {
-        hx_draft_fail(d, e->line, "%s %d is defined twice", element, e->id);
-        return;
-    }
-    const int jt = hx_joint_type_from_name(hx_attr_text(e, "type"));
-    if (jt < 0 || hx_joint_type_is_primitive((enum hx_joint_type)jt) != primitive) {
-        hx_draft_fail(d, e->line, "%s %d: type \"%s\" is not one the harness simulates (%s)",
-                      element, e->id, hx_attr_text(e, "type"),
-                      primitive ? "ATPOINT, INLINE, INPLANE, ORIENTATION, PARALLEL_AXES or"
-                                  " PERPENDICULAR"
-                                : "FIXED, REVOLUTE, TRANSLATIONAL, CYLINDRICAL, SPHERICAL,"
-                                  " UNIVERSAL, HOOKE or PLANAR");
-        return;
-    }
-    hx_joint *j = hx_draft_push(d, (void **)&m->joints, &m->njoints, &d->cap_joints, sizeof *j,
-                                (void **)&d->rjoints, sizeof(raw_refs));
-    if (j == NULL)
-        return;
-    j->id = e->id, j->type = (enum hx_joint_type)jt, j->line = e->line;
-    int *ids = d->rjoints[m->njoints - 1].ids;
-    ids[0] = hx_attr_int(e, "i_marker_id", 0), ids[1] = hx_attr_int(e, "j_marker_id", 0);
-}
-
-static void build_joint(hx_draft *d, const hx_element_read *e)
-{
-    build_any_joint(d, e, 0);
-}
-
-static void build_jprim(hx_draft *d, const hx_element_read *e)
-{
-    build_any_joint(d, e, 1);
-}
-
 static const hx_attr_spec coupler_attrs[] = {
     ID, REQUIRED("joint1_id", HX_ATTR_INT), TEXT("freedom_1"), REQUIRED("joint2_id", HX_ATTR_INT),
     TEXT("freedom_2"), INT("joint3_id"), TEXT("freedom_3"), TEXT("coefficients"),
@@ -561,8 +520,8 @@ const hx_element_spec hx_element_specs[] = {
     {"Body_Ground", ground_attrs, build_ground, NULL, 0},
     {"Body_Rigid", body_attrs, build_body, NULL, 0},
     {"Reference_Marker", marker_attrs, build_marker, NULL, 0},
-    {"Constraint_Joint", joint_attrs, build_joint, NULL, 0},
-    {"Constraint_Jprim", joint_attrs, build_jprim, NULL, 0},
+    {"Constraint_Joint", hx_joint_attrs, hx_build_joint, NULL, 0},
+    {"Constraint_Jprim", hx_joint_attrs, hx_build_jprim, NULL, 0},
     {"Constraint_Coupler", coupler_attrs, build_coupler, NULL, 0},
     {"Force_Vector_TwoBody", force_vector_attrs, build_force_vector, NULL, 0},
     {"Force_Field", force_field_attrs, build_force_field, NULL, 0},

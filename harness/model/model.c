@@ -50,7 +50,8 @@ int hx_model_primitive(const hx_model *m, int id)
  * the primitives' are Constraint_Jprim's types and Adams' JPRIM words */
 static const char *const joint_type_names[] = {"REVOLUTE", "TRANSLATIONAL", "FIXED",
                                                "CYLINDRICAL", "SPHERICAL", "UNIVERSAL",
-                                               "HOOKE", "PLANAR", "ATPOINT", "INLINE",
+                                               "HOOKE", "PLANAR", "CONSTANT_VELOCITY",
+                                               "RACK_PINION", "SCREW", "ATPOINT", "INLINE",
                                                "INPLANE", "ORIENTATION", "PARALLEL_AXES",
                                                "PERPENDICULAR"};
 
@@ -71,6 +72,11 @@ const char *hx_joint_type_name(enum hx_joint_type type)
 
 int hx_joint_type_from_name(const char *name)
 {
+    /* Adams' JOINT words where they differ from MotionSolve's */
+    if (strcasecmp(name, "CONVEL") == 0)
+        return HX_JOINT_CONVEL;
+    if (strcasecmp(name, "RACKPIN") == 0)
+        return HX_JOINT_RACKPIN;
     for (int k = 0; k < (int)(sizeof joint_type_names / sizeof joint_type_names[0]); ++k)
         if (strcasecmp(name, joint_type_names[k]) == 0)
             return k;

@@ -59,6 +59,7 @@ typedef struct hx_body {
 enum hx_joint_type {
     HX_JOINT_REVOLUTE, HX_JOINT_TRANSLATIONAL, HX_JOINT_FIXED, HX_JOINT_CYLINDRICAL,
     HX_JOINT_SPHERICAL, HX_JOINT_UNIVERSAL, HX_JOINT_HOOKE, HX_JOINT_PLANAR,
+    HX_JOINT_CONVEL, HX_JOINT_RACKPIN, HX_JOINT_SCREW,
     /* the joint primitives (Constraint_Jprim, docs/interface.md §7.14): from here on */
     HX_JOINT_ATPOINT, HX_JOINT_INLINE, HX_JOINT_INPLANE, HX_JOINT_ORIENTATION,
     HX_JOINT_PARALLEL_AXES, HX_JOINT_PERPENDICULAR
@@ -72,6 +73,8 @@ typedef struct hx_joint {
                              * body's only joint: the body moves in the joint's coordinate
                              * (body.joint); otherwise the joint's equations constrain free
                              * bodies (docs/architecture.md, the layout of y) */
+    double pitch_diameter;  /* RACKPIN: the pinion's pitch diameter (> 0) */
+    double pitch;           /* SCREW: the travel per turn (not 0; < 0 a left-hand thread) */
     int line;
 } hx_joint;
 

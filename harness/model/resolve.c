@@ -191,6 +191,29 @@ static int check_reduced(hx_draft *r, const hx_joint *j)
     return 0;
 }
 
+/* A RACK_PINION's or SCREW's turn is an angle in a plane (docs/interface.md
+ * §7.14): at t = 0 its axis must not lie in the plane's normal, x_I . z_J,
+ * y_I . z_J (RACK_PINION) or x_I . x_J, x_I . y_J (SCREW) not both near 0. */
+static int check_gearing(hx_draft *r, const hx_joint *j)
+{
+    const hx_marker *mi = &r->m->markers[j->i_marker], *mj = &r->m->markers[j->j_marker];
+    const int rack = j->type == HX_JOINT_RACKPIN;
+    if (!rack && j->type != HX_JOINT_SCREW)
+        return 0;
+    double a = 0.0, b = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        a += mi->R0[3 * k] * mj->R0[3 * k + (rack ? 2 : 0)];
+        b += mi->R0[3 * k + (rack ? 1 : 0)] * mj->R0[3 * k + (rack ? 2 : 1)];
+    }
+    if (a * a + b * b >= 1e-6)
+        return 0;
+    hx_draft_fail(r, j->line, "Constraint_Joint %d: %s", j->id,
+                  rack ? "a RACK_PINION's rack axis z_J must be across the pinion's axis z_I"
+                         " (x_I along z_J at assembly)"
+                       : "a SCREW's x_I must be across z_J (z_I along z_J at assembly)");
+    return -1;
+}
+
 /* Joints between any two bodies; a revolute or translational joint from a
  * body to ground that is the body's only joint is reduced (model.h). */
 static int resolve_joints(hx_draft *r)
@@ -220,6 +243,8 @@ static int resolve_joints(hx_draft *r)
             status = 1;
         }
         count[bi]++, count[bj]++;
+        if (check_gearing(r, j) != 0)
+            status = 1;
     }
     for (int k = 0; k < m->njoints && status == 0; ++k) {
         hx_joint *j = &m->joints[k];

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "model/adm/translate.h"
+#include "model/model.h"
 
 /* The joint types of the JOINT table, in its order. */
 static const char *const joint_types[] = {"REVOLUTE", "TRANSLATIONAL", "CYLINDRICAL", "SPHERICAL",
@@ -30,11 +31,29 @@ int hx_adm_build_joint(hx_adm_reader *r, hx_adm_entry *e)
     if (ntypes != 1)
         return hx_adm_fail(r, e, e->line, "give the joint's type, one of REVOLUTE, TRANSLATIONAL,"
                            " CYLINDRICAL, SPHERICAL, ... (%d given)", ntypes);
+    const char *type = hx_adm_joint_type(e);
+    const int jt = hx_joint_type_from_name(type);
     hx_adm_element el;
     hx_adm_element_init(&el, "Constraint_Joint");
-    hx_adm_element_text(&el, "type", hx_adm_joint_type(e));
+    /* MotionSolve's word (CONVEL is CONSTANT_VELOCITY, RACKPIN RACK_PINION) */
+    hx_adm_element_text(&el, "type", jt >= 0 ? hx_joint_type_name((enum hx_joint_type)jt) : type);
     hx_adm_element_number(&el, "i_marker_id", hx_adm_ref(e, "I"));
     hx_adm_element_number(&el, "j_marker_id", hx_adm_ref(e, "J"));
+    /* RACKPIN's PD= and SCREW's PITCH= (docs/interface.md §9.4) */
+    const int rackpin = jt == HX_JOINT_RACKPIN, screw = jt == HX_JOINT_SCREW;
+    if (rackpin || screw) {
+        const char *key = rackpin ? "PD" : "PITCH";
+        const hx_adm_value *v = hx_adm_get(e, key);
+        if (!v->present)
+            return hx_adm_fail(r, e, e->line, "a %s joint needs %s= (%s)", type, key,
+                               rackpin ? "the pinion's pitch diameter"
+                                       : "the travel per turn of the screw");
+        const double value = hx_adm_number(e, key, 0, 0.0);
+        if (rackpin ? !(value > 0.0) : !(value != 0.0))
+            return hx_adm_fail(r, e, v->line, "%s=%g: expected %s", key, value,
+                               rackpin ? "a diameter > 0" : "a pitch not 0");
+        hx_adm_element_number(&el, rackpin ? "pitch_diameter" : "pitch", value);
+    }
     return hx_adm_element_build(r, e, &el, NULL);
 }
 

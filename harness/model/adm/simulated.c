@@ -2,7 +2,7 @@
  * Which statements the harness simulates (docs/interface.md §9.8), decided
  * once every statement is read and before any is built: a joint of a type the
  * model holds (FIXED, REVOLUTE, TRANSLATIONAL, CYLINDRICAL, SPHERICAL,
- * UNIVERSAL, HOOKE, PLANAR; between any parts; no initial conditions; a
+ * UNIVERSAL, HOOKE, PLANAR, CONVEL, RACKPIN, SCREW; between any parts; no initial conditions; a
  * JPRIM always), forces
  * given by function expressions (docs/interface.md §8) or by a user routine,
  * a VARIABLE by any expression or a user routine; then what names an
@@ -55,7 +55,7 @@ static const char *why_not(const hx_adm_entry *e, char *why, size_t size)
         else if (jt < 0)
             snprintf(why, size, "a %s joint, which the harness does not simulate yet (it"
                      " simulates FIXED, REVOLUTE, TRANSLATIONAL, CYLINDRICAL, SPHERICAL,"
-                     " UNIVERSAL, HOOKE and PLANAR joints)", type);
+                     " UNIVERSAL, HOOKE, PLANAR, CONVEL, RACKPIN and SCREW joints)", type);
         else if (hx_adm_has(e, "IC") || hx_adm_has(e, "ICTRAN") || hx_adm_has(e, "ICROT"))
             snprintf(why, size, "initial conditions on a joint (IC, ICTRAN, ICROT), which the"
                      " harness does not apply");

@@ -218,7 +218,9 @@ static void joint_terms(const hx_dynamics *d, int k, const double *y, double *G,
     body_frame(d, mi->body, y, &fi);
     body_frame(d, mj->body, y, &fj);
     const hx_joint_side si = {&fi, mi->r_local, mi->R_local}, sj = {&fj, mj->r_local, mj->R_local};
-    hx_joint_equations_eval(j->type, &si, &sj, phi, G, gamma);
+    hx_joint_law law;
+    hx_joint_equations_law(j, mi, mj, &law);
+    hx_joint_equations_eval(j->type, &law, &si, &sj, phi, G, gamma);
     const int count = hx_joint_equations_count(j->type);
     for (int e = 0; e < count; ++e) {
         double *g = G + 12 * e, body[3];

@@ -19,7 +19,8 @@
 
 #define HX_JOINT_MAX_EQUATIONS 6
 
-/* The number of equations of a joint type (6 FIXED ... 1 INPLANE, PERPENDICULAR). */
+/* The number of equations of a joint type (6 FIXED ... 1 INPLANE, PERPENDICULAR,
+ * RACKPIN, SCREW). */
 int hx_joint_equations_count(enum hx_joint_type type);
 
 /* 1 when equation e (0 <= e < count) of the type is a length (a point or a
@@ -38,9 +39,22 @@ typedef struct hx_joint_side {
     const double *r_local, *R_local;
 } hx_joint_side;
 
+/* A RACKPIN's or SCREW's law: s - s0 = ratio (theta - theta0), the travel s
+ * and the turn theta measured from their values at t = 0 (ratio PD/2 or
+ * PITCH/(2 pi), docs/interface.md §7.14); all zero for the other types. */
+typedef struct hx_joint_law {
+    double ratio, s0, theta0;
+} hx_joint_law;
+
+/* The joint's law from its PD or PITCH and its markers' poses at t = 0. */
+void hx_joint_equations_law(const hx_joint *joint, const hx_marker *mi, const hx_marker *mj,
+                            hx_joint_law *law);
+
 /* phi (count values), G (count x 12, row-major; may be NULL) and gamma
- * (count; may be NULL) of a joint of this type at I's and J's frames. */
-void hx_joint_equations_eval(enum hx_joint_type type, const hx_joint_side *i,
-                             const hx_joint_side *j, double *phi, double *G, double *gamma);
+ * (count; may be NULL) of a joint of this type at I's and J's frames; law is
+ * read by RACKPIN and SCREW only (may be NULL for the others). */
+void hx_joint_equations_eval(enum hx_joint_type type, const hx_joint_law *law,
+                             const hx_joint_side *i, const hx_joint_side *j, double *phi,
+                             double *G, double *gamma);
 
 #endif
