@@ -90,6 +90,9 @@ typedef struct hx_dynamics {
                                    * docs/interface.md §9.9): it puts nothing on the bodies
                                    * nor in the Jacobian. The one thing a run changes, and
                                    * only between its segments, when nothing evaluates */
+    double *gravity;              /* 3: the gravity the loads and the energy use, the model's
+                                   * or a command file's ACCGRAV (§9.9), changed like
+                                   * load_off, between segments only */
 } hx_dynamics;
 
 /* What the evaluations ask beyond the right-hand side. */

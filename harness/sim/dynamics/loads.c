@@ -139,7 +139,7 @@ int hx_loads_apply(const hx_dynamics *d, hx_dynamics_data *dd, double *power)
     const hx_model *m = d->m;
     for (int k = 0; k < m->nbodies; ++k)
         if (d->dof[k].kind != HX_DOF_GROUND)
-            v3_axpy(dd->force + 3 * k, m->bodies[k].mass / d->ucf, m->gravity);
+            v3_axpy(dd->force + 3 * k, m->bodies[k].mass / d->ucf, d->gravity);
     *power = 0.0;
     for (int k = 0; k < m->nloads; ++k) {
         if (d->load_off[k])

@@ -143,6 +143,8 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
          * §9.9): the integrator restarts there; its first output is after t */
         for (int j = 0; j < d->m->nloads; ++j)
             d->load_off[j] = segments[k].loads_off != NULL ? segments[k].loads_off[j] : 0;
+        memcpy(d->gravity, segments[k].gravity != NULL ? segments[k].gravity : d->m->gravity,
+               3 * sizeof(double));
         hx_integrator_options io = opt->integration;
         io.output = output;
         io.t_end = segments[k].t_end;
@@ -183,6 +185,7 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
     if (y_end != NULL)
         memcpy(y_end, y, sizeof(double) * (size_t)d->n);
     memset(d->load_off, 0, (size_t)d->m->nloads); /* every load on again, as the model has it */
+    memcpy(d->gravity, d->m->gravity, 3 * sizeof(double));
     return result->status == HX_INTEGRATION_OK ? 0 : -1;
 }
 
@@ -190,7 +193,7 @@ int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *
                 hx_simulation_result *result)
 {
     const hx_segment whole = {opt->integration.t_end, opt->integration.output_interval,
-                              opt->integration.rtol, opt->integration.atol, NULL};
+                              opt->integration.rtol, opt->integration.atol, NULL, NULL};
     return hx_simulate_segments(d, opt, &whole, 1, y_end, result);
 }
 

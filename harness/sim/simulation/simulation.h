@@ -54,11 +54,12 @@ int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *
 
 /* One segment of a run (a command file's SIMULATE/DYNAMIC, docs/interface.md
  * §9.9): its end time (absolute), the time between its CSV rows (0: every
- * step), its tolerances, and the loads switched off during it (one flag per
- * load of the model; NULL: none). */
+ * step), its tolerances, the loads switched off during it (one flag per
+ * load of the model; NULL: none) and its gravity (3; NULL: the model's). */
 typedef struct hx_segment {
     double t_end, output_interval, rtol, atol;
     const unsigned char *loads_off;
+    const double *gravity;
 } hx_segment;
 
 /* The same run in segments, one after the other: each from the state the one
