@@ -118,6 +118,46 @@ static void jacobian_row_against_differences(void **state)
     close_model(&m), close_model(&f);
 }
 
+/* Forces reading DIF, directly and through a variable: a spring whose
+ * stiffness a state ramps (DIF(1) -> 3 with rate 2 (3 - DIF(1))), and a
+ * damping force scaled by VARVAL(5) = DIF(2)^2. At the start, DIF(1) = 0.5:
+ * the spring's force along I-J is -40 (1 + 0.5) (DM - 4) (worked at the state
+ * below); the Jacobian (its columns of the states, by differences of the
+ * load alone) against differences of the whole right-hand side, and BDF with
+ * it against BDF with differences. */
+static void forces_reading_states(void **state)
+{
+    (void)state;
+    static const char *const text =
+        ADM_HEAD "DIFF/1, IC=0.5, FUNCTION=2*(3 - DIF(1))\n"
+                 "DIFF/2, IC=0.8, FUNCTION=-DIF(2) + 0.1*DX(20,10)\n"
+                 "VARIABLE/5, FUNCTION=DIF(2)*DIF(2)\n"
+                 "SFORCE/7, TRANSLATION, I=20, J=10, FUNCTION=-40*(1 + DIF(1))*(DM(20,10) - 4)"
+                 " - VARVAL(5)*VR(20,10)\nEND\n";
+    model m;
+    open_model(&m, test_write_file("forces.adm", text));
+    double *y = model_state(&m), *ydot = model_state(&m);
+    model_initial_state(&m, y);
+    /* at t = 0: DM = 5, VR = 2 * 3 / 5 = 1.2: F = -40 (1.5)(1) - 0.64 (1.2) = -60.768
+     * along I-J, on a 2 kg body: its x acceleration (3/5) F / 2 = -18.2304 */
+    assert_int_equal(hx_dynamics_evaluate(&m.d, &m.data, 0.0, y, ydot, 0), 0);
+    const int body = hx_model_body(m.session.model, 2);
+    assert_close(ydot[m.d.nq + m.d.dof[body].u], -18.2304, 0, 1e-12);
+    free(ydot);
+    hx_simulation_result r = simulate(&m, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, 1e-9, 0.4, y);
+    assert_int_equal(r.status, HX_INTEGRATION_OK);
+    long outside = 0;
+    const double worst = jacobian_against_differences(&m.d, 0.4, y, "forces", &outside);
+    assert_int_equal(outside, 0);
+    assert_true(worst < 1e-6);
+    model f;
+    double *yf = run("forces.adm", text, HX_METHOD_BDF, HX_JACOBIAN_FD, 1e-9, 0.4, &f);
+    for (int k = 0; k < m.d.n; ++k)
+        assert_close(y[k], yf[k], 1e-6, 1e-8);
+    free(y), free(yf);
+    close_model(&m), close_model(&f);
+}
+
 /* The XML and the dataset forms are one model: the same run bit for bit. */
 static void xml_and_dataset_bit_identical(void **state)
 {
@@ -196,6 +236,7 @@ int main(void)
         cmocka_unit_test(linear_rate_against_the_closed_form),
         cmocka_unit_test(states_integrating_a_displacement),
         cmocka_unit_test(jacobian_row_against_differences),
+        cmocka_unit_test(forces_reading_states),
         cmocka_unit_test(xml_and_dataset_bit_identical),
         cmocka_unit_test(bad_diffs_are_named),
     };
