@@ -139,7 +139,7 @@ static void unsimulated_statements_are_named(void **state)
             "JOINT/3, INLINE, I=21, J=10\n"                          /* line 10 */
             "JOINT/4, REVOLUTE, I=30, J=10\nJOINT/5, TRANSLATIONAL, I=30, J=10\n"
             "COUPLER/1, JOINTS=3, 4, SCALES=1, 2\n"                  /* line 13 */
-            "DIFF/4, IC=0,\n, FUNCTION = -100*(DM(21,10) - 5)\n"
+            "FIELD/4, I=21, J=10,\n, FUNCTION = -100*(DM(21,10) - 5)\n"
             ", - 2*VR(21,10)\n"                                      /* lines 14-16 */
             "BEAM/1, I=21, J=10, LENGTH=1\n"                         /* line 17 */
             "INTEGRATOR/GSTIFF, ERROR=1E-4\nEQUILIBRIUM/STABILITY=1\nEQUILIBRIUM/TLIMIT=1\n"
@@ -152,7 +152,7 @@ static void unsimulated_statements_are_named(void **state)
                     "unsimulated.adm:10: warning: JOINT/3: a INLINE joint, a primitive, which the"
                     " harness simulates as a JPRIM",
                     "unsimulated.adm:13: warning: COUPLER/1: it names JOINT/3, which is not simulated",
-                    "unsimulated.adm:14: warning: DIFF/4: a FUNCTION expression, which this harness"
+                    "unsimulated.adm:14: warning: FIELD/4: a FUNCTION expression, which this harness"
                     " does not evaluate yet",
                     "unsimulated.adm:17: warning: BEAM/1: a BEAM", "run and bench refuse the model",
                     "unsimulated.adm:19: note: EQUILIBRIUM is read and has no effect",
@@ -170,7 +170,7 @@ static void unsimulated_statements_are_named(void **state)
     assert_close(m->suggested_error, 1e-4, 0, 0);
     /* the expression kept as written, joined over its lines, where it begins */
     assert_int_equal(m->nexpressions, 1);
-    assert_string_equal(m->expressions[0].statement, "DIFF");
+    assert_string_equal(m->expressions[0].statement, "FIELD");
     assert_int_equal(m->expressions[0].id, 4);
     assert_string_equal(m->expressions[0].keyword, "FUNCTION");
     assert_string_equal(m->expressions[0].text, "-100*(DM(21,10) - 5) - 2*VR(21,10)");

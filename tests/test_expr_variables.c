@@ -243,14 +243,15 @@ static void bad_variables_are_named(void **state)
     expect_error("parse.xml",
                  HEAD "<Reference_Variable id=\"1\" expr=\"2*(DX(20)\"/>\n" TAIL,
                  (const char *const[]){"parse.xml:8:", "Reference_Variable 1: expr:", NULL});
-    /* a force may not read a Control_Diff through a variable yet */
+    /* a force may read a Control_Diff's state (through a variable too), not its
+     * rate, computed after the forces */
     expect_error("dif.adm",
                  "ADAMS/View model\nPART/1, GROUND\nMARKER/10, PART=1\n"
                  "PART/2, MASS=2, CM=20, IP=1,1,1\nMARKER/20, PART=2, QP=3,4,0\n"
                  "DIFF/3, IC=1, FUNCTION=USER(1)\n"
                  "VARIABLE/5, FUNCTION=2*DIF(3)\n"
-                 "SFORCE/4, TRANSLATION, I=20, J=10, FUNCTION=VARVAL(5)\nEND\n",
-                 (const char *const[]){"dif.adm:8:", "VARVAL(5)", "Control_Diff", NULL});
+                 "SFORCE/4, TRANSLATION, I=20, J=10, FUNCTION=VARVAL(5) + DIF1(3)\nEND\n",
+                 (const char *const[]){"dif.adm:8:", "DIF1(3)", "rate", NULL});
     expect_error("dif1.adm",
                  "ADAMS/View model\nPART/1, GROUND\nMARKER/10, PART=1\n"
                  "DIFF/3, IC=1, FUNCTION=USER(1)\n"

@@ -378,8 +378,11 @@ static void routine_errors_name_element_and_line(void **state)
     expect_refused("r_script.xml", "<Control_Diff id=\"7\" script_name=\"d.py\""
                    " usrsub_param_string=\"USER(1)\"/>\n", "r_script.xml:7:", "Control_Diff 7",
                    "script_name", "not scripts");
-    expect_refused("r_dtype.xml", "<Control_Diff id=\"7\" type=\"EXPRESSION\"" USERLIB "/>\n",
-                   "r_dtype.xml:7:", "Control_Diff 7", "type \"EXPRESSION\"", "USERSUB");
+    expect_refused("r_dtype.xml", "<Control_Diff id=\"7\" type=\"EXPRESSION\" expr=\"1\""
+                   USERLIB "/>\n", "r_dtype.xml:7:", "Control_Diff 7", "type EXPRESSION",
+                   "no user routine");
+    expect_refused("r_dexpr.xml", "<Control_Diff id=\"7\" type=\"USERSUB\" expr=\"1\""
+                   USERLIB "/>\n", "r_dexpr.xml:7:", "Control_Diff 7", "takes no expr");
     expect_refused("r_vexpr.xml", "<Reference_Variable id=\"5\" type=\"USERSUB\" expr=\"1\""
                    USERLIB "/>\n", "r_vexpr.xml:7:", "Reference_Variable 5", "takes no expr");
     expect_refused("r_val.xml", JOINT "<Motion_Joint id=\"3\" joint_id=\"6\" val_type=\"X\""

@@ -184,6 +184,8 @@ int hx_bind(const hx_model *m, hx_messages *messages, hx_bindings *bs, hx_messag
     }
     for (int k = 0; k < m->nroutines; ++k) {
         const hx_routine *r = &m->routines[k];
+        if (r->program != NULL)
+            continue; /* a Control_Diff by expression: no routine to bind */
         static const hx_binding_kind kinds[HX_ROUTINE_KINDS] = {HX_BIND_REQUEST, HX_BIND_VARIABLE,
                                                                 HX_BIND_DIFF, HX_BIND_MOTION};
         static const char *const defaults[HX_ROUTINE_KINDS] = {"REQSUB", "VARSUB", "DIFSUB",

@@ -116,19 +116,22 @@ static int link_one(hx_draft *d, const hx_load *l, hx_expr_program *p, const cha
         if (in[k].kind == HX_EXPR_INPUT_TIME)
             continue;
         const int variable = in[k].variable;
-        if (variable >= 0 && !m->variables[variable].reads_diff) {
-            /* a variable's value, computed before the forces (docs/interface.md §7.10) */
+        if (variable >= 0) {
+            /* a variable's value, computed before the forces (docs/interface.md §7.10);
+             * the Control_Diff states it reads are the load's Jacobian columns too */
             m->variables_read = 1;
             continue;
         }
+        if (in[k].kind == HX_EXPR_INPUT_DIF)
+            continue; /* a Control_Diff's state, set before the forces (§7.10) */
         if (in[k].kind != HX_EXPR_INPUT_MEASURE) {
-            /* Control_Diff states and IC arrays: the load's Jacobian columns would be
-             * those of the Control_Diff states, which its differences do not move yet */
+            /* a rate (DIF1) is computed after the forces; an IC array is refused as
+             * before */
             char name[64], what[HX_MESSAGE_MAX];
             snprintf(what, sizeof what, "%s:%d:%d: %s: a force's expression reads TIME, the"
-                     " measures of markers and variables that read those; reading a"
-                     " Control_Diff (itself or through a variable) or an IC array is not"
-                     " simulated yet", d->path, in[k].line, in[k].column,
+                     " measures of markers, Control_Diff states (DIF) and variables; a"
+                     " Control_Diff's rate (DIF1, computed after the forces) or an IC"
+                     " array is not simulated yet", d->path, in[k].line, in[k].column,
                      hx_expr_input_text(&in[k], name, sizeof name));
             hx_draft_fail_expression(d, element, l->id, attr, what);
             return -1;

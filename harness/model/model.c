@@ -238,9 +238,12 @@ void hx_model_free(hx_model *m)
         free(m->stateeqns[k].inputs);
         free(m->stateeqns[k].initial);
     }
-    for (int k = 0; k < m->nroutines; ++k)
+    for (int k = 0; k < m->nroutines; ++k) {
         free_user_call(&m->routines[k].user);
+        hx_expr_free(m->routines[k].program);
+    }
     free(m->routines);
+    free(m->diff_order);
     for (int k = 0; k < m->nsplines; ++k) {
         free(m->splines[k].x);
         free(m->splines[k].z);

@@ -207,6 +207,10 @@ typedef struct hx_routine {
     int joint;           /* its index */
     char val_type;       /* Motion_Joint: 'D', 'V' or 'A': what MOTSUB's value is */
     char motion_type;    /* Motion_Joint: 'R', 'T', or 0 when not written */
+    /* Control_Diff type EXPRESSION (docs/interface.md §7.10): its rate, linked; NULL: a
+     * DIFSUB (user) one, which has no other field below */
+    hx_expr_program *program;
+    int reads_variables; /* its program reads VARVAL or ARYVAL of a U array */
     int line;
 } hx_routine;
 
@@ -313,6 +317,9 @@ typedef struct hx_model {
     int nstateeqns;
     hx_routine *routines;    /* in the order read */
     int nroutines;
+    int *diff_order;         /* the Control_Diffs by expression (routine indices), each after
+                              * those whose rate (DIF1) it reads; computed after the DIFSUBs */
+    int ndiff_programs;
     int nroutines_of[HX_ROUTINE_KINDS];
     int nwarnings;
     /* elements that act on the dynamics but that the harness does not model:

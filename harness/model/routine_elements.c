@@ -2,15 +2,20 @@
  * The user routines that are not forces (routine_elements.h). Attribute names
  * are MotionSolve's (docs/interface.md §7.12).
  */
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
 #include "model/draft.h"
+#include "model/expr/expr.h"
+#include "model/load_elements.h"
 #include "model/request_elements.h"
 #include "model/routine_elements.h"
 #include "model/xml_attrs.h"
 
-static hx_routine *push_routine(hx_draft *d, const hx_element_read *e, enum hx_routine_kind kind)
+static hx_routine *push_routine(hx_draft *d, const hx_element_read *e, enum hx_routine_kind kind,
+                                int user)
 {
     hx_model *m = d->m;
     const int earlier = hx_model_routine(m, kind, e->id);
@@ -33,7 +38,7 @@ static hx_routine *push_routine(hx_draft *d, const hx_element_read *e, enum hx_r
     r->slot = m->nroutines_of[kind]++;
     r->joint = -1;
     r->line = e->line;
-    if (hx_draft_user_call(d, e, &r->user) != 0)
+    if (user && hx_draft_user_call(d, e, &r->user) != 0)
         return NULL;
     return r;
 }
@@ -64,7 +69,7 @@ void hx_build_request(hx_draft *d, const hx_element_read *e)
         return;
     }
     if (user_type(d, e) == 0)
-        push_routine(d, e, HX_ROUTINE_REQUEST);
+        push_routine(d, e, HX_ROUTINE_REQUEST, 1);
 }
 
 void hx_build_user_variable(hx_draft *d, const hx_element_read *e)
@@ -74,26 +79,63 @@ void hx_build_user_variable(hx_draft *d, const hx_element_read *e)
                       " computes the value)", e->id);
         return;
     }
-    hx_routine *r = push_routine(d, e, HX_ROUTINE_VARIABLE);
+    hx_routine *r = push_routine(d, e, HX_ROUTINE_VARIABLE, 1);
     if (r != NULL)
         r->ic[0] = hx_attr_number(e, "ic", 0.0);
 }
 
 const hx_attr_spec hx_diff_attrs[] = {
     ID, TEXT("type"), {"is_implicit", HX_ATTR_BOOL, 0}, REAL("ic"), REAL("ic_dot"),
-    {"is_static_hold", HX_ATTR_BOOL, 0}, IGNORED("expr"), USER_CALL, END};
+    {"is_static_hold", HX_ATTR_BOOL, 0}, TEXT("expr"), USER_CALL, END};
+
+/* type="EXPRESSION" (or no type, an expr and no user routine): the state's
+ * rate is expr (docs/interface.md §7.10), parsed here, linked once the model
+ * is whole (hx_draft_resolve_routines). */
+static int expression_diff(const hx_element_read *e)
+{
+    const char *type = hx_attr_text(e, "type");
+    if (type != NULL)
+        return strcasecmp(type, "EXPRESSION") == 0;
+    return !hx_attr_present(e, "usrsub_param_string") && !hx_attr_present(e, "usrsub_dll_name") &&
+           !hx_attr_present(e, "script_name");
+}
 
 void hx_build_diff(hx_draft *d, const hx_element_read *e)
 {
-    if (user_type(d, e) != 0)
+    const int expression = expression_diff(e);
+    if (expression) {
+        if (!hx_attr_present(e, "expr")) {
+            hx_draft_fail(d, e->line, "Control_Diff %d: attribute expr is missing (type"
+                          " EXPRESSION: the state's rate)", e->id);
+            return;
+        }
+        if (hx_attr_number(e, "is_implicit", 0.0) != 0.0) {
+            hx_draft_fail(d, e->line, "Control_Diff %d: is_implicit=\"TRUE\": the harness"
+                          " integrates explicit Control_Diff elements only (expr is the state's"
+                          " rate)", e->id);
+            return;
+        }
+        if (hx_attr_present(e, "usrsub_param_string") || hx_attr_present(e, "usrsub_dll_name")) {
+            hx_draft_fail(d, e->line, "Control_Diff %d: type EXPRESSION takes no user routine"
+                          " (usrsub_*)", e->id);
+            return;
+        }
+    } else if (user_type(d, e) != 0) {
         return;
-    hx_routine *r = push_routine(d, e, HX_ROUTINE_DIFF);
+    } else if (hx_attr_present(e, "expr")) {
+        hx_draft_fail(d, e->line, "Control_Diff %d: type USERSUB takes no expr (DIFSUB computes"
+                      " the rate)", e->id);
+        return;
+    }
+    hx_routine *r = push_routine(d, e, HX_ROUTINE_DIFF, !expression);
     if (r == NULL)
         return;
     r->ic[0] = hx_attr_number(e, "ic", 0.0);
     r->ic[1] = hx_attr_number(e, "ic_dot", 0.0);
     r->implicit = hx_attr_number(e, "is_implicit", 0.0) != 0.0;
     r->static_hold = hx_attr_number(e, "is_static_hold", 0.0) != 0.0;
+    if (expression)
+        hx_draft_parse_expression(d, e, "expr", &r->program);
 }
 
 const hx_attr_spec hx_motion_attrs[] = {
@@ -120,7 +162,7 @@ void hx_build_motion(hx_draft *d, const hx_element_read *e)
                       motion_type);
         return;
     }
-    hx_routine *r = push_routine(d, e, HX_ROUTINE_MOTION);
+    hx_routine *r = push_routine(d, e, HX_ROUTINE_MOTION, 1);
     if (r == NULL)
         return;
     r->val_type = (char)(val_type[0] & ~0x20); /* upper case */
@@ -132,9 +174,124 @@ void hx_build_motion(hx_draft *d, const hx_element_read *e)
     r->motion_type = motion_type == NULL ? 0 : (char)(motion_type[0] & ~0x20);
 }
 
+/* The routine index of the Control_Diff in slot, or -1. */
+static int diff_of_slot(const hx_model *m, int slot)
+{
+    for (int k = 0; k < m->nroutines; ++k)
+        if (m->routines[k].kind == HX_ROUTINE_DIFF && m->routines[k].slot == slot)
+            return k;
+    return -1;
+}
+
+/* The expression Control_Diff whose rate (DIF1) routine k's program reads
+ * through input j, when that one is computed after the DIFSUBs too; else -1. */
+static int rate_read(const hx_model *m, int k, int j)
+{
+    const hx_expr_input *in = &hx_expr_inputs(m->routines[k].program)[j];
+    if (in->kind != HX_EXPR_INPUT_DIF1)
+        return -1;
+    const int r = diff_of_slot(m, in->index[0]);
+    return r >= 0 && m->routines[r].program != NULL ? r : -1;
+}
+
+/* Links routine k's program; refuses a rate that reads itself. */
+static int link_diff(hx_draft *d, int k)
+{
+    hx_model *m = d->m;
+    hx_routine *r = &m->routines[k];
+    hx_message why;
+    if (hx_expr_link(r->program, m, &why) != 0) {
+        hx_draft_fail_expression(d, "Control_Diff", r->id, "expr", why.text);
+        return -1;
+    }
+    const hx_expr_input *in = hx_expr_inputs(r->program);
+    for (int j = 0; j < hx_expr_input_count(r->program); ++j) {
+        if (in[j].variable >= 0)
+            r->reads_variables = 1;
+        if (in[j].kind == HX_EXPR_INPUT_MEASURE)
+            for (int i = 0; i < in[j].nids && i < 4; ++i)
+                if (in[j].index[i] >= 0)
+                    m->markers[in[j].index[i]].tracked = 1;
+        if (rate_read(m, k, j) == k) {
+            char name[64], what[HX_MESSAGE_MAX];
+            snprintf(what, sizeof what, "%s:%d:%d: %s: a Control_Diff's rate reads its own rate"
+                     " (an algebraic loop, which the harness does not solve)", d->path,
+                     in[j].line, in[j].column, hx_expr_input_text(&in[j], name, sizeof name));
+            hx_draft_fail_expression(d, "Control_Diff", r->id, "expr", what);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* The expression Control_Diffs linked and ordered, each after those whose
+ * rate it reads (passes until none is added: they are few, this runs once);
+ * a cycle of DIF1 is refused naming each element of it with its line. */
+static int order_diffs(hx_draft *d)
+{
+    hx_model *m = d->m;
+    m->diff_order = malloc(sizeof(int) * (size_t)(m->nroutines + 1));
+    unsigned char *ordered = calloc((size_t)m->nroutines + 1, 1);
+    if (m->diff_order == NULL || ordered == NULL) {
+        free(ordered);
+        hx_draft_fail(d, 0, "out of memory");
+        return -1;
+    }
+    int total = 0;
+    for (int k = 0; k < m->nroutines; ++k)
+        if (m->routines[k].program != NULL) {
+            ++total;
+            if (link_diff(d, k) != 0) {
+                free(ordered);
+                return -1;
+            }
+        }
+    int count = 0;
+    for (int added = 1; added && count < total;) {
+        added = 0;
+        for (int k = 0; k < m->nroutines; ++k) {
+            if (m->routines[k].program == NULL || ordered[k])
+                continue;
+            int ready = 1;
+            for (int j = 0; j < hx_expr_input_count(m->routines[k].program) && ready; ++j) {
+                const int r = rate_read(m, k, j);
+                ready = r < 0 || ordered[r];
+            }
+            if (ready)
+                ordered[k] = 1, m->diff_order[count++] = k, added = 1;
+        }
+    }
+    m->ndiff_programs = count;
+    if (count < total) {
+        char text[HX_MESSAGE_MAX] = "";
+        size_t used = 0;
+        int first = -1;
+        for (int k = 0; k < m->nroutines; ++k) {
+            const hx_routine *r = &m->routines[k];
+            if (r->program == NULL || ordered[k])
+                continue;
+            first = first < 0 ? k : first;
+            for (int j = 0; j < hx_expr_input_count(r->program); ++j) {
+                const int q = rate_read(m, k, j);
+                if (q >= 0 && !ordered[q] && used < sizeof text)
+                    used += (size_t)snprintf(text + used, sizeof text - used,
+                                             "%s%s:%d: Control_Diff %d reads DIF1(%d)",
+                                             used == 0 ? "" : ", ", d->path, r->line, r->id,
+                                             m->routines[q].id);
+            }
+        }
+        hx_draft_fail(d, m->routines[first].line, "a cycle of Control_Diff rates (an algebraic"
+                      " loop, which the harness does not solve): %s", text);
+    }
+    free(ordered);
+    return d->failed ? -1 : 0;
+}
+
 int hx_draft_resolve_routines(hx_draft *d)
 {
     hx_model *m = d->m;
+    if (order_diffs(d) != 0)
+        return -1;
     for (int k = 0; k < m->nroutines; ++k) {
         hx_routine *r = &m->routines[k];
         if (r->kind != HX_ROUTINE_MOTION)

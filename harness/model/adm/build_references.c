@@ -122,7 +122,15 @@ int hx_adm_build_diff(hx_adm_reader *r, hx_adm_entry *e)
 {
     hx_adm_element el;
     hx_adm_element_init(&el, "Control_Diff");
-    hx_adm_element_text(&el, "type", "USERSUB");
+    const int user = hx_adm_is_user(hx_adm_text(e, "FUNCTION"));
+    if (!user && hx_adm_has(e, "ROUTINE"))
+        return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
+                           " FUNCTION=USER(...)");
+    if (!user && hx_adm_has(e, "IMPLICIT"))
+        return hx_adm_fail(r, e, hx_adm_get(e, "IMPLICIT")->line, "IMPLICIT: the harness"
+                           " integrates explicit DIFF statements only (FUNCTION is the state's"
+                           " rate)");
+    hx_adm_element_text(&el, "type", user ? "USERSUB" : "EXPRESSION");
     const hx_adm_value *ic = hx_adm_get(e, "IC");
     if (ic->present)
         hx_adm_element_number(&el, "ic", ic->numbers[0]);
@@ -132,7 +140,9 @@ int hx_adm_build_diff(hx_adm_reader *r, hx_adm_entry *e)
         hx_adm_element_text(&el, "is_implicit", "TRUE");
     if (hx_adm_has(e, "STATIC_HOLD"))
         hx_adm_element_text(&el, "is_static_hold", "TRUE");
-    if (hx_adm_element_user(r, e, &el, NULL) != 0)
+    if (!user)
+        hx_adm_element_expression(&el, "expr", e, "FUNCTION");
+    else if (hx_adm_element_user(r, e, &el, NULL) != 0)
         return -1;
     return hx_adm_element_build(r, e, &el, NULL);
 }

@@ -65,8 +65,8 @@ static const char *why_not(const hx_adm_entry *e, char *why, size_t size)
                      " simulate yet (it simulates a joint's MOTION)");
         else if (!hx_adm_is_user(function))
             snprintf(why, size, "a FUNCTION expression, which this harness does not evaluate yet");
-    } else if (is(e, "DIFF") || is(e, "FIELD")) {
-        if (is(e, "FIELD") && function == NULL)
+    } else if (is(e, "FIELD")) { /* a DIFF's FUNCTION expression is its rate (§9.6) */
+        if (function == NULL)
             snprintf(why, size, "a linear FIELD (KMATRIX, CMATRIX, ...), which the harness does"
                      " not simulate yet (it runs FIELD=USER(...), FIESUB)");
         else if (!hx_adm_is_user(function))

@@ -67,6 +67,7 @@ typedef struct hx_dynamics {
     int nq, nu, n;                /* positions, velocities, the whole of y */
     int stateeqn_offset, nstates; /* y offset and count of the Force_StateEqn states */
     int diff_offset, ndiffs;      /* y offset and count of the Control_Diff states */
+    int diffs_read_variables;     /* a Control_Diff's expression reads a variable */
     int load_work, element_work;  /* y indices of the work done by loads and by elements */
     hx_binding **coupler_binding; /* per coupler; NULL for the built-in form */
     int nrows;                    /* constraint rows: the couplers', then the joints' */
@@ -89,6 +90,9 @@ typedef struct hx_dynamics {
                                    * docs/interface.md §9.9): it puts nothing on the bodies
                                    * nor in the Jacobian. The one thing a run changes, and
                                    * only between its segments, when nothing evaluates */
+    double *gravity;              /* 3: the gravity the loads and the energy use, the model's
+                                   * or a command file's ACCGRAV (§9.9), changed like
+                                   * load_off, between segments only */
 } hx_dynamics;
 
 /* What the evaluations ask beyond the right-hand side. */

@@ -22,7 +22,7 @@ hx_energy hx_energy_of(const hx_dynamics *d, hx_dynamics_data *dd, double t, con
         } else {
             kinetic += 0.5 * dof->mass * u[0] * u[0];
         }
-        potential -= m->bodies[k].mass * v3_dot(m->gravity, f->p);
+        potential -= m->bodies[k].mass * v3_dot(d->gravity, f->p);
     }
     double elastic = 0.0;
     hx_frames_copy(&dd->moved, &dd->frames);

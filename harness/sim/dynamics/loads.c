@@ -117,6 +117,31 @@ static void add_program_bodies(const hx_model *m, const hx_expr_program *p, int 
     }
 }
 
+/* The Control_Diff slots program p reads by DIF, through the variables it
+ * reads too (they form no cycle). */
+static void add_program_diffs(const hx_model *m, const hx_expr_program *p, int *slots, int *n)
+{
+    const hx_expr_input *in = hx_expr_inputs(p);
+    for (int j = 0; j < hx_expr_input_count(p); ++j) {
+        if (in[j].kind == HX_EXPR_INPUT_DIF)
+            add_body(slots, n, in[j].index[0]); /* distinct, as the bodies */
+        if (in[j].variable >= 0 && m->variables[in[j].variable].program != NULL)
+            add_program_diffs(m, m->variables[in[j].variable].program, slots, n);
+    }
+}
+
+int hx_load_diffs(const hx_model *m, int k, int *slots)
+{
+    const hx_load *l = &m->loads[k];
+    int n = 0;
+    const hx_expr_program *programs[7] = {l->force[0],  l->force[1],  l->force[2], l->torque[0],
+                                          l->torque[1], l->torque[2], l->value};
+    for (int p = 0; p < 7; ++p)
+        if (programs[p] != NULL)
+            add_program_diffs(m, programs[p], slots, &n);
+    return n;
+}
+
 int hx_load_bodies(const hx_model *m, int k, int *bodies)
 {
     const hx_load *l = &m->loads[k];
@@ -139,7 +164,7 @@ int hx_loads_apply(const hx_dynamics *d, hx_dynamics_data *dd, double *power)
     const hx_model *m = d->m;
     for (int k = 0; k < m->nbodies; ++k)
         if (d->dof[k].kind != HX_DOF_GROUND)
-            v3_axpy(dd->force + 3 * k, m->bodies[k].mass / d->ucf, m->gravity);
+            v3_axpy(dd->force + 3 * k, m->bodies[k].mass / d->ucf, d->gravity);
     *power = 0.0;
     for (int k = 0; k < m->nloads; ++k) {
         if (d->load_off[k])

@@ -34,6 +34,11 @@ int hx_load_share_at(const hx_model *m, const hx_frames *fr, int k, hx_load_shar
  * Returns their count; bodies holds HX_LOAD_BODIES_MAX. */
 int hx_load_bodies(const hx_model *m, int k, int *bodies);
 
+/* The Control_Diff states (their slots) load k's expressions read by DIF,
+ * directly or through the variables they read, each once; their count
+ * (slots holds HX_LOAD_BODIES_MAX). */
+int hx_load_diffs(const hx_model *m, int k, int *slots);
+
 /* The forces stage's gravity and loads at dd->frames, onto the bodies, and
  * their power; 0, or -1 with the failure recorded in dd (an expression's
  * fault). */

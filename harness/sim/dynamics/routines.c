@@ -1,8 +1,11 @@
 /* The user routines that are not forces in the equations of motion (routines.h). */
+#include "expr/evaluate.h"
 #include "host/invoke.h"
+#include "host/variable_values.h"
 #include "sim/dynamics/routines.h"
 #include "sim/dynamics/failure.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,7 +22,9 @@ int hx_routines_init(hx_dynamics *d, hx_message *msg)
         d->driver[k] = -1;
     for (int k = 0; k < m->nroutines; ++k) {
         const hx_routine *r = &m->routines[k];
-        d->routine_binding[k] = hx_bindings_find(&d->s->bindings, HX_FAMILY_ROUTINE, k);
+        d->routine_binding[k] =
+            r->program != NULL ? NULL : hx_bindings_find(&d->s->bindings, HX_FAMILY_ROUTINE, k);
+        d->diffs_read_variables |= r->reads_variables;
         if (r->kind == HX_ROUTINE_DIFF && r->implicit)
             return hx_fail(msg, "%s:%d: Control_Diff %d: is_implicit=\"TRUE\": the harness"
                            " integrates explicit Control_Diff elements only (check verifies"
@@ -94,12 +99,49 @@ int hx_routines_initial(const hx_dynamics *d, hx_dynamics_data *dd, double *y)
     return 0;
 }
 
+int hx_routines_diff_expression(const hx_dynamics *d, hx_dynamics_data *dd, int k, double *rate)
+{
+    const hx_routine *r = &d->m->routines[k];
+    const hx_expr_context c = {&dd->frames, dd->frames.variables, NULL};
+    hx_expr_fault fault;
+    if (hx_expr_eval(r->program, &c, rate, &fault) == 0)
+        return 0;
+    char element[48];
+    hx_message msg;
+    snprintf(element, sizeof element, "Control_Diff %d", r->id);
+    hx_expr_fail(&msg, r->program, &fault, element);
+    return hx_dynamics_fail(dd, "%s", msg.text);
+}
+
+/* The rates of the Control_Diffs by expression, after the DIFSUBs', each
+ * after those whose rate it reads (the model's diff_order). */
+static int diff_expressions(const hx_dynamics *d, hx_dynamics_data *dd, double *ydot)
+{
+    const hx_model *m = d->m;
+    if (!m->variables_read && d->diffs_read_variables) {
+        /* the variables the rates read, unless the loads' computed them already */
+        hx_message msg;
+        if (hx_variables_values(&dd->frames, dd->frames.variables, &msg) != 0)
+            return hx_dynamics_fail(dd, "%s", msg.text);
+    }
+    for (int i = 0; i < m->ndiff_programs; ++i) {
+        const int k = m->diff_order[i];
+        const int slot = m->routines[k].slot;
+        double rate;
+        if (hx_routines_diff_expression(d, dd, k, &rate) != 0)
+            return -1;
+        ydot[d->diff_offset + slot] = rate;
+        dd->frames.diffs[2 * slot + 1] = rate;
+    }
+    return 0;
+}
+
 int hx_routines_apply(const hx_dynamics *d, hx_dynamics_data *dd, const double *y, double *ydot)
 {
     const hx_model *m = d->m;
     for (int k = 0; k < m->nroutines; ++k) {
         const hx_routine *r = &m->routines[k];
-        if (r->kind != HX_ROUTINE_DIFF)
+        if (r->kind != HX_ROUTINE_DIFF || r->program != NULL)
             continue;
         hx_binding *b = d->routine_binding[k];
         double rate;
@@ -109,6 +151,8 @@ int hx_routines_apply(const hx_dynamics *d, hx_dynamics_data *dd, const double *
         ydot[d->diff_offset + r->slot] = rate;
         dd->frames.diffs[2 * r->slot + 1] = rate;
     }
+    if (m->ndiff_programs > 0 && diff_expressions(d, dd, ydot) != 0)
+        return -1;
     for (int body = 0; body < m->nbodies; ++body) {
         const int k = d->driver[body];
         if (k < 0)

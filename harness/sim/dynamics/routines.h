@@ -2,7 +2,8 @@
  * The user routines that are not forces in the equations of motion
  * (docs/interface.md §7.12):
  *  - each Control_Diff's state is part of y (dynamics.h), its rate DIFSUB's
- *    value at the state, which the host also answers DIF and DIF1 from;
+ *    value at the state, or its expression's (after every DIFSUB's, in the
+ *    model's diff_order), which the host also answers DIF and DIF1 from;
  *  - a Motion_Joint drives its joint's coordinate: for val_type D, MOTSUB's
  *    value at iord 1 and 2 are the coordinate's rate and acceleration, and
  *    iord 0 and 1 its value and rate at t = 0; for V its rate is MOTSUB's
@@ -38,6 +39,11 @@ int hx_routines_initial(const hx_dynamics *d, hx_dynamics_data *dd, double *y);
  * dd->frames's DIF1), the driven joints' rates and accelerations over the
  * bodies'. 0 or -1. */
 int hx_routines_apply(const hx_dynamics *d, hx_dynamics_data *dd, const double *y, double *ydot);
+
+/* The rate of the Control_Diff by expression routine k at dd->frames (its
+ * variables computed there when it reads one): 0, or -1 with
+ * "file:line:column: Control_Diff ID: what at t = ..." (dd->message). */
+int hx_routines_diff_expression(const hx_dynamics *d, hx_dynamics_data *dd, int k, double *rate);
 
 /* The y rows whose rate is a function of time alone (driven joints):
  * their indices into rows (at most 2 per driven joint); their count. */

@@ -67,6 +67,7 @@ void hx_jacobian_free(hx_jacobian *jac)
     free(jac->coupled_at);
     free(jac->projector);
     free(jac->driven);
+    free(jac->diff_scratch);
     free(jac->y);
     hx_dynamics_data_free(&jac->dd);
     hx_messages_destroy(&jac->twin_messages);

@@ -73,6 +73,7 @@ typedef struct hx_jacobian {
     /* driven joints (routine_blocks.c): the y rows whose rate is a function of
      * time alone, marked once */
     unsigned char *driven;
+    double *diff_scratch;       /* the Control_Diff expressions' partials (routine_blocks.c) */
     double *y, *f_plus, *f_minus;     /* scratch: n each */
     hx_messages twin_messages;  /* the twins' own messages, apart from the session's */
     long evaluations;           /* right-hand sides the builds evaluated */

@@ -157,6 +157,19 @@ int hx_jacobian_pattern(hx_jacobian *jac, hx_message *msg)
         const int reacted = l->kind == HX_LOAD_VECTOR ? l->j_marker >= 0 : !l->action_only;
         const int rows[2] = {body_of(m, l->i_marker), body_of(m, l->j_marker)};
         bodies_by_bodies(&p, d, rows, reacted ? 2 : 1, bodies, nbodies);
+        /* the Control_Diff states it reads (DIF): its bodies' velocity rows by
+         * each state's column */
+        const int ndiffs = hx_load_diffs(m, k, bodies);
+        for (int i = 0; i < (reacted ? 2 : 1); ++i) {
+            if (rows[i] < 0 || d->dof[rows[i]].kind == HX_DOF_GROUND)
+                continue;
+            int body_rows[13];
+            const int nr = hx_jacobian_body_columns(d, rows[i], body_rows);
+            const int first = nr - (d->dof[rows[i]].kind == HX_DOF_FREE ? 6 : 1);
+            for (int r = first; r < nr; ++r)
+                for (int j = 0; j < ndiffs; ++j)
+                    add(&p, body_rows[r], d->diff_offset + bodies[j]);
+        }
     }
     for (int k = 0; k < m->nstateeqns; ++k)
         state_element(&p, d, k);

@@ -5,9 +5,13 @@
  * bodies of the markers they name, the Control_Diff states they name); a
  * driven joint's rows, functions of time alone, are zero.
  */
+#include <stdio.h>
 #include <stdlib.h>
 
+#include "expr/evaluate.h"
 #include "host/invoke.h"
+#include "host/variable_values.h"
+#include "model/expr/program.h"
 #include "host/queries.h"
 #include "sim/dynamics/routines.h"
 #include "sim/dynamics/failure.h"
@@ -22,11 +26,50 @@ static void add_column(int *cols, int *n, int max, int c)
         cols[(*n)++] = c;
 }
 
+/* The columns program p reads: the Control_Diff states it names (DIF), the
+ * bodies its markers sit on, through the variables it reads (they form no
+ * cycle: model/variable_programs.c). */
+static void program_columns(const hx_dynamics *d, const hx_expr_program *p, int *cols, int *n,
+                            int max)
+{
+    const hx_model *m = d->m;
+    const hx_expr_input *in = hx_expr_inputs(p);
+    for (int j = 0; j < hx_expr_input_count(p); ++j) {
+        if (in[j].kind == HX_EXPR_INPUT_DIF)
+            add_column(cols, n, max, d->diff_offset + in[j].index[0]);
+        if (in[j].variable >= 0) {
+            const hx_variable *v = &m->variables[in[j].variable];
+            if (v->program != NULL)
+                program_columns(d, v->program, cols, n, max);
+            for (int i = 0; v->program == NULL && i < v->nmarkers; ++i)
+                if (v->marker_ids[i] != 0) {
+                    int body_cols[13];
+                    const int body = m->markers[hx_model_marker(m, v->marker_ids[i])].body;
+                    const int nb = hx_jacobian_body_columns(d, body, body_cols);
+                    for (int c = 0; c < nb; ++c)
+                        add_column(cols, n, max, body_cols[c]);
+                }
+        }
+        for (int i = 0; in[j].kind == HX_EXPR_INPUT_MEASURE && i < in[j].nids && i < 4; ++i)
+            if (in[j].index[i] >= 0) {
+                int body_cols[13];
+                const int nb = hx_jacobian_body_columns(d, m->markers[in[j].index[i]].body,
+                                                        body_cols);
+                for (int c = 0; c < nb; ++c)
+                    add_column(cols, n, max, body_cols[c]);
+            }
+    }
+}
+
 int hx_diff_columns(const hx_dynamics *d, int routine, int *cols, int max)
 {
     const hx_model *m = d->m;
     int n = 0;
     add_column(cols, &n, max, d->diff_offset + m->routines[routine].slot);
+    if (m->routines[routine].program != NULL) {
+        program_columns(d, m->routines[routine].program, cols, &n, max);
+        return n;
+    }
     const hx_binding *b = d->routine_binding[routine];
     for (int q = 0; b != NULL && q < b->deps.count; ++q) {
         const hx_query *dq = &b->deps.query[q];
@@ -51,13 +94,21 @@ int hx_diff_columns(const hx_dynamics *d, int routine, int *cols, int max)
     return n;
 }
 
-/* DIFSUB of routine k at (t, y), jac->dd's kinematics set there; 0 or -1
+/* DIFSUB (or the expression) of routine k at (t, y), jac->dd's kinematics set there; 0 or -1
  * (jac->dd.message). */
 static int diff_rate(hx_jacobian *jac, int k, double t, const double *y, double *rate)
 {
     const hx_dynamics *d = jac->d;
     hx_dynamics_data *dd = &jac->dd;
     hx_dynamics_kinematics(d, dd, t, y);
+    if (d->m->routines[k].program != NULL) {
+        if (d->m->routines[k].reads_variables) {
+            hx_message msg;
+            if (hx_variables_values(&dd->frames, dd->frames.variables, &msg) != 0)
+                return hx_dynamics_fail(dd, "%s", msg.text);
+        }
+        return hx_routines_diff_expression(d, dd, k, rate);
+    }
     hx_binding *b = d->routine_binding[k];
     hx_invoke_routine(b, &dd->frames, 1, 0, rate, NULL); /* dflag: a difference */
     jac->partial_calls++;
@@ -75,6 +126,51 @@ int hx_routine_blocks_init(hx_jacobian *jac, hx_message *msg)
     for (int i = 0; i < ndriven; ++i)
         jac->driven[rows[i]] = 1;
     free(rows);
+    size_t scratch = 1;
+    for (int k = 0; k < d->m->nroutines; ++k)
+        if (d->m->routines[k].program != NULL &&
+            hx_expr_scratch_size(d->m->routines[k].program) > scratch)
+            scratch = hx_expr_scratch_size(d->m->routines[k].program);
+    jac->diff_scratch = malloc(sizeof(double) * scratch);
+    if (jac->diff_scratch == NULL)
+        return hx_fail(msg, "out of memory");
+    return 0;
+}
+
+/* The exact partials of the expression of routine k in the Control_Diff
+ * states it reads by DIF (evaluate.h), where it reads no variable (a
+ * variable's dependence on them is taken by differences with the rest):
+ * added to its row; their columns marked done. 0 or -1. */
+static int diff_exact(hx_jacobian *jac, int k, double t, const double *y, const int *cols, int nc,
+                      unsigned char *done)
+{
+    const hx_dynamics *d = jac->d;
+    hx_dynamics_data *dd = &jac->dd;
+    const hx_routine *r = &d->m->routines[k];
+    if (r->program == NULL || r->reads_variables)
+        return 0;
+    hx_dynamics_kinematics(d, dd, t, y);
+    const hx_expr_context c = {&dd->frames, dd->frames.variables, NULL};
+    double value, partials[HX_EXPR_MAX_INPUTS];
+    hx_expr_fault fault;
+    if (hx_expr_eval_partials(r->program, &c, &value, partials, jac->diff_scratch, &fault) != 0) {
+        char element[48];
+        hx_message msg;
+        snprintf(element, sizeof element, "Control_Diff %d", r->id);
+        hx_expr_fail(&msg, r->program, &fault, element);
+        return hx_dynamics_fail(dd, "%s", msg.text);
+    }
+    const hx_expr_input *in = hx_expr_inputs(r->program);
+    const int row = d->diff_offset + r->slot;
+    for (int j = 0; j < hx_expr_input_count(r->program); ++j) {
+        if (in[j].kind != HX_EXPR_INPUT_DIF)
+            continue;
+        const int col = d->diff_offset + in[j].index[0];
+        hx_jacobian_add(jac, row, 1, col, &partials[j]);
+        for (int i = 0; i < nc; ++i)
+            if (cols[i] == col)
+                done[i] = 1;
+    }
     return 0;
 }
 
@@ -96,7 +192,12 @@ int hx_routine_blocks(hx_jacobian *jac, double t, const double *y)
             continue;
         const int row = d->diff_offset + m->routines[k].slot;
         const int nc = hx_diff_columns(d, k, cols, DIFF_COLUMNS_MAX);
+        unsigned char done[DIFF_COLUMNS_MAX] = {0};
+        if (diff_exact(jac, k, t, y, cols, nc, done) != 0)
+            return -1;
         for (int j = 0; j < nc; ++j) {
+            if (done[j])
+                continue;
             const int c = cols[j];
             const double h = hx_jacobian_step(y, c);
             double plus, minus;

@@ -67,9 +67,6 @@ static int refuse(const char *path, const hx_command *c, hx_message *msg)
         return hx_fail(msg, "%s:%d: VARIABLE/%d: redefining a FUNCTION between segments is not"
                        " done by the harness yet (the model's expressions are compiled once,"
                        " when it is read)", path, c->line, c->ids[0]);
-    case HX_COMMAND_ACCGRAV:
-        return hx_fail(msg, "%s:%d: ACCGRAV: changing gravity between segments is not done by"
-                       " the harness yet (gravity is the model's, read once)", path, c->line);
     default:
         return hx_fail(msg, "%s:%d: a command the run does not take", path, c->line);
     }
@@ -115,12 +112,15 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
     unsigned char *off = calloc(nloads + 1, 1); /* the loads switched off so far */
     if (off == NULL || (f->ncommands > 0 &&
                         ((out->segments = calloc((size_t)f->ncommands, sizeof(hx_segment))) == NULL ||
-                         (out->loads_off = calloc((size_t)f->ncommands * nloads + 1, 1)) == NULL))) {
+                         (out->loads_off = calloc((size_t)f->ncommands * nloads + 1, 1)) == NULL ||
+                         (out->gravity = calloc(3 * (size_t)f->ncommands, sizeof(double))) ==
+                             NULL))) {
         free(off);
         hx_command_schedule_free(out);
         return hx_fail(msg, "out of memory");
     }
-    double t = 0.0;
+    double t = 0.0, gravity[3]; /* the model's until an ACCGRAV changes it */
+    memcpy(gravity, m->gravity, sizeof gravity);
     int noted = 0, statics = 0; /* statics: a SIMULATE/STATIC since the last segment */
     for (int k = 0; k < f->ncommands; ++k) {
         const hx_command *c = &f->commands[k];
@@ -144,6 +144,13 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
                 hx_command_schedule_free(out);
                 return -1;
             }
+            continue;
+        }
+        if (c->kind == HX_COMMAND_ACCGRAV) {
+            /* the components given, for the segments after it (docs/interface.md §9.9) */
+            for (int i = 0; i < 3; ++i)
+                if (c->gravity_given[i])
+                    gravity[i] = c->gravity[i];
             continue;
         }
         if (c->kind != HX_COMMAND_SIMULATE) {
@@ -170,14 +177,18 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
                     c->line, dt, t, end);
         unsigned char *flags = out->loads_off + (size_t)out->nsegments * nloads;
         memcpy(flags, off, nloads);
-        out->segments[out->nsegments++] = (hx_segment){end, dt, rtol, atol, flags, statics};
+        double *g = out->gravity + 3 * (size_t)out->nsegments;
+        memcpy(g, gravity, sizeof gravity);
+        out->segments[out->nsegments++] = (hx_segment){end, dt, rtol, atol, flags, g, statics};
         statics = 0;
         t = end;
     }
     if (statics) { /* a SIMULATE/STATIC last: the equilibrium alone, a segment of no length */
         unsigned char *flags = out->loads_off + (size_t)out->nsegments * nloads;
         memcpy(flags, off, nloads);
-        out->segments[out->nsegments++] = (hx_segment){t, 0.0, rtol, atol, flags, 1};
+        double *g = out->gravity + 3 * (size_t)out->nsegments;
+        memcpy(g, gravity, sizeof gravity);
+        out->segments[out->nsegments++] = (hx_segment){t, 0.0, rtol, atol, flags, g, 1};
     }
     free(off);
     if (out->nsegments == 0) {
@@ -192,5 +203,6 @@ void hx_command_schedule_free(hx_command_schedule *s)
 {
     free(s->segments);
     free(s->loads_off);
+    free(s->gravity);
     memset(s, 0, sizeof *s);
 }

@@ -5,9 +5,9 @@
  * INTEGRATOR's ERROR as the tolerances of the segments after it, and the
  * command line's --end, --output-interval, --rtol and --atol over the file's;
  * ACTIVATE and DEACTIVATE of the loads given by expressions (SFORCE, VFORCE,
- * VTORQUE, GFORCE) for the segments after them. What the run cannot do yet
- * (SIMULATE/STATIC, switching other elements, VARIABLE, ACCGRAV) is refused
- * by name and file:line.
+ * VTORQUE, GFORCE) and ACCGRAV's gravity, for the segments after them. What
+ * the run cannot do yet (SIMULATE/STATIC, switching other elements,
+ * VARIABLE) is refused by name and file:line.
  */
 #ifndef HX_SIM_SIMULATION_COMMAND_SCHEDULE_H
 #define HX_SIM_SIMULATION_COMMAND_SCHEDULE_H
@@ -29,6 +29,7 @@ typedef struct hx_command_schedule {
     int nsegments;
     double t_end; /* the last segment's end */
     unsigned char *loads_off; /* the segments' flags, nloads a segment */
+    double *gravity;          /* the segments' gravity, 3 a segment (ACCGRAV) */
 } hx_command_schedule;
 
 /* The schedule of command file f (read from path) for model m, read from

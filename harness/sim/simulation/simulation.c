@@ -109,10 +109,11 @@ static void add_stats(hx_integrator_stats *run, const hx_integrator_stats *segme
 }
 
 /* The loads a segment switches off (docs/interface.md §9.9). */
-static void switch_loads(const hx_dynamics *d, const hx_segment *g)
+static void switch_segment(const hx_dynamics *d, const hx_segment *g)
 {
     for (int j = 0; j < d->m->nloads; ++j)
         d->load_off[j] = g->loads_off != NULL ? g->loads_off[j] : 0;
+    memcpy(d->gravity, g->gravity != NULL ? g->gravity : d->m->gravity, 3 * sizeof(double));
 }
 
 /* y moved to the static equilibrium at t (equilibrium.h); the energy balance
@@ -145,7 +146,7 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
         return -1;
     }
     if (nsegments > 0)
-        switch_loads(d, &segments[0]);
+        switch_segment(d, &segments[0]);
     if ((opt->static_start || (nsegments > 0 && segments[0].equilibrium)) &&
         find_equilibrium(rc, 0.0, y) != 0)
         return -1;
@@ -170,7 +171,7 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
     for (int k = 0; k < nsegments; ++k) {
         /* each segment from the state the one before it ended in (docs/interface.md
          * §9.9): the integrator restarts there; its first output is after t */
-        switch_loads(d, &segments[k]);
+        switch_segment(d, &segments[k]);
         if (k > 0 && segments[k].equilibrium) { /* SIMULATE/STATIC between segments: its row */
             if (find_equilibrium(rc, t, y) != 0)
                 break;
@@ -222,6 +223,7 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
     if (y_end != NULL)
         memcpy(y_end, y, sizeof(double) * (size_t)d->n);
     memset(d->load_off, 0, (size_t)d->m->nloads); /* every load on again, as the model has it */
+    memcpy(d->gravity, d->m->gravity, 3 * sizeof(double));
     return result->status == HX_INTEGRATION_OK ? 0 : -1;
 }
 
@@ -229,7 +231,7 @@ int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *
                 hx_simulation_result *result)
 {
     const hx_segment whole = {opt->integration.t_end, opt->integration.output_interval,
-                              opt->integration.rtol, opt->integration.atol, NULL, 0};
+                              opt->integration.rtol, opt->integration.atol, NULL, NULL, 0};
     return hx_simulate_segments(d, opt, &whole, 1, y_end, result);
 }
 

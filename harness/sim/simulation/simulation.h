@@ -60,12 +60,13 @@ int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *
 /* One segment of a run (a command file's SIMULATE/DYNAMIC, docs/interface.md
  * §9.9): its end time (absolute), the time between its CSV rows (0: every
  * step), its tolerances, the loads switched off during it (one flag per
- * load of the model; NULL: none), and whether it starts with the static
- * equilibrium (a SIMULATE/STATIC before it; a segment that ends where it
- * starts is that equilibrium alone). */
+ * load of the model; NULL: none), its gravity (3; NULL: the model's), and
+ * whether it starts with the static equilibrium (a SIMULATE/STATIC before it; a
+ * segment that ends where it starts is that equilibrium alone). */
 typedef struct hx_segment {
     double t_end, output_interval, rtol, atol;
     const unsigned char *loads_off;
+    const double *gravity;
     int equilibrium;
 } hx_segment;
 
