@@ -4,11 +4,14 @@
  * the joints' equations (joint_equations.c) in one G, the multipliers from
  * G M^-1 G^T lambda = rhs, and after a step positions then velocities
  * projected back onto phi = 0 and G u = 0 (docs/architecture.md, the
- * constraint system). Each row of G touches at most 3 blocks of velocities (a
- * coupler's three joints, a joint's two free bodies): it keeps their 12
- * values, and M is block-diagonal per body, so M^-1 G^T has the same blocks.
- * The order of every sum is that of the dense products over u it replaces,
- * so the couplers' runs are unchanged.
+ * constraint system). Each row of G touches a few blocks of velocities (a
+ * coupler's joints, a joint's two free bodies): it keeps their values, 12 a
+ * row (36 when a coupler spans joints between bodies: its joints' I and J
+ * bodies, up to 6), and M is block-diagonal per body, so M^-1 G^T has the
+ * same blocks. The order of every sum is that of the dense products over u
+ * it replaces, so the couplers' runs are unchanged; a coupler of reduced
+ * joints alone keeps its former arithmetic (one value a joint, no
+ * convective term).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -21,6 +24,7 @@
 #include "sim/dynamics/constraint_matrix.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/failure.h"
+#include "sim/dynamics/joint_coordinate.h"
 #include "sim/dynamics/joint_equations.h"
 #include "sim/dynamics/redundancy.h"
 
@@ -59,6 +63,43 @@ static void add_block(hx_constraint_row *r, const hx_dynamics *d, int body, int 
     r->width[n] = dof->kind == HX_DOF_FREE ? 6 : 1;
 }
 
+/* A coupler's block of a body: its slot, the body added at *next when new. */
+static int coupler_slot(hx_constraint_row *r, const hx_dynamics *d, int body, int *next)
+{
+    for (int b = 0; b < r->nblocks; ++b)
+        if (r->body[b] == body)
+            return r->slot[b];
+    const int slot = *next;
+    add_block(r, d, body, slot);
+    *next += d->dof[body].kind == HX_DOF_FREE ? 6 : 1;
+    return slot;
+}
+
+/* Whether coupler k couples a joint that is not reduced. */
+static int coupler_is_general(const hx_model *m, int k)
+{
+    for (int i = 0; i < m->couplers[k].njoints; ++i)
+        if (!m->joints[m->couplers[k].joint[i]].reduced)
+            return 1;
+    return 0;
+}
+
+/* A general coupler's blocks: each joint's I and J bodies (a reduced joint's
+ * body alone), each body once. */
+static void coupler_blocks(hx_dynamics *d, int k)
+{
+    const hx_model *m = d->m;
+    const hx_coupler *c = &m->couplers[k];
+    hx_constraint_row *r = &d->rows[k];
+    int next = 0;
+    for (int i = 0; i < c->njoints; ++i) {
+        const hx_joint *j = &m->joints[c->joint[i]];
+        coupler_slot(r, d, m->markers[j->i_marker].body, &next);
+        if (!j->reduced)
+            coupler_slot(r, d, m->markers[j->j_marker].body, &next);
+    }
+}
+
 /* The model's length: the scale of the joints' translational rows. */
 static double length_scale(const hx_model *m)
 {
@@ -94,12 +135,23 @@ int hx_constraints_init(hx_dynamics *d, hx_message *msg)
         if (d->dof[b].kind != HX_DOF_GROUND)
             for (int c = 0; c < (d->dof[b].kind == HX_DOF_FREE ? 6 : 1); ++c)
                 d->u_body[d->dof[b].u + c] = b;
+    d->coupler_general = calloc((size_t)m->ncouplers + 1, 1);
+    if (d->coupler_general == NULL)
+        return hx_fail(msg, "out of memory");
+    d->row_values = 12;
+    for (int k = 0; k < m->ncouplers; ++k)
+        if ((d->coupler_general[k] = (unsigned char)coupler_is_general(m, k)) != 0)
+            d->row_values = 6 * HX_CONSTRAINT_ROW_BLOCKS;
     for (int k = 0; k < m->ncouplers; ++k) {
-        int body[3];
-        const int nj = coupler_joints(d, k, body);
         d->rows[k].scale = 1.0;
-        for (int i = 0; i < nj; ++i)
-            add_block(&d->rows[k], d, body[i], i);
+        if (d->coupler_general[k]) {
+            coupler_blocks(d, k);
+        } else {
+            int body[3];
+            const int nj = coupler_joints(d, k, body);
+            for (int i = 0; i < nj; ++i)
+                add_block(&d->rows[k], d, body[i], i);
+        }
         sort_blocks(&d->rows[k]);
     }
     const double L = length_scale(m);
@@ -131,13 +183,14 @@ void hx_constraints_free(hx_dynamics *d)
     free(d->removed);
     free(d->envelope_first);
     free(d->envelope_start);
+    free(d->coupler_general);
 }
 
 
 size_t hx_constraints_work_size(const hx_dynamics *d)
 {
-    const size_t n = (size_t)d->nrows, nu = (size_t)d->nu;
-    return 24 * n + n * n + 4 * n + 2 * nu + 16; /* G, W, A, phi, gamma, step, spare; x, y */
+    const size_t n = (size_t)d->nrows, nu = (size_t)d->nu, v = (size_t)d->row_values;
+    return 2 * v * n + n * n + 4 * n + 2 * nu + 16; /* G, W, A, phi, gamma, step, spare; x, y */
 }
 
 /* The work's parts (dd->constraint_work). */
@@ -147,24 +200,66 @@ typedef struct work {
 
 static work parts(const hx_dynamics *d, hx_dynamics_data *dd)
 {
-    const size_t n = (size_t)d->nrows;
+    const size_t n = (size_t)d->nrows, v = (size_t)d->row_values;
     work w;
-    w.G = dd->constraint_work, w.W = w.G + 12 * n, w.A = w.W + 12 * n, w.phi = w.A + n * n;
+    w.G = dd->constraint_work, w.W = w.G + v * n, w.A = w.W + v * n, w.phi = w.A + n * n;
     w.gamma = w.phi + n, w.step = w.gamma + n, w.x = w.step + 2 * n;
     return w;
 }
 
-/* phi, dphi/dM and the velocity term qdot^T H qdot of coupler k. */
+/* A general coupler's joints at y: their coordinates, rates, rows (12 values:
+ * I's body block, J's) and convective terms (joint_coordinate.h). */
+typedef struct coupled_joints {
+    double disp[3], rate[3], row[3][12], conv[3];
+} coupled_joints;
+
+static double block_rate(const hx_dynamics *d, int body, const double *g, const double *y)
+{
+    const hx_body_dof *dof = &d->dof[body];
+    if (dof->kind == HX_DOF_GROUND)
+        return 0.0;
+    const double *u = y + d->nq + dof->u;
+    double s = 0.0;
+    for (int c = 0; c < (dof->kind == HX_DOF_FREE ? 6 : 1); ++c)
+        s += g[c] * u[c];
+    return s;
+}
+
+static int general_joints(const hx_dynamics *d, hx_dynamics_data *dd, int k, double t,
+                          const double *y, coupled_joints *cj)
+{
+    const hx_model *m = d->m;
+    const hx_coupler *c = &m->couplers[k];
+    for (int i = 0; i < c->njoints; ++i) {
+        const hx_joint *j = &m->joints[c->joint[i]];
+        const int bi = m->markers[j->i_marker].body, bj = m->markers[j->j_marker].body;
+        memset(cj->row[i], 0, sizeof cj->row[i]);
+        if (hx_joint_coordinate_at(d, c->joint[i], c->freedom[i], y, &cj->disp[i], cj->row[i],
+                                   &cj->conv[i]) != 0)
+            return hx_dynamics_fail(dd, "Constraint_Coupler %d: joint %d turned more than %g"
+                                    " rad from where the model places it at t = %g (a coupler"
+                                    " unwraps a rotation between two bodies within that)",
+                                    c->id, j->id, HX_JOINT_COORDINATE_TURN, t);
+        cj->rate[i] = block_rate(d, bi, cj->row[i], y);
+        if (!j->reduced)
+            cj->rate[i] += block_rate(d, bj, cj->row[i] + 6, y);
+    }
+    return 0;
+}
+
+/* phi, dphi/dM and the velocity term qdot^T H qdot of coupler k (cj: a
+ * general coupler's joints, NULL for one of reduced joints). */
 static int coupler_terms(const hx_dynamics *d, hx_dynamics_data *dd, int k, double t,
-                         const double *y, double *phi, double grad[3], double *gamma)
+                         const double *y, double *phi, double grad[3], double *gamma,
+                         const coupled_joints *cj)
 {
     const hx_coupler *c = &d->m->couplers[k];
     int body[3];
     const int n = coupler_joints(d, k, body);
     double disp[3], rate[3];
     for (int i = 0; i < n; ++i) {
-        disp[i] = y[d->dof[body[i]].q];
-        rate[i] = y[d->nq + d->dof[body[i]].u];
+        disp[i] = cj != NULL ? cj->disp[i] : y[d->dof[body[i]].q];
+        rate[i] = cj != NULL ? cj->rate[i] : y[d->nq + d->dof[body[i]].u];
     }
     hx_binding *b = d->coupler_binding[k];
     if (b == NULL) {
@@ -229,26 +324,66 @@ static void joint_terms(const hx_dynamics *d, int k, const double *y, double *G,
     }
 }
 
-/* G (12 values a row), phi and, when gamma is not NULL, the right-hand sides
+/* A general coupler's row: sum_i grad_i G_i, each joint's blocks at its
+ * bodies' slots. */
+static void general_row(const hx_dynamics *d, int k, const double grad[3],
+                        const coupled_joints *cj, double *G)
+{
+    const hx_model *m = d->m;
+    const hx_coupler *c = &m->couplers[k];
+    const hx_constraint_row *r = &d->rows[k];
+    for (int i = 0; i < c->njoints; ++i) {
+        const hx_joint *j = &m->joints[c->joint[i]];
+        const int side[2] = {m->markers[j->i_marker].body, m->markers[j->j_marker].body};
+        for (int s = 0; s < (j->reduced ? 1 : 2); ++s)
+            for (int b = 0; b < r->nblocks; ++b)
+                if (r->body[b] == side[s])
+                    for (int v = 0; v < r->width[b]; ++v)
+                        G[r->slot[b] + v] += grad[i] * cj->row[i][6 * s + v];
+    }
+}
+
+/* G (d->row_values a row), phi and, when gamma is not NULL, the right-hand sides
  * of G udot = gamma. */
 static int constraint_jacobian(const hx_dynamics *d, hx_dynamics_data *dd, double t,
                                const double *y, double *G, double *phi, double *gamma)
 {
-    const int nc = d->m->ncouplers;
-    memset(G, 0, sizeof(double) * 12 * (size_t)d->nrows);
+    const int nc = d->m->ncouplers, V = d->row_values;
+    memset(G, 0, sizeof(double) * (size_t)V * (size_t)d->nrows);
     for (int k = 0; k < nc; ++k) {
         double grad[3], term = 0.0;
-        if (coupler_terms(d, dd, k, t, y, &phi[k], grad, gamma ? &term : NULL) < 0)
+        if (!d->coupler_general[k]) {
+            if (coupler_terms(d, dd, k, t, y, &phi[k], grad, gamma ? &term : NULL, NULL) < 0)
+                return -1;
+            for (int i = 0; i < d->m->couplers[k].njoints; ++i)
+                G[V * k + i] = grad[i];
+            if (gamma != NULL)
+                gamma[k] = -term; /* phi_ddot = G udot + qdot^T H qdot */
+            continue;
+        }
+        coupled_joints cj;
+        if (general_joints(d, dd, k, t, y, &cj) != 0 ||
+            coupler_terms(d, dd, k, t, y, &phi[k], grad, gamma ? &term : NULL, &cj) < 0)
             return -1;
-        for (int i = 0; i < d->m->couplers[k].njoints; ++i)
-            G[12 * k + i] = grad[i];
+        general_row(d, k, grad, &cj, G + V * k);
+        /* phi_ddot = sum grad_i (G_i udot + c_i) + qdot^T H qdot */
+        for (int i = 0; i < d->m->couplers[k].njoints && gamma != NULL; ++i)
+            term += grad[i] * cj.conv[i];
         if (gamma != NULL)
-            gamma[k] = -term; /* phi_ddot = G udot + qdot^T H qdot */
+            gamma[k] = -term;
     }
+    double joint_G[12 * HX_JOINT_MAX_EQUATIONS];
     for (int k = 0; k < d->m->njoints; ++k) {
         const int r = d->joint_row[k];
-        if (r >= 0)
+        if (r < 0)
+            continue;
+        if (V == 12) {
             joint_terms(d, k, y, G + 12 * r, phi + r, gamma ? gamma + r : NULL);
+            continue;
+        }
+        joint_terms(d, k, y, joint_G, phi + r, gamma ? gamma + r : NULL);
+        for (int e = 0; e < hx_joint_equations_count(d->m->joints[k].type); ++e)
+            memcpy(G + V * (r + e), joint_G + 12 * e, sizeof(double) * 12);
     }
     return 0;
 }
@@ -261,7 +396,7 @@ static double row_dot(const hx_dynamics *d, const double *G, int i, const double
     double s = start;
     for (int b = 0; b < r->nblocks; ++b)
         for (int c = 0; c < r->width[b]; ++c)
-            s += G[12 * i + r->slot[b] + c] * v[r->u[b] + c];
+            s += G[d->row_values * i + r->slot[b] + c] * v[r->u[b] + c];
     return s;
 }
 
@@ -274,7 +409,7 @@ static void transpose_apply(const hx_dynamics *d, const double *G, const double 
         const hx_constraint_row *r = &d->rows[i];
         for (int b = 0; b < r->nblocks; ++b)
             for (int c = 0; c < r->width[b]; ++c)
-                x[r->u[b] + c] += G[12 * i + r->slot[b] + c] * z[a];
+                x[r->u[b] + c] += G[d->row_values * i + r->slot[b] + c] * z[a];
     }
 }
 
@@ -304,7 +439,8 @@ int hx_constraints_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t, c
         const int i = d->active[a];
         const hx_constraint_row *r = &d->rows[i];
         for (int b = 0; b < r->nblocks; ++b) {
-            const double *g = w.G + 12 * i + r->slot[b], *wi = w.W + 12 * i + r->slot[b];
+            const size_t at = (size_t)d->row_values * (size_t)i + (size_t)r->slot[b];
+            const double *g = w.G + at, *wi = w.W + at;
             if (r->width[b] == 1)
                 udot[r->u[b]] += d->ucf * (1.0 / d->dof[r->body[b]].mass) * g[0] * dd->lambda[i];
             else
@@ -450,7 +586,10 @@ double hx_constraints_coupler_force(const hx_dynamics *d, hx_dynamics_data *dd, 
                                     const double *y, int coupler, int joint)
 {
     double phi, grad[3];
-    if (coupler_terms(d, dd, coupler, t, y, &phi, grad, NULL) < 0)
+    coupled_joints cj;
+    const int general = d->coupler_general[coupler];
+    if ((general && general_joints(d, dd, coupler, t, y, &cj) != 0) ||
+        coupler_terms(d, dd, coupler, t, y, &phi, grad, NULL, general ? &cj : NULL) < 0)
         return NAN;
     return grad[joint] * dd->lambda[coupler];
 }

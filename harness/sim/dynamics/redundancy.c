@@ -23,7 +23,8 @@ int hx_redundancy_find(hx_dynamics *d, hx_dynamics_data *dd, const double *y, hx
     if (n == 0)
         return 0;
     const size_t nn = (size_t)n;
-    double *G = malloc(sizeof(double) * 12 * nn), *W = malloc(sizeof(double) * 12 * nn);
+    const size_t v = (size_t)d->row_values;
+    double *G = malloc(sizeof(double) * v * nn), *W = malloc(sizeof(double) * v * nn);
     double *A = malloc(sizeof(double) * nn * nn), *phi = malloc(sizeof(double) * nn);
     double *L = calloc(nn * nn, sizeof(double));
     int status = -1;
