@@ -5,8 +5,9 @@
  * second differences, with I on ground, J on ground and both moving; two
  * gears on revolutes to a carrier that turns against their closed form; a
  * coupled pair once on reduced joints and once on general ones; the analytic
- * Jacobian against differences and BDF against DOPRI5; the couplings the
- * reader refuses, with file:line.
+ * Jacobian against differences and BDF against DOPRI5; the bundled
+ * differential whose carrier turns against its closed form; the couplings
+ * the reader refuses, with file:line.
  */
 #include <math.h>
 #include <stdio.h>
@@ -391,6 +392,48 @@ static void analytic_jacobian_and_bdf(void **state)
     sim_close(&bdf);
 }
 
+/* A body's angular velocity about world y at a path row. */
+static double spin_y(const sim *s, int row, int body)
+{
+    hx_frame f;
+    hx_bodies_frame(&s->dynamics, body, s->path.y + (size_t)row * (size_t)s->path.n, &f);
+    return f.w[1];
+}
+
+static void differential_carrier_splits_torque_equally(void **state)
+{
+    (void)state;
+    /* harness/examples/differential_carrier.xml (mm, kg, s, N: ucf 1000): the
+     * side gears' angles to the carrier p_L + p_R = 0, so w_L + w_R = 2 w_C;
+     * IL aL = ucf l, IR aR = ucf l, IC aC = ucf (tau - 2 l) (l the coupler's
+     * torque on each side gear), aL + aR = 2 aC:
+     *   l = 2 tau / IC / (1/IL + 1/IR + 4/IC); IL 1e4, IR 1.5e4, IC 4e4, tau 1000:
+     *   1/IL + 1/IR + 4/IC = 2.6667e-4, l = 0.05 / 2.6667e-4 = 187.5 N mm,
+     *   aL = 18.75, aR = 12.5, aC = 15.625 rad/s^2 (aL + aR = 31.25 = 2 aC). */
+    const double IL = 1e4, IR = 1.5e4, IC = 4e4, tau = 1000.0, ucf = 1000.0;
+    const double l = 2 * tau / IC / (1 / IL + 1 / IR + 4 / IC);
+    assert_close(l, 187.5, 1e-12, 0);
+    sim s;
+    sim_run(&s, "differential_carrier.xml", HX_METHOD_DOPRI5, 1e-10, 1.0, 0.1);
+    for (int row = 0; row < s.path.rows; ++row) {
+        const double t = s.path.t[row];
+        const double wc = spin_y(&s, row, 1), wl = spin_y(&s, row, 2), wr = spin_y(&s, row, 3);
+        assert_close(wl + wr, 2.0 * wc, 1e-12, 1e-9);
+        assert_close(wc, ucf * (tau - 2 * l) / IC * t, 1e-12, 1e-8);
+        assert_close(wl, ucf * l / IL * t, 1e-12, 1e-8);
+        assert_close(wr, ucf * l / IR * t, 1e-12, 1e-8);
+    }
+    const int last = s.path.rows - 1;
+    assert_true(s.path.t[last] > 0.99);
+    const double *y = s.path.y + (size_t)last * (size_t)s.path.n;
+    sim_evaluate(&s, 1.0, y);
+    const double left = hx_constraints_coupler_force(&s.dynamics, &s.data, 1.0, y, 0, 0);
+    const double right = hx_constraints_coupler_force(&s.dynamics, &s.data, 1.0, y, 0, 1);
+    assert_close(left, l, 1e-10, 0);
+    assert_close(right, l, 1e-10, 0);
+    sim_close(&s);
+}
+
 /* The couplings the reader refuses, each at its line. */
 static void refused_couplings(void **state)
 {
@@ -435,6 +478,7 @@ int main(void)
         cmocka_unit_test(gears_on_a_turning_carrier),
         cmocka_unit_test(reduced_and_general_pairs_agree),
         cmocka_unit_test(analytic_jacobian_and_bdf),
+        cmocka_unit_test(differential_carrier_splits_torque_equally),
         cmocka_unit_test(refused_couplings),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
