@@ -7,13 +7,15 @@
  * coupled pair once on reduced joints and once on general ones; the analytic
  * Jacobian against differences and BDF against DOPRI5; the bundled
  * differential whose carrier turns against its closed form; the couplings
- * the reader refuses, with file:line.
+ * the reader refuses, with file:line; a Motion_Joint between two moving
+ * bodies following MOTSUB's function, and the motions refused.
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/vecmath.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/joint_coordinate.h"
@@ -392,6 +394,110 @@ static void analytic_jacobian_and_bdf(void **state)
     sim_close(&bdf);
 }
 
+/* The carrier's gear A driven against the carrier by SWING (a sin(w t):
+ * tests/user_libraries/tp_routines.c) instead of the coupler: a row of the
+ * constraint system between two moving bodies, the carrier turning under
+ * its torque. */
+#define SWING_MOTION                                                                          \
+    "<Motion_Joint id=\"6\" type=\"USERSUB\" val_type=\"D\" joint_id=\"2\" motion_type=\"R\"" \
+    " usrsub_param_string=\"USER(5, 3)\" usrsub_fnc_name=\"SWING\""                          \
+    " usrsub_dll_name=\"libtp_routines.so\"/>\n"
+
+static void motion_between_moving_bodies_follows_its_function(void **state)
+{
+    (void)state;
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    const char *path = test_write_file("carrier_motion.xml", carrier_model(SWING_MOTION, 1));
+    const hx_method methods[2] = {HX_METHOD_DOPRI5, HX_METHOD_BDF};
+    for (int k = 0; k < 2; ++k) {
+        sim s;
+        sim_run(&s, path, methods[k], k == 0 ? 1e-10 : 1e-8, 2.0, 0.05);
+        assert_int_equal(s.dynamics.nmotions, 1);
+        double turned = 0.0, wide = 0.0;
+        for (int row = 0; row < s.path.rows; ++row) {
+            /* relative to the carrier: AZ of gear A's marker against the carrier's,
+             * 5 sin(3 t), past pi (the row unwraps against f): the angle in (-pi,
+             * pi] is f's, to a whole turn */
+            const double t = s.path.t[row], f = 5.0 * sin(3.0 * t);
+            double a;
+            hx_joint_coordinate_near(&s.dynamics, 1, 'R', s.path.y + (size_t)row * (size_t)s.path.n,
+                                     0.0, &a, NULL, NULL);
+            assert_close(remainder(a - f, 2.0 * M_PI), 0.0, 0, 1e-9);
+            wide = fmax(wide, fabs(f));
+            hx_frame carrier;
+            hx_bodies_frame(&s.dynamics, 1, s.path.y + (size_t)row * (size_t)s.path.n, &carrier);
+            turned = fmax(turned, fabs(carrier.w[2]));
+        }
+        assert_true(turned > 1.0); /* the carrier turned: both bodies move */
+        assert_true(wide > 4.0);
+        assert_true(s.path.t[s.path.rows - 1] > 1.99);
+        if (k == 0) {
+            const int last = s.path.rows - 1;
+            /* the accelerations hold the motion: (alpha_A - alpha_C) . z = f''(t) =
+             * -45 sin(3 t), each alpha = R udot's angular part (body axes) */
+            const double t = s.path.t[last], *y = s.path.y + (size_t)last * (size_t)s.path.n;
+            double *ydot = calloc((size_t)s.dynamics.n, sizeof(double)), alpha[2][3];
+            assert_non_null(ydot);
+            assert_int_equal(hx_dynamics_rhs(&s.dynamics, &s.data, t, y, ydot), 0);
+            for (int b = 0; b < 2; ++b) {
+                hx_frame f;
+                hx_bodies_frame(&s.dynamics, 2 - b, y, &f);
+                m3_apply(alpha[b], f.R, ydot + s.dynamics.nq + s.dynamics.dof[2 - b].u + 3);
+            }
+            assert_close(alpha[0][2] - alpha[1][2], -45.0 * sin(3.0 * t), 0, 1e-7);
+            free(ydot);
+            long outside = 0;
+            const double worst = jacobian_against_differences(
+                &s.dynamics, s.path.t[last], s.path.y + (size_t)last * (size_t)s.path.n,
+                "carrier with a motion", &outside);
+            assert_true(worst < 1e-6);
+            assert_int_equal(outside, 0);
+        }
+        sim_close(&s);
+    }
+}
+
+/* The motions the reader refuses on joints between bodies, each at its line. */
+static void refused_motions(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *name, *joint, *motion, *what;
+    } cases[] = {
+        {"motion_sphere.xml", "SPHERICAL",
+         "<Motion_Joint id=\"6\" type=\"USERSUB\" joint_id=\"2\" usrsub_param_string=\"USER(1, 1)\""
+         " usrsub_fnc_name=\"SWING\" usrsub_dll_name=\"libtp_routines.so\"/>\n",
+         "joint 2 is SPHERICAL, which has no coordinate"},
+        {"motion_cylinder.xml", "CYLINDRICAL",
+         "<Motion_Joint id=\"6\" type=\"USERSUB\" joint_id=\"2\" usrsub_param_string=\"USER(1, 1)\""
+         " usrsub_fnc_name=\"SWING\" usrsub_dll_name=\"libtp_routines.so\"/>\n",
+         "joint 2 is cylindrical: motion_type must say"},
+        {"motion_velocity.xml", "REVOLUTE",
+         "<Motion_Joint id=\"6\" type=\"USERSUB\" val_type=\"V\" joint_id=\"2\""
+         " usrsub_param_string=\"USER(1, 1)\" usrsub_fnc_name=\"SWING\""
+         " usrsub_dll_name=\"libtp_routines.so\"/>\n",
+         "val_type V on joint 2, which is not a body's only joint to ground"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        char text[4096], rest[4096];
+        snprintf(text, sizeof text, "%s", carrier_model(cases[k].motion, 0));
+        char *at = strstr(text, "type=\"REVOLUTE\" i_marker_id=\"30\"");
+        assert_non_null(at);
+        snprintf(rest, sizeof rest, "type=\"%s\" i_marker_id=\"30\"%s", cases[k].joint,
+                 at + strlen("type=\"REVOLUTE\" i_marker_id=\"30\""));
+        snprintf(at, sizeof text - (size_t)(at - text), "%s", rest);
+        hx_message msg;
+        hx_model *m = hx_model_read(test_write_file(cases[k].name, text), NULL, &msg);
+        if (m != NULL) {
+            hx_model_free(m);
+            fail_msg("%s was read; expected an error", cases[k].name);
+        }
+        char where[64];
+        snprintf(where, sizeof where, "%s:19:", cases[k].name);
+        assert_contains(msg.text, where, "Motion_Joint 6", cases[k].what);
+    }
+}
+
 /* A body's angular velocity about world y at a path row. */
 static double spin_y(const sim *s, int row, int body)
 {
@@ -480,6 +586,8 @@ int main(void)
         cmocka_unit_test(analytic_jacobian_and_bdf),
         cmocka_unit_test(differential_carrier_splits_torque_equally),
         cmocka_unit_test(refused_couplings),
+        cmocka_unit_test(motion_between_moving_bodies_follows_its_function),
+        cmocka_unit_test(refused_motions),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

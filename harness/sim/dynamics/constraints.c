@@ -27,6 +27,7 @@
 #include "sim/dynamics/joint_coordinate.h"
 #include "sim/dynamics/joint_equations.h"
 #include "sim/dynamics/redundancy.h"
+#include "sim/dynamics/routines.h"
 
 #define PROJECTION_ITERATIONS 25
 #define PHI_TOLERANCE 1e-13 /* relative to the row's scale (constraints.h) */
@@ -120,6 +121,15 @@ int hx_constraints_init(hx_dynamics *d, hx_message *msg)
         d->joint_row[k] = m->joints[k].reduced ? -1 : n;
         n += m->joints[k].reduced ? 0 : hx_joint_equations_count(m->joints[k].type);
     }
+    /* a Motion_Joint on a joint that is not reduced: a row a(q) - f(t) = 0 */
+    d->motion_first = n, d->nmotions = 0;
+    d->motion_routine = malloc(sizeof(int) * ((size_t)m->nroutines + 1));
+    if (d->motion_routine == NULL)
+        return hx_fail(msg, "out of memory");
+    for (int k = 0; k < m->nroutines; ++k)
+        if (m->routines[k].kind == HX_ROUTINE_MOTION && !m->joints[m->routines[k].joint].reduced)
+            d->motion_routine[d->nmotions++] = k;
+    n += d->nmotions;
     d->nrows = n;
     d->rows = calloc((size_t)n + 1, sizeof *d->rows);
     d->u_body = malloc(sizeof(int) * ((size_t)d->nu + 1));
@@ -171,6 +181,15 @@ int hx_constraints_init(hx_dynamics *d, hx_message *msg)
             if (hx_joint_equation_is_length(j->type, e))
                 d->rows[d->joint_row[k] + e].scale = L;
     }
+    for (int k = 0; k < d->nmotions; ++k) {
+        const hx_routine *rt = &m->routines[d->motion_routine[k]];
+        const hx_joint *j = &m->joints[rt->joint];
+        hx_constraint_row *r = &d->rows[d->motion_first + k];
+        add_block(r, d, m->markers[j->i_marker].body, 0);
+        add_block(r, d, m->markers[j->j_marker].body, 6);
+        sort_blocks(r);
+        r->scale = rt->motion_type == 'T' ? L : 1.0;
+    }
     return 0;
 }
 
@@ -184,6 +203,7 @@ void hx_constraints_free(hx_dynamics *d)
     free(d->envelope_first);
     free(d->envelope_start);
     free(d->coupler_general);
+    free(d->motion_routine);
 }
 
 
@@ -324,6 +344,34 @@ static void joint_terms(const hx_dynamics *d, int k, const double *y, double *G,
     }
 }
 
+/* Motion k's row (docs/interface.md §7.14): phi = a(q) - f(t), G the joint
+ * coordinate's, and G u_dot = f''(t) - c, MOTSUB's iord 0 and 2 at t (the
+ * rotation unwrapped against f). */
+static int motion_row(const hx_dynamics *d, hx_dynamics_data *dd, int k, double t,
+                      const double *y, double *phi, double G[12], double *gamma)
+{
+    const int routine = d->motion_routine[k];
+    const hx_routine *rt = &d->m->routines[routine];
+    double f, accel = 0.0, value, c;
+    dd->frames.time = t;
+    if (hx_routines_motion(d, dd, routine, 0, &f) != 0 ||
+        (gamma != NULL && hx_routines_motion(d, dd, routine, 2, &accel) != 0))
+        return -1;
+    memset(G, 0, sizeof(double) * 12);
+    hx_joint_coordinate_near(d, rt->joint, rt->motion_type, y, f, &value, G, &c);
+    *phi = value - f;
+    if (gamma != NULL)
+        *gamma = accel - c;
+    return 0;
+}
+
+/* What G u is held to at row i: a motion's rate f'(t), else 0 (not called). */
+static int row_rate(const hx_dynamics *d, hx_dynamics_data *dd, int i, double t, double *rate)
+{
+    dd->frames.time = t;
+    return hx_routines_motion(d, dd, d->motion_routine[i - d->motion_first], 1, rate);
+}
+
 /* A general coupler's row: sum_i grad_i G_i, each joint's blocks at its
  * bodies' slots. */
 static void general_row(const hx_dynamics *d, int k, const double grad[3],
@@ -384,6 +432,12 @@ static int constraint_jacobian(const hx_dynamics *d, hx_dynamics_data *dd, doubl
         joint_terms(d, k, y, joint_G, phi + r, gamma ? gamma + r : NULL);
         for (int e = 0; e < hx_joint_equations_count(d->m->joints[k].type); ++e)
             memcpy(G + V * (r + e), joint_G + 12 * e, sizeof(double) * 12);
+    }
+    for (int k = 0; k < d->nmotions; ++k) {
+        const int r = d->motion_first + k;
+        if (motion_row(d, dd, k, t, y, phi + r, joint_G, gamma ? gamma + r : NULL) != 0)
+            return -1;
+        memcpy(G + V * r, joint_G, sizeof(double) * 12);
     }
     return 0;
 }
@@ -539,6 +593,13 @@ int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t,
     const int formed = hx_constraint_matrix_form(d, w.G, w.W, w.A);
     for (int a = 0; a < n; ++a)
         w.step[a] = row_dot(d, w.G, d->active[a], y + d->nq, 0.0);
+    for (int a = 0; a < n; ++a) /* a motion's row holds G u = f'(t) */
+        if (d->active[a] >= d->motion_first) {
+            double rate;
+            if (row_rate(d, dd, d->active[a], t, &rate) != 0)
+                return -1;
+            w.step[a] -= rate;
+        }
     if (formed != 0 || hx_constraint_matrix_solve(d, w.A, w.step) != 0)
         return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
     transpose_apply(d, w.G, w.step, w.x);
@@ -571,8 +632,12 @@ int hx_constraints_residuals(const hx_dynamics *d, hx_dynamics_data *dd, double 
     if (constraint_jacobian(d, dd, t, y, w.G, w.phi, NULL) != 0)
         return -1;
     *phi_max = hx_max_abs(w.phi, d->nrows);
-    for (int i = 0; i < d->nrows; ++i)
-        *phidot_max = fmax(*phidot_max, fabs(row_dot(d, w.G, i, y + d->nq, 0.0)));
+    for (int i = 0; i < d->nrows; ++i) {
+        double rate = 0.0;
+        if (i >= d->motion_first && row_rate(d, dd, i, t, &rate) != 0)
+            return -1;
+        *phidot_max = fmax(*phidot_max, fabs(row_dot(d, w.G, i, y + d->nq, 0.0) - rate));
+    }
     return 0;
 }
 

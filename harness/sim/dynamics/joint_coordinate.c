@@ -128,8 +128,9 @@ static void body_frame(const hx_dynamics *d, int b, const double *y, hx_frame *f
     hx_bodies_frame(d, b, y, f);
 }
 
-int hx_joint_coordinate_at(const hx_dynamics *d, int joint, char freedom, const double *y,
-                           double *value, double G[12], double *c)
+/* The coordinate as it comes (a rotation in (-pi, pi]); 1 when it is reduced. */
+static int raw_coordinate(const hx_dynamics *d, int joint, char freedom, const double *y,
+                          double *value, double G[12], double *c)
 {
     const hx_model *m = d->m;
     const hx_joint *j = &m->joints[joint];
@@ -141,7 +142,7 @@ int hx_joint_coordinate_at(const hx_dynamics *d, int joint, char freedom, const 
             G[0] = 1.0;
         if (c != NULL)
             *c = 0.0;
-        return 0;
+        return 1;
     }
     hx_frame fi, fj;
     body_frame(d, mi->body, y, &fi);
@@ -155,8 +156,25 @@ int hx_joint_coordinate_at(const hx_dynamics *d, int joint, char freedom, const 
         m3_tapply(body, fj.R, G + 9);
         v3_copy(G + 9, body);
     }
-    if (freedom != 'R')
+    return 0;
+}
+
+int hx_joint_coordinate_near(const hx_dynamics *d, int joint, char freedom, const double *y,
+                             double near, double *value, double G[12], double *c)
+{
+    if (raw_coordinate(d, joint, freedom, y, value, G, c) == 0 && freedom == 'R')
+        *value = near + remainder(*value - near, TWO_PI);
+    return 0;
+}
+
+int hx_joint_coordinate_at(const hx_dynamics *d, int joint, char freedom, const double *y,
+                           double *value, double G[12], double *c)
+{
+    if (raw_coordinate(d, joint, freedom, y, value, G, c) != 0 || freedom != 'R')
         return 0;
+    const hx_model *m = d->m;
+    const hx_joint *j = &m->joints[joint];
+    const hx_marker *mi = &m->markers[j->i_marker], *mj = &m->markers[j->j_marker];
     /* unwrapped against the angle where the model places the joint */
     double xi[3], xj[3], yj[3];
     column(xi, mi->R0, 0), column(xj, mj->R0, 0), column(yj, mj->R0, 1);

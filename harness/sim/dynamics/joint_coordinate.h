@@ -40,5 +40,9 @@ void hx_joint_coordinate_sides(char freedom, const hx_joint_side *i, const hx_jo
  * when a rotation turned more than HX_JOINT_COORDINATE_TURN from there. */
 int hx_joint_coordinate_at(const hx_dynamics *d, int joint, char freedom, const double *y,
                            double *value, double G[12], double *c);
+/* The same with a rotation unwrapped against `near` (a motion's value: the
+ * coordinate follows it), without a limit; returns 0. */
+int hx_joint_coordinate_near(const hx_dynamics *d, int joint, char freedom, const double *y,
+                             double near, double *value, double G[12], double *c);
 
 #endif

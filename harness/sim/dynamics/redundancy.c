@@ -72,6 +72,11 @@ const char *hx_redundancy_name_row(const hx_dynamics *d, int row, char *text, si
         snprintf(text, size, "COUPLER/%d", m->couplers[row].id);
         return text;
     }
+    if (row >= d->motion_first && row < d->motion_first + d->nmotions) {
+        snprintf(text, size, "MOTION/%d",
+                 m->routines[d->motion_routine[row - d->motion_first]].id);
+        return text;
+    }
     for (int k = m->njoints - 1; k >= 0; --k)
         if (d->joint_row[k] >= 0 && d->joint_row[k] <= row) {
             const hx_joint *j = &m->joints[k];
