@@ -76,12 +76,14 @@ static void weights(const hx_dynamics *d, const double *G, double *W)
 static double pair_product(const hx_dynamics *d, const double *G, const double *W, int i, int j)
 {
     const hx_constraint_row *ri = &d->rows[i], *rj = &d->rows[j];
+    const double *Wi = W + (size_t)d->row_values * (size_t)i;
+    const double *Gj = G + (size_t)d->row_values * (size_t)j;
     double s = 0.0;
     for (int a = 0; a < ri->nblocks; ++a)
         for (int b = 0; b < rj->nblocks; ++b)
             if (ri->u[a] == rj->u[b])
                 for (int c = 0; c < ri->width[a]; ++c)
-                    s += W[d->row_values * i + ri->slot[a] + c] * G[d->row_values * j + rj->slot[b] + c];
+                    s += Wi[ri->slot[a] + c] * Gj[rj->slot[b] + c];
     return s;
 }
 

@@ -447,10 +447,11 @@ static double row_dot(const hx_dynamics *d, const double *G, int i, const double
                       double start)
 {
     const hx_constraint_row *r = &d->rows[i];
+    const double *Gi = G + (size_t)d->row_values * (size_t)i;
     double s = start;
     for (int b = 0; b < r->nblocks; ++b)
         for (int c = 0; c < r->width[b]; ++c)
-            s += G[d->row_values * i + r->slot[b] + c] * v[r->u[b] + c];
+            s += Gi[r->slot[b] + c] * v[r->u[b] + c];
     return s;
 }
 
@@ -461,9 +462,10 @@ static void transpose_apply(const hx_dynamics *d, const double *G, const double 
     for (int a = 0; a < d->nactive; ++a) {
         const int i = d->active[a];
         const hx_constraint_row *r = &d->rows[i];
+        const double *Gi = G + (size_t)d->row_values * (size_t)i;
         for (int b = 0; b < r->nblocks; ++b)
             for (int c = 0; c < r->width[b]; ++c)
-                x[r->u[b] + c] += G[d->row_values * i + r->slot[b] + c] * z[a];
+                x[r->u[b] + c] += Gi[r->slot[b] + c] * z[a];
     }
 }
 
