@@ -82,6 +82,8 @@ typedef struct hx_coupler {
     int id;
     int njoints;
     int joint[3];             /* indices */
+    char freedom[3];          /* each joint's coordinate: 'R' its rotation, 'T' its
+                               * translation (docs/interface.md §2) */
     double coefficients[3];   /* built-in form */
     int is_user;              /* 1: user subroutine form */
     hx_user_call user;

@@ -273,19 +273,32 @@ static int resolve_couplers(hx_draft *r)
                      c->id, i + 1, refs->ids[i]);
                 return -1;
             }
-            if (!m->joints[c->joint[i]].reduced) {
-                hx_draft_fail(r, c->line, "Constraint_Coupler %d: joint %d is not a body's only"
-                              " joint to ground: the harness couples the coordinates of such"
-                              " joints only", c->id, refs->ids[i]);
+            /* any joint with a coordinate, between any bodies (docs/interface.md §2) */
+            const hx_joint *joint = &m->joints[c->joint[i]];
+            const char own = joint->type == HX_JOINT_REVOLUTE        ? 'R'
+                             : joint->type == HX_JOINT_TRANSLATIONAL ? 'T'
+                                                                     : 0;
+            if (joint->type == HX_JOINT_CYLINDRICAL && refs->freedom[i] == 0) {
+                hx_draft_fail(r, c->line, "Constraint_Coupler %d: joint %d is cylindrical:"
+                              " freedom_%d must say which of its coordinates is coupled"
+                              " (\"R\" its rotation, \"T\" its translation)", c->id,
+                              refs->ids[i], i + 1);
                 return -1;
             }
-            const char expected = m->joints[c->joint[i]].type == HX_JOINT_REVOLUTE ? 'R' : 'T';
-            if (refs->freedom[i] != 0 && refs->freedom[i] != expected) {
+            if (joint->type != HX_JOINT_CYLINDRICAL && own == 0) {
+                hx_draft_fail(r, c->line, "Constraint_Coupler %d: joint %d is %s, which has no"
+                              " coordinate to couple (REVOLUTE, TRANSLATIONAL or CYLINDRICAL"
+                              " joints only)", c->id, refs->ids[i],
+                              hx_joint_type_name(joint->type));
+                return -1;
+            }
+            if (own != 0 && refs->freedom[i] != 0 && refs->freedom[i] != own) {
                 hx_draft_fail(r, c->line, "Constraint_Coupler %d: freedom_%d is \"%c\" but joint %d is %s",
                      c->id, i + 1, refs->freedom[i], refs->ids[i],
-                     expected == 'R' ? "revolute (\"R\")" : "translational (\"T\")");
+                     own == 'R' ? "revolute (\"R\")" : "translational (\"T\")");
                 return -1;
             }
+            c->freedom[i] = own != 0 ? own : refs->freedom[i];
             for (int j = 0; j < i; ++j)
                 if (c->joint[j] == c->joint[i]) {
                     hx_draft_fail(r, c->line, "Constraint_Coupler %d: joint %d is coupled twice", c->id,

@@ -302,12 +302,32 @@ int hx_draft_resolve_routines(hx_draft *d)
                           " harness reads (REVOLUTE or TRANSLATIONAL)", r->id, r->joint_id);
             return -1;
         }
-        if (!m->joints[joint].reduced) {
-            hx_draft_fail(d, r->line, "Motion_Joint %d: joint %d is not a body's only joint to"
-                          " ground: the harness drives such joints only", r->id, r->joint_id);
+        /* a body's one joint to ground moves the body; any other revolute, translational
+         * or cylindrical joint is a row of the constraint system, driven in displacement
+         * (docs/interface.md §7.14) */
+        const enum hx_joint_type type = m->joints[joint].type;
+        if (!m->joints[joint].reduced && type != HX_JOINT_REVOLUTE &&
+            type != HX_JOINT_TRANSLATIONAL && type != HX_JOINT_CYLINDRICAL) {
+            hx_draft_fail(d, r->line, "Motion_Joint %d: joint %d is %s, which has no coordinate"
+                          " to drive (REVOLUTE, TRANSLATIONAL or CYLINDRICAL joints only)",
+                          r->id, r->joint_id, hx_joint_type_name(type));
             return -1;
         }
-        const char freedom = m->joints[joint].type == HX_JOINT_TRANSLATIONAL ? 'T' : 'R';
+        if (type == HX_JOINT_CYLINDRICAL && r->motion_type == 0) {
+            hx_draft_fail(d, r->line, "Motion_Joint %d: joint %d is cylindrical: motion_type"
+                          " must say which of its coordinates is driven (R its rotation, T its"
+                          " translation)", r->id, r->joint_id);
+            return -1;
+        }
+        if (!m->joints[joint].reduced && r->val_type != 'D') {
+            hx_draft_fail(d, r->line, "Motion_Joint %d: val_type %c on joint %d, which is not a"
+                          " body's only joint to ground: the harness drives such a joint in"
+                          " displacement (val_type D) only", r->id, r->val_type, r->joint_id);
+            return -1;
+        }
+        const char freedom = type == HX_JOINT_CYLINDRICAL ? r->motion_type
+                             : type == HX_JOINT_TRANSLATIONAL ? 'T'
+                                                              : 'R';
         if (r->motion_type != 0 && r->motion_type != freedom) {
             hx_draft_fail(d, r->line, "Motion_Joint %d: motion_type %c on joint %d, a %s joint",
                           r->id, r->motion_type, r->joint_id,
@@ -322,6 +342,7 @@ int hx_draft_resolve_routines(hx_draft *d)
                 return -1;
             }
         r->joint = joint;
+        r->motion_type = freedom;
     }
     return 0;
 }

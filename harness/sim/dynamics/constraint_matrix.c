@@ -65,8 +65,10 @@ static void weights(const hx_dynamics *d, const double *G, double *W)
     for (int a = 0; a < d->nactive; ++a) {
         const int i = d->active[a];
         const hx_constraint_row *r = &d->rows[i];
-        for (int b = 0; b < r->nblocks; ++b)
-            hx_constraint_matrix_inverse_mass(d, r->body[b], G + 12 * i + r->slot[b], W + 12 * i + r->slot[b]);
+        for (int b = 0; b < r->nblocks; ++b) {
+            const size_t at = (size_t)d->row_values * (size_t)i + (size_t)r->slot[b];
+            hx_constraint_matrix_inverse_mass(d, r->body[b], G + at, W + at);
+        }
     }
 }
 
@@ -74,12 +76,14 @@ static void weights(const hx_dynamics *d, const double *G, double *W)
 static double pair_product(const hx_dynamics *d, const double *G, const double *W, int i, int j)
 {
     const hx_constraint_row *ri = &d->rows[i], *rj = &d->rows[j];
+    const double *Wi = W + (size_t)d->row_values * (size_t)i;
+    const double *Gj = G + (size_t)d->row_values * (size_t)j;
     double s = 0.0;
     for (int a = 0; a < ri->nblocks; ++a)
         for (int b = 0; b < rj->nblocks; ++b)
             if (ri->u[a] == rj->u[b])
                 for (int c = 0; c < ri->width[a]; ++c)
-                    s += W[12 * i + ri->slot[a] + c] * G[12 * j + rj->slot[b] + c];
+                    s += Wi[ri->slot[a] + c] * Gj[rj->slot[b] + c];
     return s;
 }
 

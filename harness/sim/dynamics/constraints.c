@@ -4,22 +4,25 @@
  * the joints' equations (joint_equations.c) in one G, the multipliers from
  * G M^-1 G^T lambda = rhs, and after a step positions then velocities
  * projected back onto phi = 0 and G u = 0 (docs/architecture.md, the
- * constraint system). Each row of G touches at most 3 blocks of velocities (a
- * coupler's three joints, a joint's two free bodies): it keeps their 12
- * values, and M is block-diagonal per body, so M^-1 G^T has the same blocks.
- * The order of every sum is that of the dense products over u it replaces,
- * so the couplers' runs are unchanged.
+ * constraint system). Each row of G touches a few blocks of velocities (a
+ * coupler's joints, a joint's two free bodies): it keeps their values, 12 a
+ * row (36 when a coupler spans joints between bodies: its joints' I and J
+ * bodies, up to 6), and M is block-diagonal per body, so M^-1 G^T has the
+ * same blocks. The order of every sum is that of the dense products over u
+ * it replaces, so the couplers' runs are unchanged; a coupler of reduced
+ * joints alone keeps its former arithmetic (one value a joint, no
+ * convective term).
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "host/invoke.h"
 #include "base/linalg.h"
 #include "base/vecmath.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraint_matrix.h"
 #include "sim/dynamics/constraints.h"
+#include "sim/dynamics/coordinate_rows.h"
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/joint_equations.h"
 #include "sim/dynamics/redundancy.h"
@@ -59,6 +62,43 @@ static void add_block(hx_constraint_row *r, const hx_dynamics *d, int body, int 
     r->width[n] = dof->kind == HX_DOF_FREE ? 6 : 1;
 }
 
+/* A coupler's block of a body: its slot, the body added at *next when new. */
+static int coupler_slot(hx_constraint_row *r, const hx_dynamics *d, int body, int *next)
+{
+    for (int b = 0; b < r->nblocks; ++b)
+        if (r->body[b] == body)
+            return r->slot[b];
+    const int slot = *next;
+    add_block(r, d, body, slot);
+    *next += d->dof[body].kind == HX_DOF_FREE ? 6 : 1;
+    return slot;
+}
+
+/* Whether coupler k couples a joint that is not reduced. */
+static int coupler_is_general(const hx_model *m, int k)
+{
+    for (int i = 0; i < m->couplers[k].njoints; ++i)
+        if (!m->joints[m->couplers[k].joint[i]].reduced)
+            return 1;
+    return 0;
+}
+
+/* A general coupler's blocks: each joint's I and J bodies (a reduced joint's
+ * body alone), each body once. */
+static void coupler_blocks(hx_dynamics *d, int k)
+{
+    const hx_model *m = d->m;
+    const hx_coupler *c = &m->couplers[k];
+    hx_constraint_row *r = &d->rows[k];
+    int next = 0;
+    for (int i = 0; i < c->njoints; ++i) {
+        const hx_joint *j = &m->joints[c->joint[i]];
+        coupler_slot(r, d, m->markers[j->i_marker].body, &next);
+        if (!j->reduced)
+            coupler_slot(r, d, m->markers[j->j_marker].body, &next);
+    }
+}
+
 /* The model's length: the scale of the joints' translational rows. */
 static double length_scale(const hx_model *m)
 {
@@ -79,6 +119,15 @@ int hx_constraints_init(hx_dynamics *d, hx_message *msg)
         d->joint_row[k] = m->joints[k].reduced ? -1 : n;
         n += m->joints[k].reduced ? 0 : hx_joint_equations_count(m->joints[k].type);
     }
+    /* a Motion_Joint on a joint that is not reduced: a row a(q) - f(t) = 0 */
+    d->motion_first = n, d->nmotions = 0;
+    d->motion_routine = malloc(sizeof(int) * ((size_t)m->nroutines + 1));
+    if (d->motion_routine == NULL)
+        return hx_fail(msg, "out of memory");
+    for (int k = 0; k < m->nroutines; ++k)
+        if (m->routines[k].kind == HX_ROUTINE_MOTION && !m->joints[m->routines[k].joint].reduced)
+            d->motion_routine[d->nmotions++] = k;
+    n += d->nmotions;
     d->nrows = n;
     d->rows = calloc((size_t)n + 1, sizeof *d->rows);
     d->u_body = malloc(sizeof(int) * ((size_t)d->nu + 1));
@@ -94,12 +143,23 @@ int hx_constraints_init(hx_dynamics *d, hx_message *msg)
         if (d->dof[b].kind != HX_DOF_GROUND)
             for (int c = 0; c < (d->dof[b].kind == HX_DOF_FREE ? 6 : 1); ++c)
                 d->u_body[d->dof[b].u + c] = b;
+    d->coupler_general = calloc((size_t)m->ncouplers + 1, 1);
+    if (d->coupler_general == NULL)
+        return hx_fail(msg, "out of memory");
+    d->row_values = 12;
+    for (int k = 0; k < m->ncouplers; ++k)
+        if ((d->coupler_general[k] = (unsigned char)coupler_is_general(m, k)) != 0)
+            d->row_values = 6 * HX_CONSTRAINT_ROW_BLOCKS;
     for (int k = 0; k < m->ncouplers; ++k) {
-        int body[3];
-        const int nj = coupler_joints(d, k, body);
         d->rows[k].scale = 1.0;
-        for (int i = 0; i < nj; ++i)
-            add_block(&d->rows[k], d, body[i], i);
+        if (d->coupler_general[k]) {
+            coupler_blocks(d, k);
+        } else {
+            int body[3];
+            const int nj = coupler_joints(d, k, body);
+            for (int i = 0; i < nj; ++i)
+                add_block(&d->rows[k], d, body[i], i);
+        }
         sort_blocks(&d->rows[k]);
     }
     const double L = length_scale(m);
@@ -119,6 +179,15 @@ int hx_constraints_init(hx_dynamics *d, hx_message *msg)
             if (hx_joint_equation_is_length(j->type, e))
                 d->rows[d->joint_row[k] + e].scale = L;
     }
+    for (int k = 0; k < d->nmotions; ++k) {
+        const hx_routine *rt = &m->routines[d->motion_routine[k]];
+        const hx_joint *j = &m->joints[rt->joint];
+        hx_constraint_row *r = &d->rows[d->motion_first + k];
+        add_block(r, d, m->markers[j->i_marker].body, 0);
+        add_block(r, d, m->markers[j->j_marker].body, 6);
+        sort_blocks(r);
+        r->scale = rt->motion_type == 'T' ? L : 1.0;
+    }
     return 0;
 }
 
@@ -131,13 +200,15 @@ void hx_constraints_free(hx_dynamics *d)
     free(d->removed);
     free(d->envelope_first);
     free(d->envelope_start);
+    free(d->coupler_general);
+    free(d->motion_routine);
 }
 
 
 size_t hx_constraints_work_size(const hx_dynamics *d)
 {
-    const size_t n = (size_t)d->nrows, nu = (size_t)d->nu;
-    return 24 * n + n * n + 4 * n + 2 * nu + 16; /* G, W, A, phi, gamma, step, spare; x, y */
+    const size_t n = (size_t)d->nrows, nu = (size_t)d->nu, v = (size_t)d->row_values;
+    return 2 * v * n + n * n + 4 * n + 2 * nu + 16; /* G, W, A, phi, gamma, step, spare; x, y */
 }
 
 /* The work's parts (dd->constraint_work). */
@@ -147,53 +218,11 @@ typedef struct work {
 
 static work parts(const hx_dynamics *d, hx_dynamics_data *dd)
 {
-    const size_t n = (size_t)d->nrows;
+    const size_t n = (size_t)d->nrows, v = (size_t)d->row_values;
     work w;
-    w.G = dd->constraint_work, w.W = w.G + 12 * n, w.A = w.W + 12 * n, w.phi = w.A + n * n;
+    w.G = dd->constraint_work, w.W = w.G + v * n, w.A = w.W + v * n, w.phi = w.A + n * n;
     w.gamma = w.phi + n, w.step = w.gamma + n, w.x = w.step + 2 * n;
     return w;
-}
-
-/* phi, dphi/dM and the velocity term qdot^T H qdot of coupler k. */
-static int coupler_terms(const hx_dynamics *d, hx_dynamics_data *dd, int k, double t,
-                         const double *y, double *phi, double grad[3], double *gamma)
-{
-    const hx_coupler *c = &d->m->couplers[k];
-    int body[3];
-    const int n = coupler_joints(d, k, body);
-    double disp[3], rate[3];
-    for (int i = 0; i < n; ++i) {
-        disp[i] = y[d->dof[body[i]].q];
-        rate[i] = y[d->nq + d->dof[body[i]].u];
-    }
-    hx_binding *b = d->coupler_binding[k];
-    if (b == NULL) {
-        *phi = 0.0;
-        for (int i = 0; i < n; ++i) {
-            *phi += c->coefficients[i] * disp[i];
-            grad[i] = c->coefficients[i];
-        }
-        if (gamma != NULL)
-            *gamma = 0.0;
-        return n;
-    }
-    double hess[9] = {0};
-    dd->frames.time = t; /* couplers get their state in disp: only the time is bound */
-    hx_invoke_coupler(b, 0, &dd->frames, disp, n, 0, phi, NULL);
-    hx_invoke_coupler(b, 1, &dd->frames, disp, n, 0, grad, NULL);
-    if (gamma != NULL)
-        hx_invoke_coupler(b, 2, &dd->frames, disp, n, 0, hess, NULL);
-    if (hx_dynamics_check_call(d, dd, b, phi, 1, "value", t) != 0 ||
-        hx_dynamics_check_call(d, dd, b, grad, n, "value", t) != 0 ||
-        hx_dynamics_check_call(d, dd, b, hess, n * n, "value", t) != 0)
-        return -1;
-    if (gamma != NULL) {
-        *gamma = 0.0;
-        for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j)
-                *gamma += rate[i] * hess[i + n * j] * rate[j];
-    }
-    return n;
 }
 
 /* A body's frame at y; the ground's from the model. */
@@ -231,26 +260,36 @@ static void joint_terms(const hx_dynamics *d, int k, const double *y, double *G,
     }
 }
 
-/* G (12 values a row), phi and, when gamma is not NULL, the right-hand sides
+/* G (d->row_values a row), phi and, when gamma is not NULL, the right-hand sides
  * of G udot = gamma. */
 static int constraint_jacobian(const hx_dynamics *d, hx_dynamics_data *dd, double t,
                                const double *y, double *G, double *phi, double *gamma)
 {
-    const int nc = d->m->ncouplers;
-    memset(G, 0, sizeof(double) * 12 * (size_t)d->nrows);
+    const int nc = d->m->ncouplers, V = d->row_values;
+    memset(G, 0, sizeof(double) * (size_t)V * (size_t)d->nrows);
     for (int k = 0; k < nc; ++k) {
-        double grad[3], term = 0.0;
-        if (coupler_terms(d, dd, k, t, y, &phi[k], grad, gamma ? &term : NULL) < 0)
+        if (hx_coordinate_rows_coupler(d, dd, k, t, y, &phi[k], G + V * k,
+                                       gamma ? &gamma[k] : NULL) != 0)
             return -1;
-        for (int i = 0; i < d->m->couplers[k].njoints; ++i)
-            G[12 * k + i] = grad[i];
-        if (gamma != NULL)
-            gamma[k] = -term; /* phi_ddot = G udot + qdot^T H qdot */
     }
+    double joint_G[12 * HX_JOINT_MAX_EQUATIONS];
     for (int k = 0; k < d->m->njoints; ++k) {
         const int r = d->joint_row[k];
-        if (r >= 0)
+        if (r < 0)
+            continue;
+        if (V == 12) {
             joint_terms(d, k, y, G + 12 * r, phi + r, gamma ? gamma + r : NULL);
+            continue;
+        }
+        joint_terms(d, k, y, joint_G, phi + r, gamma ? gamma + r : NULL);
+        for (int e = 0; e < hx_joint_equations_count(d->m->joints[k].type); ++e)
+            memcpy(G + V * (r + e), joint_G + 12 * e, sizeof(double) * 12);
+    }
+    for (int k = 0; k < d->nmotions; ++k) {
+        const int r = d->motion_first + k;
+        if (hx_coordinate_rows_motion(d, dd, k, t, y, phi + r, joint_G, gamma ? gamma + r : NULL) != 0)
+            return -1;
+        memcpy(G + V * r, joint_G, sizeof(double) * 12);
     }
     return 0;
 }
@@ -260,10 +299,11 @@ static double row_dot(const hx_dynamics *d, const double *G, int i, const double
                       double start)
 {
     const hx_constraint_row *r = &d->rows[i];
+    const double *Gi = G + (size_t)d->row_values * (size_t)i;
     double s = start;
     for (int b = 0; b < r->nblocks; ++b)
         for (int c = 0; c < r->width[b]; ++c)
-            s += G[12 * i + r->slot[b] + c] * v[r->u[b] + c];
+            s += Gi[r->slot[b] + c] * v[r->u[b] + c];
     return s;
 }
 
@@ -274,9 +314,10 @@ static void transpose_apply(const hx_dynamics *d, const double *G, const double 
     for (int a = 0; a < d->nactive; ++a) {
         const int i = d->active[a];
         const hx_constraint_row *r = &d->rows[i];
+        const double *Gi = G + (size_t)d->row_values * (size_t)i;
         for (int b = 0; b < r->nblocks; ++b)
             for (int c = 0; c < r->width[b]; ++c)
-                x[r->u[b] + c] += G[12 * i + r->slot[b] + c] * z[a];
+                x[r->u[b] + c] += Gi[r->slot[b] + c] * z[a];
     }
 }
 
@@ -306,7 +347,8 @@ int hx_constraints_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t, c
         const int i = d->active[a];
         const hx_constraint_row *r = &d->rows[i];
         for (int b = 0; b < r->nblocks; ++b) {
-            const double *g = w.G + 12 * i + r->slot[b], *wi = w.W + 12 * i + r->slot[b];
+            const size_t at = (size_t)d->row_values * (size_t)i + (size_t)r->slot[b];
+            const double *g = w.G + at, *wi = w.W + at;
             if (r->width[b] == 1)
                 udot[r->u[b]] += d->ucf * (1.0 / d->dof[r->body[b]].mass) * g[0] * dd->lambda[i];
             else
@@ -405,6 +447,13 @@ int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t,
     const int formed = hx_constraint_matrix_form(d, w.G, w.W, w.A);
     for (int a = 0; a < n; ++a)
         w.step[a] = row_dot(d, w.G, d->active[a], y + d->nq, 0.0);
+    for (int a = 0; a < n; ++a) /* a motion's row holds G u = f'(t) */
+        if (d->active[a] >= d->motion_first) {
+            double rate;
+            if (hx_coordinate_rows_rate(d, dd, d->active[a], t, &rate) != 0)
+                return -1;
+            w.step[a] -= rate;
+        }
     if (formed != 0 || hx_constraint_matrix_solve(d, w.A, w.step) != 0)
         return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
     transpose_apply(d, w.G, w.step, w.x);
@@ -437,8 +486,12 @@ int hx_constraints_residuals(const hx_dynamics *d, hx_dynamics_data *dd, double 
     if (constraint_jacobian(d, dd, t, y, w.G, w.phi, NULL) != 0)
         return -1;
     *phi_max = hx_max_abs(w.phi, d->nrows);
-    for (int i = 0; i < d->nrows; ++i)
-        *phidot_max = fmax(*phidot_max, fabs(row_dot(d, w.G, i, y + d->nq, 0.0)));
+    for (int i = 0; i < d->nrows; ++i) {
+        double rate = 0.0;
+        if (i >= d->motion_first && hx_coordinate_rows_rate(d, dd, i, t, &rate) != 0)
+            return -1;
+        *phidot_max = fmax(*phidot_max, fabs(row_dot(d, w.G, i, y + d->nq, 0.0) - rate));
+    }
     return 0;
 }
 
@@ -451,10 +504,7 @@ int hx_constraints_rows(const hx_dynamics *d, hx_dynamics_data *dd, double t, co
 double hx_constraints_coupler_force(const hx_dynamics *d, hx_dynamics_data *dd, double t,
                                     const double *y, int coupler, int joint)
 {
-    double phi, grad[3];
-    if (coupler_terms(d, dd, coupler, t, y, &phi, grad, NULL) < 0)
-        return NAN;
-    return grad[joint] * dd->lambda[coupler];
+    return hx_coordinate_rows_force(d, dd, t, y, coupler, joint);
 }
 
 int hx_constraints_coupled(const hx_dynamics *d, int *index)

@@ -1,7 +1,8 @@
 /*
  * The constraint system: the couplers (one Lagrange multiplier each, with
  * COUSUB/COUXX for the constraint and its Jacobian and COUXX2 for the
- * velocity-squared term) and the joints between free bodies (their equations
+ * velocity-squared term, on the coordinates of joints between any bodies:
+ * joint_coordinate.h) and the joints between free bodies (their equations
  * in joint_equations.h) in one G, rows couplers first then joint by joint;
  * after a step, positions and velocities are projected back onto phi = 0 and
  * G u = 0 (docs/architecture.md, the constraint system).
@@ -17,7 +18,7 @@ void hx_constraints_free(hx_dynamics *d);
 /* The doubles of dd->constraint_work. */
 size_t hx_constraints_work_size(const hx_dynamics *d);
 
-/* phi, G (12 values a row: the blocks of d->rows[i] at their slots; a
+/* phi, G (d->row_values a row: the blocks of d->rows[i] at their slots; a
  * free body's omega in body axes) and gamma (G udot = gamma; may be NULL)
  * at a state: for the tests. 0 or -1 (dd->message). */
 int hx_constraints_rows(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,

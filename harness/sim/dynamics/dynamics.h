@@ -51,10 +51,13 @@ typedef struct hx_body_dof {
 
 /* One row of the constraint system G (constraints.c): the blocks of
  * velocities it touches, in ascending u, and where each block's values sit
- * among the row's 12. */
+ * among the row's values (hx_dynamics.row_values: 12, or 36 when a coupler
+ * spans joints between bodies: up to 6 bodies). */
+#define HX_CONSTRAINT_ROW_BLOCKS 6
 typedef struct hx_constraint_row {
     int nblocks;
-    int body[3], u[3], width[3], slot[3];
+    int body[HX_CONSTRAINT_ROW_BLOCKS], u[HX_CONSTRAINT_ROW_BLOCKS];
+    int width[HX_CONSTRAINT_ROW_BLOCKS], slot[HX_CONSTRAINT_ROW_BLOCKS];
     double scale; /* phi's size for the projection's tolerance: 1, or the model's length */
 } hx_constraint_row;
 
@@ -70,7 +73,12 @@ typedef struct hx_dynamics {
     int diffs_read_variables;     /* a Control_Diff's expression reads a variable */
     int load_work, element_work;  /* y indices of the work done by loads and by elements */
     hx_binding **coupler_binding; /* per coupler; NULL for the built-in form */
-    int nrows;                    /* constraint rows: the couplers', then the joints' */
+    int nrows;                    /* constraint rows: the couplers', the joints', then the
+                                   * motions' on joints between bodies */
+    int motion_first, nmotions;   /* the motions' rows: from motion_first, one a motion */
+    int *motion_routine;          /* per motion row: its Motion_Joint routine (model.h) */
+    int row_values;               /* values a row of G keeps (hx_constraint_row) */
+    unsigned char *coupler_general; /* per coupler: 1 when a joint of it is not reduced */
     hx_constraint_row *rows;
     int nactive, *active;         /* the rows the solves take, ascending (all of them but
                                    * the redundant rows found at set-up: redundancy.h) */

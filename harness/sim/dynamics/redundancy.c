@@ -23,7 +23,8 @@ int hx_redundancy_find(hx_dynamics *d, hx_dynamics_data *dd, const double *y, hx
     if (n == 0)
         return 0;
     const size_t nn = (size_t)n;
-    double *G = malloc(sizeof(double) * 12 * nn), *W = malloc(sizeof(double) * 12 * nn);
+    const size_t v = (size_t)d->row_values;
+    double *G = malloc(sizeof(double) * v * nn), *W = malloc(sizeof(double) * v * nn);
     double *A = malloc(sizeof(double) * nn * nn), *phi = malloc(sizeof(double) * nn);
     double *L = calloc(nn * nn, sizeof(double));
     int status = -1;
@@ -69,6 +70,11 @@ const char *hx_redundancy_name_row(const hx_dynamics *d, int row, char *text, si
     const hx_model *m = d->m;
     if (row < m->ncouplers) {
         snprintf(text, size, "COUPLER/%d", m->couplers[row].id);
+        return text;
+    }
+    if (row >= d->motion_first && row < d->motion_first + d->nmotions) {
+        snprintf(text, size, "MOTION/%d",
+                 m->routines[d->motion_routine[row - d->motion_first]].id);
         return text;
     }
     for (int k = m->njoints - 1; k >= 0; --k)

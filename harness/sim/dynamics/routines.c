@@ -4,6 +4,7 @@
 #include "host/variable_values.h"
 #include "sim/dynamics/routines.h"
 #include "sim/dynamics/failure.h"
+#include "sim/dynamics/joint_coordinate.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,7 +32,8 @@ int hx_routines_init(hx_dynamics *d, hx_message *msg)
                            " this one)", m->path, r->line, r->id);
         if (r->kind != HX_ROUTINE_MOTION)
             continue;
-        /* the joint carries its I marker's body (model/resolve.c) */
+        /* the joint carries its I marker's body (model/resolve.c); any other joint's
+         * motion is a row of the constraint system (constraints.c) */
         const int body = m->markers[m->joints[r->joint].i_marker].body;
         for (int c = 0; c < m->ncouplers; ++c)
             for (int j = 0; j < m->couplers[c].njoints; ++j)
@@ -40,7 +42,8 @@ int hx_routines_init(hx_dynamics *d, hx_message *msg)
                                    " Constraint_Coupler %d couples: the harness does not run"
                                    " a motion on a coupled joint", m->path, r->line, r->id,
                                    r->joint_id, m->couplers[c].id);
-        d->driver[body] = k;
+        if (m->joints[r->joint].reduced)
+            d->driver[body] = k;
     }
     return 0;
 }
@@ -57,8 +60,8 @@ void hx_routines_set_state(const hx_dynamics *d, hx_dynamics_data *dd, const dou
         dd->frames.diffs[2 * k] = y[d->diff_offset + k];
 }
 
-/* MOTSUB of routine k at iord, at dd->frames's time; 0 or -1 (dd->message). */
-static int motion(const hx_dynamics *d, hx_dynamics_data *dd, int k, int iord, double *value)
+int hx_routines_motion(const hx_dynamics *d, hx_dynamics_data *dd, int k, int iord,
+                       double *value)
 {
     static const char *const what[3] = {"value (iord 0)", "rate (iord 1)",
                                          "acceleration (iord 2)"};
@@ -92,8 +95,8 @@ int hx_routines_initial(const hx_dynamics *d, hx_dynamics_data *dd, double *y)
             *q = r->ic[0];
         if (r->ic_given[1])
             *u = r->ic[1];
-        if ((r->val_type == 'D' && (motion(d, dd, k, 0, q) != 0 || motion(d, dd, k, 1, u) != 0)) ||
-            (r->val_type == 'V' && motion(d, dd, k, 0, u) != 0))
+        if ((r->val_type == 'D' && (hx_routines_motion(d, dd, k, 0, q) != 0 || hx_routines_motion(d, dd, k, 1, u) != 0)) ||
+            (r->val_type == 'V' && hx_routines_motion(d, dd, k, 0, u) != 0))
             return -1;
     }
     return 0;
@@ -161,10 +164,10 @@ int hx_routines_apply(const hx_dynamics *d, hx_dynamics_data *dd, const double *
         double *qdot = &ydot[d->dof[body].q], *udot = &ydot[d->nq + d->dof[body].u];
         *qdot = y[d->nq + d->dof[body].u];
         if ((val_type == 'D' &&
-             (motion(d, dd, k, 1, qdot) != 0 || motion(d, dd, k, 2, udot) != 0)) ||
+             (hx_routines_motion(d, dd, k, 1, qdot) != 0 || hx_routines_motion(d, dd, k, 2, udot) != 0)) ||
             (val_type == 'V' &&
-             (motion(d, dd, k, 0, qdot) != 0 || motion(d, dd, k, 1, udot) != 0)) ||
-            (val_type == 'A' && motion(d, dd, k, 0, udot) != 0))
+             (hx_routines_motion(d, dd, k, 0, qdot) != 0 || hx_routines_motion(d, dd, k, 1, udot) != 0)) ||
+            (val_type == 'A' && hx_routines_motion(d, dd, k, 0, udot) != 0))
             return -1;
     }
     return 0;
@@ -217,9 +220,16 @@ int hx_routines_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, con
             if (r->val_type == 'A')
                 continue;
             const int body = m->markers[m->joints[r->joint].i_marker].body;
-            const int driven = r->val_type == 'D' ? d->dof[body].q : d->nq + d->dof[body].u;
-            if (motion(d, dd, k, 0, &values[0]) != 0)
+            if (hx_routines_motion(d, dd, k, 0, &values[0]) != 0)
                 return -1;
+            if (!m->joints[r->joint].reduced) { /* a row: its coordinate near f */
+                double value;
+                hx_joint_coordinate_near(d, r->joint, r->motion_type, y, values[0], &value, NULL,
+                                         NULL);
+                fprintf(f, ",%.6g", value - values[0]);
+                continue;
+            }
+            const int driven = r->val_type == 'D' ? d->dof[body].q : d->nq + d->dof[body].u;
             fprintf(f, ",%.6g", y[driven] - values[0]);
         } else {
             hx_invoke_routine(b, &dd->frames, 0, 0, values, NULL);

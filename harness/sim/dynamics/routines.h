@@ -49,6 +49,12 @@ int hx_routines_diff_expression(const hx_dynamics *d, hx_dynamics_data *dd, int 
  * their indices into rows (at most 2 per driven joint); their count. */
 int hx_routines_driven_rows(const hx_dynamics *d, int *rows);
 
+/* MOTSUB of routine k (a Motion_Joint) at iord 0, 1 or 2, at dd->frames's
+ * time: the reduced driver's and a motion row's (constraints.c); 0 or -1
+ * (dd->message). */
+int hx_routines_motion(const hx_dynamics *d, hx_dynamics_data *dd, int k, int iord,
+                       double *value);
+
 /* The CSV's columns: diffID, motionID.error (coordinate less MOTSUB's
  * value; for V, rate less it), requestID.1 .. 8, variableID. */
 void hx_routines_csv_header(FILE *f, const hx_dynamics *d);
