@@ -336,6 +336,56 @@ static void command_file_static_then_dynamic_stays_at_rest(void **state)
     csv_free(&t);
 }
 
+/* SIMULATE/STATIC, then ACCGRAV, then SIMULATE/DYNAMIC: the equilibrium is the one
+ * under the gravity before the ACCGRAV (the spring's, y = -1.04905), and the dynamics
+ * the new gravity's: with none, the spring (k = 400, m = 2: w = sqrt(200)) swings about
+ * its free length, y = -1 - 0.04905 cos(w t); y(0.1) = -1.0076490. An ACCGRAV before the
+ * STATIC: the equilibrium under the new gravity, 2 * 19.62 / 400 = 0.0981 below, at
+ * -1.0981. */
+static void static_then_accgrav_keeps_the_order_of_the_file(void **state)
+{
+    (void)state;
+    const char *model = test_write_file("eq_grav.adm", spring);
+    char csv[512];
+    snprintf(csv, sizeof csv, "%s/eq_grav.csv", test_temp_dir());
+    test_write_file("eq_grav.acf", "eq_grav\n\nSIMULATE/STATIC\nACCGRAV/JGRAV=0\n"
+                                   "SIMULATE/DYNAMIC, END=0.5, STEPS=5\n");
+    const char *const args[] = {"--quiet", "--rtol", "1e-10", "--atol", "1e-12", NULL};
+    assert_int_equal(sim_run_csv(model, csv, args), 0);
+    csv_table t;
+    csv_read(csv, &t);
+    assert_int_equal(t.rows, 6);
+    double y[8];
+    column_values(csv, "body2.y", &t, y);
+    assert_float_equal(y[0], -1.04905, 1e-10);
+    for (int r = 1; r < 6; ++r)
+        assert_float_equal(y[r], -1.0 - 0.04905 * cos(sqrt(200.0) * 0.1 * r), 1e-8);
+    csv_free(&t);
+    test_write_file("eq_grav.acf", "eq_grav\n\nACCGRAV/JGRAV=-19.62\nSIMULATE/STATIC\n"
+                                   "SIMULATE/DYNAMIC, END=0.2, STEPS=2\n");
+    assert_int_equal(sim_run_csv(model, csv, args), 0);
+    csv_read(csv, &t);
+    assert_int_equal(t.rows, 3);
+    column_values(csv, "body2.y", &t, y);
+    for (int r = 0; r < 3; ++r)
+        assert_float_equal(y[r], -1.0981, 1e-9);
+    csv_free(&t);
+}
+
+/* A coupler on joints between moving bodies (differential_carrier.xml: its rows hold
+ * 36 values, not 12) in the equilibrium's Newton system: driven by a torque and free to
+ * turn, it has none, and says which part nothing holds. */
+static void a_coupler_between_moving_bodies_in_the_equilibrium(void **state)
+{
+    (void)state;
+    char csv[512];
+    snprintf(csv, sizeof csv, "%s/eq_diff.csv", test_temp_dir());
+    assert_int_not_equal(sim_run_csv("differential_carrier.xml", csv,
+                                     (const char *const[]){"--static", "--quiet", "--end",
+                                                           "0.1", NULL}),
+                         0);
+}
+
 static void run_static_starts_from_the_equilibrium(void **state)
 {
     (void)state;
@@ -377,6 +427,8 @@ int main(void)
         cmocka_unit_test(no_convergence_names_the_part),
         cmocka_unit_test(command_file_static_then_dynamic_stays_at_rest),
         cmocka_unit_test(run_static_starts_from_the_equilibrium),
+        cmocka_unit_test(static_then_accgrav_keeps_the_order_of_the_file),
+        cmocka_unit_test(a_coupler_between_moving_bodies_in_the_equilibrium),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

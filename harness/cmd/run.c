@@ -87,8 +87,8 @@ static void stiffness_advice(FILE *f, const hx_stability *st, const hx_integrato
                              const hx_integrator_stats *stats)
 {
     const double h = st->max_step[HX_METHOD_DOPRI5];
-    if (!isfinite(h) || !(h > 0.0))
-        return;
+    if (!isfinite(h) || !(h > 0.0) || st->re > 0.0)
+        return; /* a growing mode (re > 0) bounds accuracy, not stability: no advice */
     const double steps = io->t_end / h;
     const int stiff = steps >= STIFF_STEPS;
     const int order = stable_bdf_order(st->re, st->im);

@@ -60,6 +60,19 @@ static int switch_loads(const hx_command *c, const char *path, const hx_model *m
     return 0;
 }
 
+/* A segment of no length that is the static equilibrium at t alone, under the loads
+ * switched off and the gravity so far (a SIMULATE/STATIC that no SIMULATE/DYNAMIC
+ * follows before a switch or the end). */
+static void equilibrium_alone(hx_command_schedule *out, double t, double rtol, double atol,
+                              const unsigned char *off, size_t nloads, const double gravity[3])
+{
+    unsigned char *flags = out->loads_off + (size_t)out->nsegments * nloads;
+    memcpy(flags, off, nloads);
+    double *g = out->gravity + 3 * (size_t)out->nsegments;
+    memcpy(g, gravity, 3 * sizeof(double));
+    out->segments[out->nsegments++] = (hx_segment){t, 0.0, rtol, atol, flags, g, 1};
+}
+
 static int refuse(const char *path, const hx_command *c, hx_message *msg)
 {
     switch (c->kind) {
@@ -138,6 +151,12 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
             }
             continue;
         }
+        if (statics && (c->kind == HX_COMMAND_ACTIVATE || c->kind == HX_COMMAND_DEACTIVATE ||
+                        c->kind == HX_COMMAND_ACCGRAV)) {
+            /* the equilibrium is the one under the switches before this command */
+            equilibrium_alone(out, t, rtol, atol, off, nloads, gravity);
+            statics = 0;
+        }
         if (c->kind == HX_COMMAND_ACTIVATE || c->kind == HX_COMMAND_DEACTIVATE) {
             if (switch_loads(c, path, m, off, msg) != 0) {
                 free(off);
@@ -183,13 +202,8 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
         statics = 0;
         t = end;
     }
-    if (statics) { /* a SIMULATE/STATIC last: the equilibrium alone, a segment of no length */
-        unsigned char *flags = out->loads_off + (size_t)out->nsegments * nloads;
-        memcpy(flags, off, nloads);
-        double *g = out->gravity + 3 * (size_t)out->nsegments;
-        memcpy(g, gravity, sizeof gravity);
-        out->segments[out->nsegments++] = (hx_segment){t, 0.0, rtol, atol, flags, g, 1};
-    }
+    if (statics) /* a SIMULATE/STATIC last: the equilibrium alone */
+        equilibrium_alone(out, t, rtol, atol, off, nloads, gravity);
     free(off);
     if (out->nsegments == 0) {
         hx_command_schedule_free(out);

@@ -5,8 +5,10 @@
  * INTEGRATOR's ERROR as the tolerances of the segments after it, and the
  * command line's --end, --output-interval, --rtol and --atol over the file's;
  * ACTIVATE and DEACTIVATE of the loads given by expressions (SFORCE, VFORCE,
- * VTORQUE, GFORCE) and ACCGRAV's gravity, for the segments after them. What
- * the run cannot do yet (SIMULATE/STATIC, switching other elements,
+ * VTORQUE, GFORCE) and ACCGRAV's gravity, for the segments after them;
+ * SIMULATE/STATIC as the next segment's start from the static equilibrium
+ * (or a segment of no length, the equilibrium alone, when a switch or the
+ * end comes first). What the run cannot do yet (switching other elements,
  * VARIABLE) is refused by name and file:line.
  */
 #ifndef HX_SIM_SIMULATION_COMMAND_SCHEDULE_H

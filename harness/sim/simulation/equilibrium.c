@@ -172,7 +172,8 @@ static int newton_matrix(solver *sv, const double *y)
             for (int c = 0; c < row->width[bl]; ++c)
                 for (int i = 0; i < nv; ++i)
                     if (sv->var[i] == row->u[bl] + c) {
-                        line[i] = sv->G[12 * r + row->slot[bl] + c] * sv->length[i];
+                        line[i] = sv->G[(size_t)d->row_values * r + row->slot[bl] + c] *
+                                  sv->length[i];
                         big = fmax(big, fabs(line[i]));
                     }
         if (big == 0.0) { /* the row holds only driven parts: not the solve's */
@@ -312,7 +313,7 @@ static int model_force(solver *sv)
     double F = 0.0;
     for (int k = 0; k < m->nbodies; ++k)
         if (d->dof[k].kind != HX_DOF_GROUND)
-            F = fmax(F, m->bodies[k].mass * v3_norm(m->gravity) / d->ucf);
+            F = fmax(F, m->bodies[k].mass * v3_norm(d->gravity) / d->ucf);
     for (int k = 0; k < m->nforces; ++k)
         F = fmax(F, fmax(v3_norm(sv->dd->element_load + 6 * k),
                          v3_norm(sv->dd->element_load + 6 * k + 3) / sv->L));
@@ -438,7 +439,7 @@ int hx_equilibrium_solve(const hx_dynamics *d, hx_dynamics_data *dd, double t, d
     sv.b = malloc(sizeof(double) * (na + 1));
     sv.A0 = malloc(sizeof(double) * (na * na + 1));
     sv.phi = malloc(sizeof(double) * (nr + 1));
-    sv.G = malloc(sizeof(double) * (12 * nr + 1));
+    sv.G = malloc(sizeof(double) * ((size_t)d->row_values * nr + 1));
     int status = -1;
     if (!sv.var || !sv.body || !sv.scale || !sv.length || !sv.reg || !sv.ydot || !sv.trial ||
         !sv.gen || !sv.h || !sv.A || !sv.A0 || !sv.b || !sv.phi || !sv.G) {

@@ -171,7 +171,15 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
     for (int k = 0; k < nsegments; ++k) {
         /* each segment from the state the one before it ended in (docs/interface.md
          * §9.9): the integrator restarts there; its first output is after t */
+        const double *g = segments[k].gravity != NULL ? segments[k].gravity : d->m->gravity;
+        const int regravity = k > 0 && memcmp(g, d->gravity, 3 * sizeof(double)) != 0;
+        const hx_energy before = regravity ? hx_energy_of(d, dd, t, y) : result->energy0;
         switch_segment(d, &segments[k]);
+        if (regravity) { /* an ACCGRAV: the potential's new zero, not work done */
+            const hx_energy after = hx_energy_of(d, dd, t, y);
+            result->energy0.total += after.total - before.total;
+            result->energy0.balance += after.balance - before.balance;
+        }
         if (k > 0 && segments[k].equilibrium) { /* SIMULATE/STATIC between segments: its row */
             if (find_equilibrium(rc, t, y) != 0)
                 break;
@@ -222,8 +230,6 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
     result->max_phidot = dd->max_phidot;
     if (y_end != NULL)
         memcpy(y_end, y, sizeof(double) * (size_t)d->n);
-    memset(d->load_off, 0, (size_t)d->m->nloads); /* every load on again, as the model has it */
-    memcpy(d->gravity, d->m->gravity, 3 * sizeof(double));
     return result->status == HX_INTEGRATION_OK ? 0 : -1;
 }
 
@@ -259,6 +265,10 @@ int hx_simulate_segments(const hx_dynamics *d, const hx_simulation_options *opt,
         run_context rc = {d, &dd, opt, result, hx_seconds(), hx_seconds(), &jac};
         status = simulate(&rc, segments, nsegments, y, y_end);
     }
+    /* every load on again and the model's gravity, as the model has them, however the
+     * run ended: the next run on d starts from the model */
+    memset(d->load_off, 0, (size_t)d->m->nloads);
+    memcpy(d->gravity, d->m->gravity, 3 * sizeof(double));
     hx_jacobian_free(&jac);
     hx_dynamics_data_free(&dd);
     free(y);
