@@ -66,7 +66,9 @@ void hx_bodies_frame(const hx_dynamics *d, int k, const double *y, hx_frame *f)
     const hx_body_dof *dof = &d->dof[k];
     const hx_body *b = &d->m->bodies[k];
     switch (dof->kind) {
-    case HX_DOF_GROUND:
+    case HX_DOF_GROUND: /* where the model puts it, at rest */
+        v3_copy(f->p, b->p0), m3_copy(f->R, b->R0);
+        v3_set(f->v, 0, 0, 0), v3_set(f->w, 0, 0, 0);
         break;
     case HX_DOF_FREE: {
         /* the orientation of the unit quaternion: a trial state off unit

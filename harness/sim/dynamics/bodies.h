@@ -10,7 +10,8 @@
 int hx_bodies_init(hx_dynamics *d, hx_message *msg);
 /* Every body's frame from y into dd->frames. */
 void hx_bodies_set_frames(const hx_dynamics *d, hx_dynamics_data *dd, const double *y);
-/* Body k's frame from y into f (only k moves: the Newton matrix's columns). */
+/* Body k's frame from y into f (only k moves: the Newton matrix's columns); the
+ * ground's where the model puts it, at rest. */
 void hx_bodies_frame(const hx_dynamics *d, int k, const double *y, hx_frame *f);
 void hx_bodies_initial_state(const hx_dynamics *d, double *y);
 /* From the loads gathered in dd->force, dd->torque at dd->frames: positions'

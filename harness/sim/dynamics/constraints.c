@@ -225,18 +225,6 @@ static work parts(const hx_dynamics *d, hx_dynamics_data *dd)
     return w;
 }
 
-/* A body's frame at y; the ground's from the model. */
-static void body_frame(const hx_dynamics *d, int b, const double *y, hx_frame *f)
-{
-    if (d->dof[b].kind == HX_DOF_GROUND) {
-        const hx_body *g = &d->m->bodies[b];
-        v3_copy(f->p, g->p0), m3_copy(f->R, g->R0);
-        v3_set(f->v, 0, 0, 0), v3_set(f->w, 0, 0, 0);
-        return;
-    }
-    hx_bodies_frame(d, b, y, f);
-}
-
 /* A joint's rows: G's world twists into the bodies' velocities (omega in body axes). */
 static void joint_terms(const hx_dynamics *d, int k, const double *y, double *G, double *phi,
                         double *gamma)
@@ -244,8 +232,8 @@ static void joint_terms(const hx_dynamics *d, int k, const double *y, double *G,
     const hx_joint *j = &d->m->joints[k];
     const hx_marker *mi = &d->m->markers[j->i_marker], *mj = &d->m->markers[j->j_marker];
     hx_frame fi, fj;
-    body_frame(d, mi->body, y, &fi);
-    body_frame(d, mj->body, y, &fj);
+    hx_bodies_frame(d, mi->body, y, &fi);
+    hx_bodies_frame(d, mj->body, y, &fj);
     const hx_joint_side si = {&fi, mi->r_local, mi->R_local}, sj = {&fj, mj->r_local, mj->R_local};
     hx_joint_law law;
     hx_joint_equations_law(j, mi, mj, &law);

@@ -116,18 +116,6 @@ void hx_joint_coordinate_sides(char freedom, const hx_joint_side *i, const hx_jo
     translation(i->body, j->body, ri, rj, Aj, value, G, c);
 }
 
-/* A body's frame at y; the ground's from the model. */
-static void body_frame(const hx_dynamics *d, int b, const double *y, hx_frame *f)
-{
-    if (d->dof[b].kind == HX_DOF_GROUND) {
-        const hx_body *g = &d->m->bodies[b];
-        v3_copy(f->p, g->p0), m3_copy(f->R, g->R0);
-        v3_set(f->v, 0, 0, 0), v3_set(f->w, 0, 0, 0);
-        return;
-    }
-    hx_bodies_frame(d, b, y, f);
-}
-
 /* The coordinate as it comes (a rotation in (-pi, pi]); 1 when it is reduced. */
 static int raw_coordinate(const hx_dynamics *d, int joint, char freedom, const double *y,
                           double *value, double G[12], double *c)
@@ -145,8 +133,8 @@ static int raw_coordinate(const hx_dynamics *d, int joint, char freedom, const d
         return 1;
     }
     hx_frame fi, fj;
-    body_frame(d, mi->body, y, &fi);
-    body_frame(d, mj->body, y, &fj);
+    hx_bodies_frame(d, mi->body, y, &fi);
+    hx_bodies_frame(d, mj->body, y, &fj);
     const hx_joint_side si = {&fi, mi->r_local, mi->R_local}, sj = {&fj, mj->r_local, mj->R_local};
     hx_joint_coordinate_sides(freedom, &si, &sj, value, G, c);
     if (G != NULL) { /* omega into body axes; a ground side's block is not a velocity */
