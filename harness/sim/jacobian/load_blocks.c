@@ -12,6 +12,19 @@
 #include "sim/jacobian/jacobian_parts.h"
 
 /* What share puts on its i-th body: F and the torque about its centre. */
+/* The central difference of a load's wrenches at +h and -h (side, application,
+ * (F, T)) in column c, onto the bodies it is applied to. */
+static void put_difference(hx_jacobian *jac, int count, const int *body,
+                           double W[2][2][6], double h, int c)
+{
+    for (int a = 0; a < count; ++a) {
+        double dW[6];
+        for (int r = 0; r < 6; ++r)
+            dW[r] = (W[0][a][r] - W[1][a][r]) / (2.0 * h);
+        hx_jacobian_body_load(jac, body[a], c, -1, dW, dW + 3);
+    }
+}
+
 static void wrench(const hx_load_share *share, int i, const hx_frames *fr, double F[3], double T[3])
 {
     double arm[3];
@@ -50,12 +63,7 @@ static int diff_columns(hx_jacobian *jac, int k)
         memcpy(jac->moved.variables, jac->dd.frames.variables, sizeof(double) * (size_t)m->nvariables);
         if (status != 0)
             return hx_dynamics_fail(&jac->dd, "%s", msg.text);
-        for (int a = 0; a < share[0].count; ++a) {
-            double dW[6];
-            for (int r = 0; r < 6; ++r)
-                dW[r] = (W[0][a][r] - W[1][a][r]) / (2.0 * h);
-            hx_jacobian_body_load(jac, share[0].body[a], c, -1, dW, dW + 3);
-        }
+        put_difference(jac, share[0].count, share[0].body, W, h, c);
     }
     return 0;
 }
@@ -97,12 +105,7 @@ int hx_load_blocks(hx_jacobian *jac, double t, const double *y)
                 }
                 jac->y[c] = keep;
                 hx_jacobian_restore_body(jac, b);
-                for (int a = 0; a < share[0].count; ++a) {
-                    double dW[6];
-                    for (int r = 0; r < 6; ++r)
-                        dW[r] = (W[0][a][r] - W[1][a][r]) / (2.0 * h);
-                    hx_jacobian_body_load(jac, share[0].body[a], c, -1, dW, dW + 3);
-                }
+                put_difference(jac, share[0].count, share[0].body, W, h, c);
             }
         }
     }
