@@ -355,3 +355,23 @@ double jacobian_against_differences(const hx_dynamics *d, double t, const double
     hx_dynamics_data_free(&dd);
     return worst;
 }
+
+hx_model *sim_parse(const char *name, const char *text)
+{
+    hx_message msg;
+    hx_model *m = hx_model_parse(text, strlen(text), name, NULL, &msg);
+    if (m == NULL)
+        fail_msg("%s", msg.text);
+    return m;
+}
+
+void sim_expect_parse_error(const char *name, const char *text, const char *const *needles)
+{
+    hx_message msg;
+    hx_model *m = hx_model_parse(text, strlen(text), name, NULL, &msg);
+    if (m != NULL) {
+        hx_model_free(m);
+        fail_msg("%s read", name);
+    }
+    assert_contains_impl(msg.text, needles, __FILE__, __LINE__);
+}

@@ -46,6 +46,13 @@ int sim_joint_u(const sim *s, int joint_id);
 double jacobian_against_differences(const hx_dynamics *d, double t, const double *y,
                                     const char *what, long *outside);
 
+/* Parses text as a model named name; fails the test with the reader's message
+ * if it does not read. */
+hx_model *sim_parse(const char *name, const char *text);
+/* Parses text as name; fails the test if it reads or its message lacks a
+ * needle (NULL-terminated). */
+void sim_expect_parse_error(const char *name, const char *text, const char *const *needles);
+
 /* Runs "usrsub-harness check" in-process; returns its exit status. */
 int sim_check(const char *model);
 

@@ -8,12 +8,10 @@
  * written in one pass against CVODE's own.
  */
 #include <dirent.h>
-#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "cmd/commands.h"
 #include "model_runs.h"
@@ -289,46 +287,28 @@ static void bdf_agrees_with_dopri5_on_every_bundled_model(void **state)
 
 /* ---- run: bdf on every model, and advice that names the figures ----------------------- */
 
-/* "usrsub-harness run MODEL ARGS..." in-process, its standard output into text. */
-static int run_captured(const char *model_path, const char *const *args, char *text, size_t size)
+/* "usrsub-harness run MODEL ARGS..." in-process, its output captured. */
+static int run_captured(const char *model_path, const char *const *args, test_captured *c)
 {
-    char *argv[32];
-    int argc = 0;
-    argv[argc++] = "run";
-    argv[argc++] = (char *)model_path;
-    for (const char *const *a = args; *a != NULL && argc < 31; ++a)
-        argv[argc++] = (char *)*a;
-    argv[argc] = NULL;
-    char path[600];
-    snprintf(path, sizeof path, "%s/run_output.txt", test_temp_dir());
-    fflush(stdout);
-    const int saved = dup(1), fd = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    assert_true(saved >= 0 && fd >= 0);
-    dup2(fd, 1);
-    const int status = hx_command_run(argc, argv);
-    fflush(stdout);
-    dup2(saved, 1);
-    close(fd);
-    close(saved);
-    FILE *f = fopen(path, "r");
-    const size_t n = f != NULL ? fread(text, 1, size - 1, f) : 0;
-    text[n] = '\0';
-    if (f != NULL)
-        fclose(f);
-    return status;
+    const char *argv[32] = {"run", model_path};
+    for (int i = 0; args[i] != NULL && i < 29; ++i)
+        argv[i + 2] = args[i];
+    test_capture(hx_command_run, argv, c);
+    return c->status;
 }
 
 static void run_takes_bdf_on_every_model_and_says_when_it_is_stiff(void **state)
 {
     (void)state;
-    static char text[16384];
+    static test_captured c;
+    const char *text = c.out;
     struct dirent **names;
     const int count = scandir(EXAMPLES_DIR, &names, is_model, alphasort);
     const char *const short_run[] = {"--end", "0.01", "--integrator", "bdf", "--quiet", NULL};
     for (int k = 0; k < count; ++k) {
         char path[1024];
         snprintf(path, sizeof path, "%s/%s", EXAMPLES_DIR, names[k]->d_name);
-        const int status = run_captured(path, short_run, text, sizeof text);
+        const int status = run_captured(path, short_run, &c);
         if (status != 0)
             fail_msg("run --integrator bdf %s: exit %d\n%s", names[k]->d_name, status, text);
         assert_contains(text, "finished with bdf", "Newton iterations");
@@ -337,14 +317,13 @@ static void run_takes_bdf_on_every_model_and_says_when_it_is_stiff(void **state)
     free(names);
     /* stiff for its run: an explicit method is told why bdf suits it better */
     const char *const explicit_run[] = {"--end", "1.5", "--quiet", "--output-interval", "0.1", NULL};
-    assert_int_equal(run_captured(EXAMPLES_DIR "/stiff_powertrain.xml", explicit_run, text,
-                                  sizeof text), 0);
+    assert_int_equal(run_captured(EXAMPLES_DIR "/stiff_powertrain.xml", explicit_run, &c), 0);
     printf("%s", text);
     assert_contains(text, "stiff for this run", "--integrator bdf", "holds dopri5 to steps below");
     /* not stiff: bdf is told that an explicit method is likely cheaper */
     const char *const bdf_run[] = {"--end", "1", "--integrator", "bdf", "--jacobian", "fd",
                                    "--quiet", "--output-interval", "0.1", NULL};
-    assert_int_equal(run_captured(EXAMPLES_DIR "/powertrain.xml", bdf_run, text, sizeof text), 0);
+    assert_int_equal(run_captured(EXAMPLES_DIR "/powertrain.xml", bdf_run, &c), 0);
     printf("%s", text);
     assert_contains(text, "not stiff for this run", "--integrator dopri5",
                     "differences of the right-hand side in");

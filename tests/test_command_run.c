@@ -6,73 +6,23 @@
  * and --no-acf; the command line over the file; the commands refused by
  * name and file:line; DEACTIVATE, ACTIVATE and ACCGRAV between segments.
  */
-#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "cmd/commands.h"
 #include "test_support.h"
 
 #define OSCILLATOR DATA_DIR "/oscillator.adm"
 
-typedef struct captured {
-    int status;
-    char out[16384], err[16384];
-} captured;
-
-static void read_back(const char *path, char *text, size_t size)
+/* Runs `run` with args (NULL-terminated), its output captured. */
+static void run(const char *const *args, test_captured *c)
 {
-    FILE *f = fopen(path, "r");
-    size_t n = f != NULL ? fread(text, 1, size - 1, f) : 0;
-    text[n] = '\0';
-    if (f != NULL)
-        fclose(f);
-}
-
-/* Runs `run` with args (NULL-terminated), stdout and stderr to files (dup2),
- * read back (as tests/test_commands.c does). */
-static void run(const char *const *args, captured *c)
-{
-    char out_path[512], err_path[512];
-    snprintf(out_path, sizeof out_path, "%s/acf_stdout.txt", test_temp_dir());
-    snprintf(err_path, sizeof err_path, "%s/acf_stderr.txt", test_temp_dir());
-    char *argv[32];
-    int argc = 0;
-    argv[argc++] = "run";
-    for (; args[argc - 1] != NULL && argc < 31; ++argc)
-        argv[argc] = (char *)args[argc - 1];
-    argv[argc] = NULL;
-    fflush(stdout);
-    fflush(stderr);
-    const int out_fd = open(out_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err_fd = open(err_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int saved_out = dup(STDOUT_FILENO), saved_err = dup(STDERR_FILENO);
-    assert_true(out_fd >= 0 && err_fd >= 0 && saved_out >= 0 && saved_err >= 0);
-    dup2(out_fd, STDOUT_FILENO);
-    dup2(err_fd, STDERR_FILENO);
-    close(out_fd);
-    close(err_fd);
-    c->status = hx_command_run(argc, argv);
-    fflush(stdout);
-    fflush(stderr);
-    dup2(saved_out, STDOUT_FILENO);
-    dup2(saved_err, STDERR_FILENO);
-    close(saved_out);
-    close(saved_err);
-    read_back(out_path, c->out, sizeof c->out);
-    read_back(err_path, c->err, sizeof c->err);
-}
-
-static const char *temp_path(const char *name)
-{
-    static char paths[8][512];
-    static int next;
-    char *path = paths[next++ % 8];
-    snprintf(path, 512, "%s/%s", test_temp_dir(), name);
-    return path;
+    const char *argv[32] = {"run"};
+    for (int i = 0; args[i] != NULL && i < 30; ++i)
+        argv[i + 1] = args[i];
+    test_capture(hx_command_run, argv, c);
 }
 
 #define MAX_ROWS 64
@@ -122,14 +72,14 @@ static int steps_of(const char *out)
 static void segments_follow_one_another(void **state)
 {
     (void)state;
-    captured c;
+    test_captured c;
     table seg, one;
     /* MODEL.acf beside MODEL.adm is followed, and said so */
-    run((const char *const[]){OSCILLATOR, "--quiet", "--out", temp_path("seg.csv"), NULL}, &c);
+    run((const char *const[]){OSCILLATOR, "--quiet", "--out", test_temp_path("seg.csv"), NULL}, &c);
     assert_int_equal(c.status, 0);
     assert_contains(c.err, "run: following the command file " DATA_DIR "/oscillator.acf");
     assert_contains(c.err, "oscillator.acf:3: note: INTEGRATOR: GSTIFF read and of no effect");
-    read_table(temp_path("seg.csv"), &seg);
+    read_table(test_temp_path("seg.csv"), &seg);
     /* 0 to 1 by 0.1, then 1 to 2 by 0.05: 11 + 20 rows, t = 1 once */
     assert_int_equal(seg.n, 31);
     for (int k = 0; k < seg.n; ++k) {
@@ -142,15 +92,15 @@ static void segments_follow_one_another(void **state)
      * (every 0.05 s): the segments' rows are the single run's, digit for
      * digit (the second segment went on from the first's end state) */
     run((const char *const[]){OSCILLATOR, "--quiet", "--integrator", "rk4", "--step", "0.001",
-                              "--out", temp_path("seg_rk4.csv"), NULL}, &c);
+                              "--out", test_temp_path("seg_rk4.csv"), NULL}, &c);
     assert_int_equal(c.status, 0);
     run((const char *const[]){OSCILLATOR, "--no-acf", "--end", "2", "--output-interval", "0.05",
                               "--quiet", "--integrator", "rk4", "--step", "0.001", "--out",
-                              temp_path("one_rk4.csv"), NULL}, &c);
+                              test_temp_path("one_rk4.csv"), NULL}, &c);
     assert_int_equal(c.status, 0);
     assert_null(strstr(c.err, "following the command file"));
-    read_table(temp_path("seg_rk4.csv"), &seg);
-    read_table(temp_path("one_rk4.csv"), &one);
+    read_table(test_temp_path("seg_rk4.csv"), &seg);
+    read_table(test_temp_path("one_rk4.csv"), &one);
     assert_int_equal(seg.n, 31);
     assert_int_equal(one.n, 41);
     for (int k = 0; k < seg.n; ++k) {
@@ -165,18 +115,18 @@ static void segments_follow_one_another(void **state)
 static void acf_and_no_acf(void **state)
 {
     (void)state;
-    captured c;
+    test_captured c;
     table tb;
     const char *acf = test_write_file("short.acf", "elsewhere.adm\n\n"
                                       "SIMULATE/DYNAMIC, END=0.3, STEPS=3\n");
-    run((const char *const[]){OSCILLATOR, "--acf", acf, "--quiet", "--out", temp_path("a.csv"),
+    run((const char *const[]){OSCILLATOR, "--acf", acf, "--quiet", "--out", test_temp_path("a.csv"),
                               NULL}, &c);
     assert_int_equal(c.status, 0);
     assert_contains(c.err, "run: following the command file", "short.acf");
     /* Adams would read the dataset the first line names: the harness runs its own */
     assert_contains(c.err, "short.acf:1: warning: the command file names the dataset"
                     " 'elsewhere.adm'; the model run is " OSCILLATOR);
-    read_table(temp_path("a.csv"), &tb);
+    read_table(test_temp_path("a.csv"), &tb);
     assert_int_equal(tb.n, 4);
     assert_close(tb.t[3], 0.3, 0.0, 1e-12);
     /* --no-acf: the command line alone, which then needs --end */
@@ -187,7 +137,7 @@ static void acf_and_no_acf(void **state)
     run((const char *const[]){OSCILLATOR, "--no-acf", "--acf", acf, NULL}, &c);
     assert_int_equal(c.status, 2);
     assert_contains(c.err, "--acf and --no-acf");
-    run((const char *const[]){OSCILLATOR, "--acf", temp_path("missing.acf"), NULL}, &c);
+    run((const char *const[]){OSCILLATOR, "--acf", test_temp_path("missing.acf"), NULL}, &c);
     assert_int_equal(c.status, 1);
     assert_contains(c.err, "missing.acf: cannot open the command file");
 }
@@ -197,20 +147,20 @@ static void acf_and_no_acf(void **state)
 static void options_override_the_file(void **state)
 {
     (void)state;
-    captured c;
+    test_captured c;
     table tb;
     /* --end cuts the run inside the second segment */
-    run((const char *const[]){OSCILLATOR, "--end", "1.5", "--quiet", "--out", temp_path("e.csv"),
+    run((const char *const[]){OSCILLATOR, "--end", "1.5", "--quiet", "--out", test_temp_path("e.csv"),
                               NULL}, &c);
     assert_int_equal(c.status, 0);
-    read_table(temp_path("e.csv"), &tb);
+    read_table(test_temp_path("e.csv"), &tb);
     assert_int_equal(tb.n, 21);
     assert_close(tb.t[20], 1.5, 0.0, 1e-12);
     /* --output-interval replaces both DTOUT */
     run((const char *const[]){OSCILLATOR, "--output-interval", "0.25", "--quiet", "--out",
-                              temp_path("i.csv"), NULL}, &c);
+                              test_temp_path("i.csv"), NULL}, &c);
     assert_int_equal(c.status, 0);
-    read_table(temp_path("i.csv"), &tb);
+    read_table(test_temp_path("i.csv"), &tb);
     assert_int_equal(tb.n, 9);
     for (int k = 0; k < tb.n; ++k)
         assert_close(tb.t[k], 0.25 * k, 0.0, 1e-12);
@@ -240,8 +190,8 @@ static void refuse(const char *command, const char *where, const char *what, con
     snprintf(text, sizeof text, "oscillator\n\nSIMULATE/DYNAMIC, END=1, STEPS=10\n%s\n"
              "SIMULATE/DYNAMIC, END=2, STEPS=10\n", command);
     const char *acf = test_write_file("refused.acf", text);
-    captured c;
-    run((const char *const[]){OSCILLATOR, "--acf", acf, "--quiet", "--out", temp_path("r.csv"),
+    test_captured c;
+    run((const char *const[]){OSCILLATOR, "--acf", acf, "--quiet", "--out", test_temp_path("r.csv"),
                               NULL}, &c);
     assert_int_equal(c.status, 1);
     assert_contains(c.err, where, what, why);
@@ -267,7 +217,7 @@ static void what_the_run_cannot_do_is_refused(void **state)
     /* STOP ends the file: what follows it is not read */
     const char *acf = test_write_file("stop.acf", "oscillator\n\n"
                                       "SIMULATE/DYNAMIC, END=0.2, STEPS=2\nSTOP\nACCGRAV/JGRAV=1\n");
-    captured c;
+    test_captured c;
     run((const char *const[]){OSCILLATOR, "--acf", acf, "--quiet", NULL}, &c);
     assert_int_equal(c.status, 0);
     assert_contains(c.out, "to t = 0.2\n");
@@ -296,13 +246,13 @@ static void a_deactivated_spring_lets_the_mass_fall(void **state)
                                       "SIMULATE/DYNAMIC, END=1.2, STEPS=2\n");
     const char *const integrators[2] = {"dopri5", "bdf"}; /* bdf: its Jacobian without it */
     for (int i = 0; i < 2; ++i) {
-        captured c;
+        test_captured c;
         table tb;
         run((const char *const[]){DATA_DIR "/hanging.adm", "--acf", acf, "--integrator",
-                                  integrators[i], "--quiet", "--out", temp_path("fall.csv"),
+                                  integrators[i], "--quiet", "--out", test_temp_path("fall.csv"),
                                   NULL}, &c);
         assert_int_equal(c.status, 0);
-        read_table(temp_path("fall.csv"), &tb);
+        read_table(test_temp_path("fall.csv"), &tb);
         assert_int_equal(tb.n, 13);
         for (int k = 0; k <= 10; ++k) {
             const double t = 0.1 * k, fall = t > 0.5 ? t - 0.5 : 0.0;
@@ -335,12 +285,12 @@ static void accgrav_changes_gravity_between_segments(void **state)
                                       "SIMULATE/DYNAMIC, END=1, STEPS=5\n");
     const char *const integrators[2] = {"dopri5", "bdf"};
     for (int i = 0; i < 2; ++i) {
-        captured c;
+        test_captured c;
         table tb;
         run((const char *const[]){adm, "--acf", acf, "--integrator", integrators[i], "--quiet",
-                                  "--out", temp_path("falling.csv"), NULL}, &c);
+                                  "--out", test_temp_path("falling.csv"), NULL}, &c);
         assert_int_equal(c.status, 0);
-        read_table(temp_path("falling.csv"), &tb);
+        read_table(test_temp_path("falling.csv"), &tb);
         assert_int_equal(tb.n, 11);
         for (int k = 0; k <= 10; ++k) {
             const double t = 0.1 * k, after = t > 0.5 ? t - 0.5 : 0.0;
@@ -352,9 +302,9 @@ static void accgrav_changes_gravity_between_segments(void **state)
     }
     /* the ACCGRAV moves the potential's zero, it does no work: the energy balance holds
      * across it (24 J of 25 off when it was counted as a change) */
-    captured c;
+    test_captured c;
     run((const char *const[]){adm, "--acf", acf, "--integrator", "dopri5", "--out",
-                              temp_path("falling.csv"), NULL}, &c);
+                              test_temp_path("falling.csv"), NULL}, &c);
     assert_int_equal(c.status, 0);
     const char *change = strstr(c.out, "largest energy change");
     assert_non_null(change);

@@ -6,7 +6,6 @@
  * created refused at once with the reason, before any long work.
  */
 #include <errno.h>
-#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,84 +17,26 @@
 
 #define MODEL EXAMPLES_DIR "/damped_oscillator.xml"
 
-typedef int command_fn(int argc, char **argv);
-
-typedef struct captured {
-    int status;
-    char out[16384], err[16384];
-} captured;
-
-static void read_back(const char *path, char *text, size_t size)
-{
-    FILE *f = fopen(path, "r");
-    size_t n = f != NULL ? fread(text, 1, size - 1, f) : 0;
-    text[n] = '\0';
-    if (f != NULL)
-        fclose(f);
-}
-
-/* Runs command with args (argv[0] first, NULL-terminated), its stdout and
- * stderr going to files of the temporary folder (dup2), then read back. */
-static void run_command(command_fn *command, const char *const *args, captured *c)
-{
-    char out_path[512], err_path[512];
-    snprintf(out_path, sizeof out_path, "%s/captured_stdout.txt", test_temp_dir());
-    snprintf(err_path, sizeof err_path, "%s/captured_stderr.txt", test_temp_dir());
-    char *argv[32];
-    int argc = 0;
-    for (; args[argc] != NULL && argc < 31; ++argc)
-        argv[argc] = (char *)args[argc];
-    argv[argc] = NULL;
-    fflush(stdout);
-    fflush(stderr);
-    const int out_fd = open(out_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int err_fd = open(err_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    const int saved_out = dup(STDOUT_FILENO), saved_err = dup(STDERR_FILENO);
-    assert_true(out_fd >= 0 && err_fd >= 0 && saved_out >= 0 && saved_err >= 0);
-    dup2(out_fd, STDOUT_FILENO);
-    dup2(err_fd, STDERR_FILENO);
-    close(out_fd);
-    close(err_fd);
-    c->status = command(argc, argv);
-    fflush(stdout);
-    fflush(stderr);
-    dup2(saved_out, STDOUT_FILENO);
-    dup2(saved_err, STDERR_FILENO);
-    close(saved_out);
-    close(saved_err);
-    read_back(out_path, c->out, sizeof c->out);
-    read_back(err_path, c->err, sizeof c->err);
-}
-
-static const char *temp_path(const char *name)
-{
-    static char paths[8][512];
-    static int next;
-    char *path = paths[next++ % 8];
-    snprintf(path, 512, "%s/%s", test_temp_dir(), name);
-    return path;
-}
-
 /* ---- option values ---------------------------------------------------------------------- */
 
 static void bad_option_values_are_named(void **state)
 {
     (void)state;
-    captured c;
-    run_command(hx_command_run, (const char *const[]){"run", MODEL, "--end", "soon", NULL}, &c);
+    test_captured c;
+    test_capture(hx_command_run, (const char *const[]){"run", MODEL, "--end", "soon", NULL}, &c);
     assert_int_equal(c.status, 2);
     assert_contains(c.err, "usrsub-harness run", "--end 'soon'", "not a number");
 
-    run_command(hx_command_bench, (const char *const[]){"bench", MODEL, "--repeats", "0", NULL}, &c);
+    test_capture(hx_command_bench, (const char *const[]){"bench", MODEL, "--repeats", "0", NULL}, &c);
     assert_int_equal(c.status, 2);
     assert_contains(c.err, "usrsub-harness bench", "--repeats '0'", "whole number of at least 1");
 
-    run_command(hx_command_rig, (const char *const[]){"rig", MODEL, "--element", "1", "--end", "1",
+    test_capture(hx_command_rig, (const char *const[]){"rig", MODEL, "--element", "1", "--end", "1",
                                                      "--step", "-0.5", "--circle", "1,1", NULL}, &c);
     assert_int_equal(c.status, 2);
     assert_contains(c.err, "usrsub-harness rig", "--step -0.5", "must be above zero");
 
-    run_command(hx_command_check, (const char *const[]){"check", MODEL, "--timeout", "never", NULL}, &c);
+    test_capture(hx_command_check, (const char *const[]){"check", MODEL, "--timeout", "never", NULL}, &c);
     assert_int_equal(c.status, 2);
     assert_contains(c.err, "usrsub-harness check", "--timeout 'never'", "not a number");
 }
@@ -116,14 +57,14 @@ static void a_missing_library_mentions_ms_userdll_dir(void **state)
         "</Model></MotionSolve>\n");
     const char *was = getenv("MS_USERDLL_DIR");
     char *saved = was != NULL ? strdup(was) : NULL;
-    captured c;
+    test_captured c;
     unsetenv("MS_USERDLL_DIR");
-    run_command(hx_command_check, (const char *const[]){"check", model, NULL}, &c);
+    test_capture(hx_command_check, (const char *const[]){"check", model, NULL}, &c);
     assert_int_equal(c.status, 1);
     assert_contains(c.err, "libnothere.so", "not found", test_temp_dir(), "MS_USERDLL_DIR is not set");
 
     setenv("MS_USERDLL_DIR", "/opt/nowhere", 1);
-    run_command(hx_command_check, (const char *const[]){"check", model, NULL}, &c);
+    test_capture(hx_command_check, (const char *const[]){"check", model, NULL}, &c);
     assert_int_equal(c.status, 1);
     assert_contains(c.err, "libnothere.so", "not found", "MS_USERDLL_DIR", "/opt/nowhere");
     assert_null(strstr(c.err, "not set"));
@@ -140,8 +81,8 @@ static void a_missing_library_mentions_ms_userdll_dir(void **state)
 static void run_defaults_to_dopri5(void **state)
 {
     (void)state;
-    captured c;
-    run_command(hx_command_run, (const char *const[]){"run", MODEL, "--end", "0.1", NULL}, &c);
+    test_captured c;
+    test_capture(hx_command_run, (const char *const[]){"run", MODEL, "--end", "0.1", NULL}, &c);
     assert_int_equal(c.status, 0);
     assert_contains(c.out, "with dopri5", "t = 0.1");
 }
@@ -149,14 +90,14 @@ static void run_defaults_to_dopri5(void **state)
 static void run_creates_the_output_folders(void **state)
 {
     (void)state;
-    const char *csv = temp_path("outputs/sub/x.csv");
+    const char *csv = test_temp_path("outputs/sub/x.csv");
     struct stat st;
-    assert_int_not_equal(stat(temp_path("outputs"), &st), 0);
-    captured c;
-    run_command(hx_command_run, (const char *const[]){"run", MODEL, "--end", "0.01", "--out", csv, NULL},
+    assert_int_not_equal(stat(test_temp_path("outputs"), &st), 0);
+    test_captured c;
+    test_capture(hx_command_run, (const char *const[]){"run", MODEL, "--end", "0.01", "--out", csv, NULL},
                 &c);
     assert_int_equal(c.status, 0);
-    assert_int_equal(stat(temp_path("outputs/sub"), &st), 0);
+    assert_int_equal(stat(test_temp_path("outputs/sub"), &st), 0);
     assert_true(S_ISDIR(st.st_mode));
     assert_int_equal(stat(csv, &st), 0);
     assert_true(st.st_size > 0);
@@ -165,25 +106,25 @@ static void run_creates_the_output_folders(void **state)
 static void an_output_that_cannot_be_created_fails_at_once(void **state)
 {
     (void)state;
-    captured c;
+    test_captured c;
     /* under a regular file */
     const char *file = test_write_file("a_file", "not a folder\n");
     char under_file[600];
     snprintf(under_file, sizeof under_file, "%s/sub/x.csv", file);
-    run_command(hx_command_run, (const char *const[]){"run", MODEL, "--end", "1", "--out", under_file,
+    test_capture(hx_command_run, (const char *const[]){"run", MODEL, "--end", "1", "--out", under_file,
                                                      NULL}, &c);
     assert_int_equal(c.status, 1);
     assert_contains(c.err, "usrsub-harness run", "cannot create the folder", file);
     assert_null(strstr(c.out, "run:")); /* nothing integrated */
 
     /* a folder the system refuses: the reason is strerror's */
-    run_command(hx_command_run, (const char *const[]){"run", MODEL, "--end", "1", "--out",
+    test_capture(hx_command_run, (const char *const[]){"run", MODEL, "--end", "1", "--out",
                                                      "/proc/nonexistent/x.csv", NULL}, &c);
     assert_int_equal(c.status, 1);
     assert_contains(c.err, "/proc/nonexistent", strerror(ENOENT));
     assert_null(strstr(c.out, "run:"));
 
-    run_command(hx_command_rig, (const char *const[]){"rig", EXAMPLES_DIR "/bushing_coupling.xml",
+    test_capture(hx_command_rig, (const char *const[]){"rig", EXAMPLES_DIR "/bushing_coupling.xml",
                                                      "--element", "1", "--circle", "5,6.2832", "--end",
                                                      "1", "--step", "0.005", "--out",
                                                      "/proc/nonexistent/rig.csv", NULL}, &c);
@@ -195,7 +136,7 @@ static void an_output_that_cannot_be_created_fails_at_once(void **state)
     char prefix[4200];
     memset(prefix, 'p', sizeof prefix - 1);
     prefix[sizeof prefix - 1] = '\0';
-    run_command(hx_command_rig, (const char *const[]){"rig", EXAMPLES_DIR "/bushing_coupling.xml",
+    test_capture(hx_command_rig, (const char *const[]){"rig", EXAMPLES_DIR "/bushing_coupling.xml",
                                                      "--element", "1", "--circle", "5,6.2832", "--end",
                                                      "1", "--step", "0.005", "--plot", prefix, NULL},
                 &c);
@@ -207,8 +148,8 @@ static void an_output_that_cannot_be_created_fails_at_once(void **state)
 static void bench_refuses_its_output_before_the_sweep(void **state)
 {
     (void)state;
-    captured c;
-    run_command(hx_command_bench, (const char *const[]){"bench", MODEL, "--work-precision", "--out",
+    test_captured c;
+    test_capture(hx_command_bench, (const char *const[]){"bench", MODEL, "--work-precision", "--out",
                                                        "/proc/nonexistent/wp", NULL}, &c);
     assert_int_equal(c.status, 1);
     assert_contains(c.err, "usrsub-harness bench", "/proc/nonexistent", strerror(ENOENT));

@@ -181,34 +181,23 @@ static void xml_and_dataset_bit_identical(void **state)
     close_model(&a), close_model(&b);
 }
 
-static void expect_error(const char *name, const char *text, const char *const *needles)
-{
-    hx_message msg;
-    hx_model *m = hx_model_parse(text, strlen(text), name, NULL, &msg);
-    if (m != NULL) {
-        hx_model_free(m);
-        fail_msg("%s read", name);
-    }
-    assert_contains_impl(msg.text, needles, __FILE__, __LINE__);
-}
-
 static void bad_diffs_are_named(void **state)
 {
     (void)state;
-    expect_error("unknown.adm", ADM_HEAD "DIFF/1, FUNCTION=1 + DIF(9)\nEND\n",
+    sim_expect_parse_error("unknown.adm", ADM_HEAD "DIFF/1, FUNCTION=1 + DIF(9)\nEND\n",
                  (const char *const[]){"unknown.adm:6:", "DIF(9)", "no Control_Diff 9", NULL});
-    expect_error("implicit.adm", ADM_HEAD "DIFF/1, FUNCTION=DIF(1), IMPLICIT\nEND\n",
+    sim_expect_parse_error("implicit.adm", ADM_HEAD "DIFF/1, FUNCTION=DIF(1), IMPLICIT\nEND\n",
                  (const char *const[]){"implicit.adm:6:", "IMPLICIT", "explicit", NULL});
-    expect_error("nofunction.adm", ADM_HEAD "DIFF/1, IC=2\nEND\n",
+    sim_expect_parse_error("nofunction.adm", ADM_HEAD "DIFF/1, IC=2\nEND\n",
                  (const char *const[]){"nofunction.adm:6:", "FUNCTION", NULL});
-    expect_error("self.adm", ADM_HEAD "DIFF/1, FUNCTION=1 + DIF1(1)\nEND\n",
+    sim_expect_parse_error("self.adm", ADM_HEAD "DIFF/1, FUNCTION=1 + DIF1(1)\nEND\n",
                  (const char *const[]){"self.adm:6:", "DIF1(1)", "its own rate", NULL});
-    expect_error("cycle.adm",
+    sim_expect_parse_error("cycle.adm",
                  ADM_HEAD "DIFF/1, FUNCTION=DIF1(2)\nDIFF/2, FUNCTION=2*DIF1(1)\nEND\n",
                  (const char *const[]){"a cycle of Control_Diff rates",
                                        "cycle.adm:6: Control_Diff 1 reads DIF1(2)",
                                        "cycle.adm:7: Control_Diff 2 reads DIF1(1)", NULL});
-    expect_error("parse.adm", ADM_HEAD "DIFF/1, FUNCTION=1 + \nEND\n",
+    sim_expect_parse_error("parse.adm", ADM_HEAD "DIFF/1, FUNCTION=1 + \nEND\n",
                  (const char *const[]){"parse.adm:6:", NULL});
     static const char *const head =
         "<MotionSolve><Model>\n<Body_Ground id=\"1\"/>\n"
@@ -216,16 +205,16 @@ static void bad_diffs_are_named(void **state)
     char xml[1024];
     snprintf(xml, sizeof xml, "%s<Control_Diff id=\"1\" type=\"EXPRESSION\" ic=\"1\"/>\n"
              "</Model></MotionSolve>\n", head);
-    expect_error("noexpr.xml", xml,
+    sim_expect_parse_error("noexpr.xml", xml,
                  (const char *const[]){"noexpr.xml:4:", "Control_Diff 1", "expr is missing", NULL});
     snprintf(xml, sizeof xml, "%s<Control_Diff id=\"1\" type=\"EXPRESSION\" is_implicit=\"TRUE\""
              " expr=\"DIF(1)\"/>\n</Model></MotionSolve>\n", head);
-    expect_error("implicit.xml", xml,
+    sim_expect_parse_error("implicit.xml", xml,
                  (const char *const[]){"implicit.xml:4:", "Control_Diff 1", "is_implicit",
                                        NULL});
     snprintf(xml, sizeof xml, "%s<Control_Diff id=\"1\" type=\"EXPRESSION\""
              " expr=\"DIF(1) + DX(99)\"/>\n</Model></MotionSolve>\n", head);
-    expect_error("marker.xml", xml,
+    sim_expect_parse_error("marker.xml", xml,
                  (const char *const[]){"marker.xml:4:", "Control_Diff 1: expr: DX(99)",
                                        "no Reference_Marker 99", NULL});
 }

@@ -206,52 +206,41 @@ static void dataset_forces_by_expressions(void **state)
 
 /* Reads text as name; the model must not read, and its message hold each
  * needle. */
-static void expect_error(const char *name, const char *text, const char *const *needles)
-{
-    hx_message msg;
-    hx_model *m = hx_model_parse(text, strlen(text), name, NULL, &msg);
-    if (m != NULL) {
-        hx_model_free(m);
-        fail_msg("%s read", name);
-    }
-    assert_contains_impl(msg.text, needles, __FILE__, __LINE__);
-}
-
 static void bad_expressions_are_named(void **state)
 {
     (void)state;
     /* line 8 of the text; the column within the attribute's value: the ')' at 19 */
-    expect_error("bad.xml",
+    sim_expect_parse_error("bad.xml",
                  HEAD "<Force_Scalar_TwoBody id=\"4\" type=\"FORCE\" i_marker_id=\"20\""
                       " j_marker_id=\"10\" val_expression=\"-100*(DM(20,10) - )\"/>\n" TAIL,
                  (const char *const[]){"bad.xml:8:19: Force_Scalar_TwoBody 4: val_expression:",
                                        "expected a number", NULL});
-    expect_error("unknown.xml",
+    sim_expect_parse_error("unknown.xml",
                  HEAD "<Force_Vector_OneBody id=\"7\" marker_id=\"20\""
                       " fy_expression=\"DX(20,99)\"/>\n" TAIL,
                  (const char *const[]){"unknown.xml:8:1: Force_Vector_OneBody 7: fy_expression:",
                                        "no Reference_Marker 99", NULL});
-    expect_error("aryval.xml",
+    sim_expect_parse_error("aryval.xml",
                  HEAD "<Reference_Array id=\"3\" type=\"IC\" num_element=\"1\"> 2 </Reference_Array>\n"
                       "<Force_Vector_OneBody id=\"7\" marker_id=\"20\""
                       " fx_expression=\"1 + ARYVAL(3,1)\"/>\n" TAIL,
                  (const char *const[]){"aryval.xml:9:5: Force_Vector_OneBody 7: fx_expression:",
                                        "ARYVAL(3,1)", "not simulated yet", NULL});
-    expect_error("routine.xml",
+    sim_expect_parse_error("routine.xml",
                  HEAD "<Force_Vector_TwoBody id=\"6\" type=\"ForceOnly\" i_marker_id=\"20\""
                       " j_floating_marker_id=\"30\" fx_expression=\"1\""
                       " usrsub_param_string=\"USER(1)\"/>\n" TAIL,
                  (const char *const[]){"Force_Vector_TwoBody 6: fx_expression", "give one of them",
                                        NULL});
     /* a dataset's: the statement, and the column of FOO (the value begins at 12) */
-    expect_error("bad.adm",
+    sim_expect_parse_error("bad.adm",
                  "ADAMS/View model\nPART/1, GROUND\nMARKER/10, PART=1\n"
                  "PART/2, MASS=2, CM=20, IP=1,1,1\nMARKER/20, PART=2, QP=3,4,0\n"
                  "SFORCE/4, TRANSLATION, I=20, J=10,\n"
                  ", FUNCTION=-100*(DM(20,10) - 4) - 2*FOO\nEND\n",
                  (const char *const[]){"bad.adm:7:37: SFORCE/4: Force_Scalar_TwoBody 4:",
                                        "unknown name FOO", NULL});
-    expect_error("badid.adm",
+    sim_expect_parse_error("badid.adm",
                  "ADAMS/View model\nPART/1, GROUND\nMARKER/10, PART=1\n"
                  "PART/2, MASS=2, CM=20, IP=1,1,1\nMARKER/20, PART=2, QP=3,4,0\n"
                  "GFORCE/4, I=20, JFLOAT=10, FX=0\\TY=DX(20,77)\nEND\n",

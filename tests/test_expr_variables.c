@@ -207,22 +207,11 @@ static void dataset_variables_and_requests(void **state)
     close_model(&m);
 }
 
-static void expect_error(const char *name, const char *text, const char *const *needles)
-{
-    hx_message msg;
-    hx_model *m = hx_model_parse(text, strlen(text), name, NULL, &msg);
-    if (m != NULL) {
-        hx_model_free(m);
-        fail_msg("%s read", name);
-    }
-    assert_contains_impl(msg.text, needles, __FILE__, __LINE__);
-}
-
 static void bad_variables_are_named(void **state)
 {
     (void)state;
     /* 1 reads 2, 2 reads 3, 3 reads 2: the loop is 2 and 3 (lines 9 and 10) */
-    expect_error("cycle.xml",
+    sim_expect_parse_error("cycle.xml",
                  HEAD "<Reference_Variable id=\"1\" expr=\"VARVAL(2)+1\"/>\n"
                       "<Reference_Variable id=\"2\" expr=\"2*VARVAL(3)\"/>\n"
                       "<Reference_Variable id=\"3\" expr=\"DX(20) - VARVAL(2)\"/>\n" TAIL,
@@ -230,35 +219,35 @@ static void bad_variables_are_named(void **state)
                                        "cycle.xml:9: Reference_Variable 2 reads VARVAL(3)",
                                        "cycle.xml:10: Reference_Variable 3 reads VARVAL(2)",
                                        NULL});
-    expect_error("self.adm",
+    sim_expect_parse_error("self.adm",
                  "ADAMS/View model\nPART/1, GROUND\nMARKER/10, PART=1\n"
                  "VARIABLE/5, FUNCTION=1 + VARVAL(5)\nEND\n",
                  (const char *const[]){"self.adm:4: Reference_Variable 5 reads VARVAL(5)",
                                        "algebraic loop", NULL});
-    expect_error("unknown.adm",
+    sim_expect_parse_error("unknown.adm",
                  "ADAMS/View model\nPART/1, GROUND\nMARKER/10, PART=1\n"
                  "VARIABLE/5, FUNCTION=1 + VARVAL(9)\nEND\n",
                  (const char *const[]){"unknown.adm:4:26:", "Reference_Variable 5: expr:",
                                        "no Reference_Variable 9", NULL});
-    expect_error("parse.xml",
+    sim_expect_parse_error("parse.xml",
                  HEAD "<Reference_Variable id=\"1\" expr=\"2*(DX(20)\"/>\n" TAIL,
                  (const char *const[]){"parse.xml:8:", "Reference_Variable 1: expr:", NULL});
     /* a force may read a Control_Diff's state (through a variable too), not its
      * rate, computed after the forces */
-    expect_error("dif.adm",
+    sim_expect_parse_error("dif.adm",
                  "ADAMS/View model\nPART/1, GROUND\nMARKER/10, PART=1\n"
                  "PART/2, MASS=2, CM=20, IP=1,1,1\nMARKER/20, PART=2, QP=3,4,0\n"
                  "DIFF/3, IC=1, FUNCTION=USER(1)\n"
                  "VARIABLE/5, FUNCTION=2*DIF(3)\n"
                  "SFORCE/4, TRANSLATION, I=20, J=10, FUNCTION=VARVAL(5) + DIF1(3)\nEND\n",
                  (const char *const[]){"dif.adm:8:", "DIF1(3)", "rate", NULL});
-    expect_error("dif1.adm",
+    sim_expect_parse_error("dif1.adm",
                  "ADAMS/View model\nPART/1, GROUND\nMARKER/10, PART=1\n"
                  "DIFF/3, IC=1, FUNCTION=USER(1)\n"
                  "VARIABLE/5, FUNCTION=2*DIF1(3)\nEND\n",
                  (const char *const[]){"dif1.adm:5:", "DIF1(3)", "not its rate", NULL});
     /* a Force_StateEqn's inputs are one measure each */
-    expect_error("stateeqn.xml",
+    sim_expect_parse_error("stateeqn.xml",
                  HEAD "<Reference_Variable id=\"1\" expr=\"2*DX(20)\"/>\n"
                       "<Reference_Array id=\"30\" type=\"U\" num_element=\"1\" variable_id=\"1\"/>\n"
                       "<Reference_Array id=\"31\" type=\"X\" num_element=\"1\"/>\n"

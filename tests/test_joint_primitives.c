@@ -210,13 +210,8 @@ static void dataset_and_xml_agree(void **state)
                               "JPRIM/3, I=10, J=21, inp\nJPRIM/4, I=21, J=10, ORIENTATION\n"
                               "JPRIM/5, I=21, J=10, PA\nJPRIM/6, I=21, J=10, PE\n"
                               "JOINT/1, SPHERICAL, I=21, J=10\nEND\n";
-    hx_message msg;
-    hx_model *x = hx_model_parse(xml, strlen(xml), "p.xml", NULL, &msg);
-    if (x == NULL)
-        fail_msg("%s", msg.text);
-    hx_model *a = hx_model_parse(adm, strlen(adm), "p.adm", NULL, &msg);
-    if (a == NULL)
-        fail_msg("%s", msg.text);
+    hx_model *x = sim_parse("p.xml", xml);
+    hx_model *a = sim_parse("p.adm", adm);
     assert_int_equal(x->njoints, 7);
     assert_int_equal(a->njoints, 7);
     assert_int_equal(a->nunsimulated, 0);
@@ -264,10 +259,7 @@ static void dataset_errors(void **state)
     }
     /* a primitive's word on a JOINT: read, not simulated, pointing at JPRIM */
     static const char joint[] = HEAD "JOINT/1, INLINE, I=20, J=10\nEND\n";
-    hx_message msg;
-    hx_model *m = hx_model_parse(joint, strlen(joint), "p.adm", NULL, &msg);
-    if (m == NULL)
-        fail_msg("%s", msg.text);
+    hx_model *m = sim_parse("p.adm", joint);
     assert_int_equal(m->nunsimulated, 1);
     assert_int_equal(m->njoints, 0);
     hx_model_free(m);

@@ -205,13 +205,8 @@ static void dataset_and_xml_agree(void **state)
                                    "JOINT/1, CONVEL, I=20, J=10\n"
                                    "JOINT/2, RACKPIN, I=20, J=11, PD=0.25\n"
                                    "JOINT/3, SCREW, I=20, J=10, PITCH=-0.5\nEND\n";
-    hx_message msg;
-    hx_model *x = hx_model_parse(xml, strlen(xml), "p.xml", NULL, &msg);
-    if (x == NULL)
-        fail_msg("%s", msg.text);
-    hx_model *a = hx_model_parse(adm, strlen(adm), "p.adm", NULL, &msg);
-    if (a == NULL)
-        fail_msg("%s", msg.text);
+    hx_model *x = sim_parse("p.xml", xml);
+    hx_model *a = sim_parse("p.adm", adm);
     assert_int_equal(a->nunsimulated, 0);
     assert_int_equal(x->njoints, 3);
     assert_int_equal(a->njoints, 3);

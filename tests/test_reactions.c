@@ -385,18 +385,6 @@ static void request_equals_the_csv_columns(void **state)
     csv_free(&t);
 }
 
-/* Reads text as name; the model must not read, and its message hold each needle. */
-static void expect_error(const char *name, const char *text, const char *const *needles)
-{
-    hx_message msg;
-    hx_model *m = hx_model_parse(text, strlen(text), name, NULL, &msg);
-    if (m != NULL) {
-        hx_model_free(m);
-        fail_msg("%s read", name);
-    }
-    assert_contains_impl(msg.text, needles, __FILE__, __LINE__);
-}
-
 static void joint_in_a_force_or_variable_is_refused(void **state)
 {
     (void)state;
@@ -405,28 +393,28 @@ static void joint_in_a_force_or_variable_is_refused(void **state)
     snprintf(text, sizeof text, "%s", pendulum("", 1.5, G, 0.0, JOINT_IJ("REVOLUTE", 21, 10)
              "\n<Force_Scalar_TwoBody id=\"4\" type=\"FORCE\" i_marker_id=\"20\""
              " j_marker_id=\"10\" val_expression=\"1 + JOINT(1,0,3,0)\"/>"));
-    expect_error("force.xml", text, (const char *const[]){"force.xml:9:5", "JOINT(1,0,3,0)",
+    sim_expect_parse_error("force.xml", text, (const char *const[]){"force.xml:9:5", "JOINT(1,0,3,0)",
                  "algebraic loop", "Force_Scalar_TwoBody", NULL});
     snprintf(text, sizeof text, "%s", pendulum("", 1.5, G, 0.0, JOINT_IJ("REVOLUTE", 21, 10)
              "\n<Reference_Variable id=\"3\" expr=\"JPRIM(1,0,3,0)\"/>"));
-    expect_error("variable.xml", text, (const char *const[]){"variable.xml:9:1",
+    sim_expect_parse_error("variable.xml", text, (const char *const[]){"variable.xml:9:1",
                  "JPRIM(1,0,3,0)", "algebraic loop", "Reference_Variable", NULL});
     /* in a request: an id the model lacks, a flag or component out of range */
     snprintf(text, sizeof text, "%s", pendulum("", 1.5, G, 0.0, JOINT_IJ("REVOLUTE", 21, 10)
              "\n<Post_Request id=\"5\" type=\"EXPRESSION\" expr2=\"JOINT(9,0,3,0)\"/>"));
-    expect_error("noid.xml", text, (const char *const[]){"noid.xml:9:", "JOINT(9,0,3,0)",
+    sim_expect_parse_error("noid.xml", text, (const char *const[]){"noid.xml:9:", "JOINT(9,0,3,0)",
                  "no Constraint_Joint (JOINT) 9", NULL});
     snprintf(text, sizeof text, "%s", pendulum("", 1.5, G, 0.0, JOINT_IJ("REVOLUTE", 21, 10)
              "\n<Post_Request id=\"5\" type=\"EXPRESSION\" expr2=\"JOINT(1,0,3,77)\"/>"));
-    expect_error("norm.xml", text, (const char *const[]){"norm.xml:9:", "rm (argument 4)",
+    sim_expect_parse_error("norm.xml", text, (const char *const[]){"norm.xml:9:", "rm (argument 4)",
                  "77", NULL});
     snprintf(text, sizeof text, "%s", pendulum("", 1.5, G, 0.0, JOINT_IJ("REVOLUTE", 21, 10)
              "\n<Post_Request id=\"5\" type=\"EXPRESSION\" expr2=\"JOINT(1,2,3,0)\"/>"));
-    expect_error("jflag.xml", text, (const char *const[]){"jflag.xml:9:", "jflag (argument 2)",
+    sim_expect_parse_error("jflag.xml", text, (const char *const[]){"jflag.xml:9:", "jflag (argument 2)",
                  NULL});
     snprintf(text, sizeof text, "%s", pendulum("", 1.5, G, 0.0, JOINT_IJ("REVOLUTE", 21, 10)
              "\n<Post_Request id=\"5\" type=\"EXPRESSION\" expr2=\"JOINT(1,0,9,0)\"/>"));
-    expect_error("comp.xml", text, (const char *const[]){"comp.xml:9:", "comp (argument 3)",
+    sim_expect_parse_error("comp.xml", text, (const char *const[]){"comp.xml:9:", "comp (argument 3)",
                  NULL});
 }
 
@@ -485,7 +473,7 @@ static void dataset_request_and_force(void **state)
     /* line 9, the function's column 44 */
     snprintf(text, sizeof text, "%sSFORCE/4, TRANSLATION, I = 20, J = 10, FUNCTION = JOINT(1,0,3,0)"
              "\nEND\n", head);
-    expect_error("sforce.adm", text, (const char *const[]){"sforce.adm:9:", "SFORCE/4",
+    sim_expect_parse_error("sforce.adm", text, (const char *const[]){"sforce.adm:9:", "SFORCE/4",
                  "JOINT(1,0,3,0)", "algebraic loop", NULL});
 }
 

@@ -1,6 +1,7 @@
 /* Shared helpers of the cmocka tests (test_support.h). */
 #include "test_support.h"
 
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -80,4 +81,53 @@ const char *test_write_file(const char *name, const char *content)
         exit(1);
     }
     return path;
+}
+
+const char *test_temp_path(const char *name)
+{
+    static char paths[8][512];
+    static int next;
+    char *path = paths[next++ % 8];
+    snprintf(path, 512, "%s/%s", test_temp_dir(), name);
+    return path;
+}
+
+static void read_back(const char *path, char *text, size_t size)
+{
+    FILE *f = fopen(path, "r");
+    size_t n = f != NULL ? fread(text, 1, size - 1, f) : 0;
+    text[n] = '\0';
+    if (f != NULL)
+        fclose(f);
+}
+
+void test_capture(test_command_fn *command, const char *const *args, test_captured *c)
+{
+    char out_path[512], err_path[512];
+    snprintf(out_path, sizeof out_path, "%s/captured_stdout.txt", test_temp_dir());
+    snprintf(err_path, sizeof err_path, "%s/captured_stderr.txt", test_temp_dir());
+    char *argv[32];
+    int argc = 0;
+    for (; args[argc] != NULL && argc < 31; ++argc)
+        argv[argc] = (char *)args[argc];
+    argv[argc] = NULL;
+    fflush(stdout);
+    fflush(stderr);
+    const int out_fd = open(out_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err_fd = open(err_path, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int saved_out = dup(STDOUT_FILENO), saved_err = dup(STDERR_FILENO);
+    assert_true(out_fd >= 0 && err_fd >= 0 && saved_out >= 0 && saved_err >= 0);
+    dup2(out_fd, STDOUT_FILENO);
+    dup2(err_fd, STDERR_FILENO);
+    close(out_fd);
+    close(err_fd);
+    c->status = command(argc, argv);
+    fflush(stdout);
+    fflush(stderr);
+    dup2(saved_out, STDOUT_FILENO);
+    dup2(saved_err, STDERR_FILENO);
+    close(saved_out);
+    close(saved_err);
+    read_back(out_path, c->out, sizeof c->out);
+    read_back(err_path, c->err, sizeof c->err);
 }

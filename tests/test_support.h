@@ -25,5 +25,16 @@ void assert_contains_impl(const char *text, const char *const *needles, const ch
 const char *test_temp_dir(void);
 /* Writes content to NAME in the temporary folder; returns the full path. */
 const char *test_write_file(const char *name, const char *content);
+/* NAME in the temporary folder (the last 8 kept). */
+const char *test_temp_path(const char *name);
+
+/* A command run in-process (argv[0] first, NULL-terminated), its status and
+ * what it wrote to stdout and stderr (through files, dup2), read back. */
+typedef int test_command_fn(int argc, char **argv);
+typedef struct test_captured {
+    int status;
+    char out[16384], err[16384];
+} test_captured;
+void test_capture(test_command_fn *command, const char *const *args, test_captured *c);
 
 #endif
