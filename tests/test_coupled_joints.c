@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "base/vecmath.h"
+#include "frames/measures.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/joint_coordinate.h"
@@ -156,6 +157,29 @@ static void coordinate_rows_against_differences(void **state)
             }
         close_opened(&o);
     }
+}
+
+/* The coordinate check and bench sample a coupler's joint at (frames/measures.h):
+ * a cylindrical joint with I turned 0.3 rad about J's z and 0.5 along it
+ * gives 0.3 for freedom R and 0.5 for T (its own coordinate, with no freedom
+ * named, the translation). */
+static void cylinder_coordinate_by_freedom(void **state)
+{
+    (void)state;
+    opened o;
+    open_text(&o, "turned.xml",
+              "<MotionSolve><Model>\n<Body_Ground id=\"1\"/>\n"
+              "<Reference_Marker id=\"11\" body_id=\"1\"/>\n"
+              "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\""
+              " inertia_zz=\"1\"/>\n"
+              "<Reference_Marker id=\"20\" body_id=\"2\" pos_z=\"0.5\"/>\n"
+              "<Reference_Marker id=\"21\" body_id=\"2\" pos_z=\"0.5\" psi=\"0.3\"/>\n"
+              "<Constraint_Joint id=\"1\" type=\"CYLINDRICAL\" i_marker_id=\"21\""
+              " j_marker_id=\"11\"/>\n</Model></MotionSolve>\n");
+    assert_close(hx_joint_coordinate(&o.s.frames, 0, 'R'), 0.3, 0, 1e-14);
+    assert_close(hx_joint_coordinate(&o.s.frames, 0, 'T'), 0.5, 0, 1e-14);
+    assert_close(hx_joint_coordinate(&o.s.frames, 0, 0), 0.5, 0, 1e-14);
+    close_opened(&o);
 }
 
 /* A coupler of the cylinder's rotation and a revolute (3) from body 3 to
@@ -580,6 +604,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(coordinate_rows_against_differences),
+        cmocka_unit_test(cylinder_coordinate_by_freedom),
         cmocka_unit_test(coupler_row_against_differences),
         cmocka_unit_test(gears_on_a_turning_carrier),
         cmocka_unit_test(reduced_and_general_pairs_agree),

@@ -115,13 +115,13 @@ void hx_force_deformation(const hx_frames *fr, int force, double disp[6], double
                    hx_frames_marker(fr, f->j_marker, &scratch[1]), disp, velo);
 }
 
-double hx_joint_coordinate(const hx_frames *fr, int joint)
+double hx_joint_coordinate(const hx_frames *fr, int joint, char freedom)
 {
     const hx_joint *j = &fr->model->joints[joint];
     hx_frame scratch[2];
     const hx_frame *I = hx_frames_marker(fr, j->i_marker, &scratch[0]);
     const hx_frame *J = hx_frames_marker(fr, j->j_marker, &scratch[1]);
-    if (j->type == HX_JOINT_REVOLUTE) {
+    if (freedom == 'R' || (freedom == 0 && j->type == HX_JOINT_REVOLUTE)) {
         double R[9], a[3];
         hx_relative_rotation(I, J, R);
         hx_projection_angles(R, a);

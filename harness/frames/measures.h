@@ -39,8 +39,9 @@ void hx_field_state(const hx_frame *I, const hx_frame *J, double disp[6], double
 /* The deformation of a force element of the model at a state. */
 void hx_force_deformation(const hx_frames *fr, int force, double disp[6], double velo[6]);
 
-/* Joint coordinate at a state: AZ(I,J) of a revolute or DZ(I,J,J) of a
- * translational joint. */
-double hx_joint_coordinate(const hx_frames *fr, int joint);
+/* Joint coordinate at a state: AZ(I,J) for freedom 'R' (a revolute's, or a
+ * cylindrical's rotation), DZ(I,J,J) for 'T' (a translational's, or a
+ * cylindrical's translation); freedom 0 takes the joint type's own. */
+double hx_joint_coordinate(const hx_frames *fr, int joint, char freedom);
 
 #endif

@@ -42,7 +42,7 @@ void hx_element_call_inputs(const hx_binding *b, const hx_frames *fr, const doub
     if (b->kind == HX_BIND_COUPLER) {
         const hx_coupler *c = &m->couplers[b->index];
         for (int i = 0; i < c->njoints; ++i)
-            in[i] = hx_joint_coordinate(fr, c->joint[i]);
+            in[i] = hx_joint_coordinate(fr, c->joint[i], c->freedom[i]);
     } else if (b->kind == HX_BIND_FIELD) {
         hx_force_deformation(fr, b->index, in, in + 6);
     } else if (b->kind == HX_BIND_STATEEQN) {

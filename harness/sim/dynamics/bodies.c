@@ -39,7 +39,7 @@ int hx_bodies_init(hx_dynamics *d, hx_message *msg)
         const hx_marker *mj = &m->markers[j->j_marker];
         v3_set(dof->axis, mj->R0[2], mj->R0[5], mj->R0[8]);
         v3_copy(dof->origin, mj->pos0);
-        dof->coord0 = hx_joint_coordinate(&d->s->frames, b->joint);
+        dof->coord0 = hx_joint_coordinate(&d->s->frames, b->joint, 0);
         if (j->type == HX_JOINT_REVOLUTE) {
             dof->kind = HX_DOF_REVOLUTE;
             double Iw[9], tmp[9], Ia[3], r[3], axr[3];

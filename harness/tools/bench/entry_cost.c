@@ -176,7 +176,7 @@ static void coupler_points(hx_session *s, hx_binding *b, int n, coupler_bench *c
     const hx_coupler *c = &s->model->couplers[b->index];
     double q0[3] = {0}, lo[3] = {0}, hi[3] = {0};
     for (int i = 0; i < n; ++i)
-        q0[i] = hx_joint_coordinate(&s->frames, c->joint[i]);
+        q0[i] = hx_joint_coordinate(&s->frames, c->joint[i], c->freedom[i]);
     hx_coupler_ranges(s->model, b->par, b->npar, n, q0, lo, hi);
     for (int i = 0; i < n; ++i)
         for (int k = 0; k < SAMPLE_POINTS; ++k)

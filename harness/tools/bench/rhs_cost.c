@@ -114,7 +114,7 @@ static int record_standins(hx_session *s, const hx_dynamics *d, hx_dynamics_data
             const hx_coupler *c = &s->model->couplers[b->index];
             double disp[3];
             for (int i = 0; i < c->njoints; ++i)
-                disp[i] = hx_joint_coordinate(&dd->frames, c->joint[i]);
+                disp[i] = hx_joint_coordinate(&dd->frames, c->joint[i], c->freedom[i]);
             for (int which = 0; which < 3; ++which)
                 hx_invoke_coupler(b, which, &dd->frames, disp, c->njoints, 0, st->out[which], NULL);
         } else if (b->kind == HX_BIND_FORCE) {

@@ -72,7 +72,7 @@ int hx_check_coupler(hx_session *s, hx_binding *b, FILE *out)
     const int n = c->njoints;
     double q0[3] = {0}, lo[3] = {0}, hi[3] = {0}, points[COUPLER_POINTS][3];
     for (int i = 0; i < n; ++i)
-        q0[i] = hx_joint_coordinate(&s->frames, c->joint[i]);
+        q0[i] = hx_joint_coordinate(&s->frames, c->joint[i], c->freedom[i]);
     const int layout = hx_coupler_ranges(s->model, b->par, b->npar, n, q0, lo, hi);
     make_points(n, lo, hi, points);
     coupler_sampler value = {b, &s->frames, n, 0}, slope = {b, &s->frames, n, 1};

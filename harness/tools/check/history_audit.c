@@ -113,7 +113,7 @@ static void choose_inputs(probe *p)
         const hx_coupler *c = &m->couplers[b->index];
         double q0[3] = {0}, lo[3] = {0}, hi[3] = {0};
         for (int i = 0; i < c->njoints; ++i)
-            q0[i] = hx_joint_coordinate(&p->s->frames, c->joint[i]);
+            q0[i] = hx_joint_coordinate(&p->s->frames, c->joint[i], c->freedom[i]);
         hx_coupler_ranges(m, b->par, b->npar, c->njoints, q0, lo, hi);
         for (int i = 0; i < c->njoints; ++i) {
             p->input[INPUT_A][i] = lo[i] + 0.31 * (hi[i] - lo[i]);
