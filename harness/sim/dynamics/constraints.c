@@ -230,14 +230,10 @@ static void joint_terms(const hx_dynamics *d, int k, const double *y, double *G,
                         double *gamma)
 {
     const hx_joint *j = &d->m->joints[k];
-    const hx_marker *mi = &d->m->markers[j->i_marker], *mj = &d->m->markers[j->j_marker];
     hx_frame fi, fj;
-    hx_bodies_frame(d, mi->body, y, &fi);
-    hx_bodies_frame(d, mj->body, y, &fj);
-    const hx_joint_side si = {&fi, mi->r_local, mi->R_local}, sj = {&fj, mj->r_local, mj->R_local};
-    hx_joint_law law;
-    hx_joint_equations_law(j, mi, mj, &law);
-    hx_joint_equations_eval(j->type, &law, &si, &sj, phi, G, gamma);
+    hx_bodies_frame(d, d->m->markers[j->i_marker].body, y, &fi);
+    hx_bodies_frame(d, d->m->markers[j->j_marker].body, y, &fj);
+    hx_joint_equations_of(d->m, k, &fi, &fj, phi, G, gamma);
     const int count = hx_joint_equations_count(j->type);
     for (int e = 0; e < count; ++e) {
         double *g = G + 12 * e, body[3];

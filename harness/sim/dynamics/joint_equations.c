@@ -325,3 +325,14 @@ void hx_joint_equations_eval(enum hx_joint_type type, const hx_joint_law *law,
         put(&o, &t);
     }
 }
+
+void hx_joint_equations_of(const hx_model *m, int joint, const hx_frame *fi, const hx_frame *fj,
+                           double *phi, double *G, double *gamma)
+{
+    const hx_joint *j = &m->joints[joint];
+    const hx_marker *mi = &m->markers[j->i_marker], *mj = &m->markers[j->j_marker];
+    const hx_joint_side si = {fi, mi->r_local, mi->R_local}, sj = {fj, mj->r_local, mj->R_local};
+    hx_joint_law law;
+    hx_joint_equations_law(j, mi, mj, &law);
+    hx_joint_equations_eval(j->type, &law, &si, &sj, phi, G, gamma);
+}

@@ -57,4 +57,9 @@ void hx_joint_equations_eval(enum hx_joint_type type, const hx_joint_law *law,
                              const hx_joint_side *i, const hx_joint_side *j, double *phi,
                              double *G, double *gamma);
 
+/* The same for joint `joint` of m, its I and J markers' bodies at frames fi
+ * and fj (world), its law from the model. */
+void hx_joint_equations_of(const hx_model *m, int joint, const hx_frame *fi, const hx_frame *fj,
+                           double *phi, double *G, double *gamma);
+
 #endif

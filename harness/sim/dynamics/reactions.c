@@ -36,11 +36,8 @@ static void from_rows(const hx_dynamics *d, const hx_dynamics_data *dd, int k, d
     const hx_joint *j = &d->m->joints[k];
     const hx_marker *mi = &d->m->markers[j->i_marker], *mj = &d->m->markers[j->j_marker];
     const hx_frame *fi = &dd->frames.bodies[mi->body], *fj = &dd->frames.bodies[mj->body];
-    const hx_joint_side si = {fi, mi->r_local, mi->R_local}, sj = {fj, mj->r_local, mj->R_local};
     double phi[HX_JOINT_MAX_EQUATIONS], G[12 * HX_JOINT_MAX_EQUATIONS];
-    hx_joint_law law;
-    hx_joint_equations_law(j, mi, mj, &law);
-    hx_joint_equations_eval(j->type, &law, &si, &sj, phi, G, NULL);
+    hx_joint_equations_of(d->m, k, fi, fj, phi, G, NULL);
     double F[3] = {0, 0, 0}, T[3] = {0, 0, 0}, r[3], rxF[3];
     const int first = d->joint_row[k], count = hx_joint_equations_count(j->type);
     for (int e = 0; e < count; ++e) {
