@@ -12,7 +12,10 @@
  *     deformation and rates, and the turning and lever arms of its force,
  *     both analytic in the motions of its bodies (body_motion.h), into the
  *     blocks of the bodies it joins;
- *   - each load (load_blocks.c) by differences of that load alone;
+ *   - each load (load_blocks.c): its expressions' exact partials times the
+ *     slopes of the measures they read (measure_slope.h) and of its own
+ *     geometry, analytic; a load that reads a variable by differences of
+ *     that load alone;
  *   - each Force_StateEqn (stateeqn_blocks.c): its partials (YFOXX..YFOYU, or
  *     differences of YFOSUB) with its inputs' slopes, by differences of the
  *     harness's measures on the bodies they measure;
@@ -74,6 +77,7 @@ typedef struct hx_jacobian {
      * time alone, marked once */
     unsigned char *driven;
     double *diff_scratch;       /* the Control_Diff expressions' partials (routine_blocks.c) */
+    double *load_scratch;       /* the loads' expressions' partials (load_blocks.c) */
     double *y, *f_plus, *f_minus;     /* scratch: n each */
     hx_messages twin_messages;  /* the twins' own messages, apart from the session's */
     long evaluations;           /* right-hand sides the builds evaluated */
