@@ -1,16 +1,18 @@
 /*
  * The loads' blocks of the Jacobian (jacobian.h). A load whose expressions
- * read TIME, measures of markers and Control_Diff states (DIF) only is
- * exact: its expressions' partials in their inputs (expr/evaluate.h), times
- * each measure's slope in the motion of a body's column (measure_slope.h),
- * or 1 for the DIF of a state's own column, give the change of its values;
- * with the turning of its axes (a vector load's reference marker, a scalar
- * torque's z of J), the line from J to I of a scalar force and the lever
- * arms about the bodies' centres, the change of its wrenches on its bodies.
- * A load that reads a variable (VARVAL, ARYVAL of a U array) is taken by
- * central differences of that load alone, the variables recomputed at each
- * moved state, on the columns of the bodies its markers sit on and of those
- * its expressions measure (hx_load_bodies) and of the states they read.
+ * read TIME, measures of markers, Control_Diff states (DIF) and variables
+ * (VARVAL, ARYVAL of a U array: a number, one measure, or an expression
+ * that reads those) is exact: its expressions' partials in their inputs
+ * (expr/evaluate.h), times each measure's slope in the motion of a body's
+ * column (measure_slope.h), 1 for the DIF of a state's own column, or a
+ * variable's own partials times its inputs' changes, give the change of
+ * its values; with the turning of its axes (a vector load's reference
+ * marker, a scalar torque's z of J), the line from J to I of a scalar force
+ * and the lever arms about the bodies' centres, the change of its wrenches
+ * on its bodies. A load that reads any other variable is taken by central
+ * differences of that load alone, the variables recomputed at each moved
+ * state, on the columns of the bodies its markers sit on and of those its
+ * expressions measure (hx_load_bodies) and of the states they read.
  * docs/architecture.md, "The Jacobian".
  */
 #include <stdio.h>
@@ -138,21 +140,34 @@ static void programs_of(const hx_load *l, const hx_expr_program *p[HX_LOAD_PROGR
     memcpy(p, all, sizeof all);
 }
 
-/* Whether load l's expressions read only inputs with exact partials here:
- * TIME, measures, DIF (a variable's value is taken by differences). */
-static int reads_exactly(const hx_load *l)
+/* Whether program p reads only inputs with exact partials here: TIME,
+ * measures, DIF, and the variables (VARVAL, ARYVAL of a U array) that are
+ * a number, one measure, or expressions that read those in turn (they form
+ * no cycle: model/variable_programs.c). */
+static int program_exact(const hx_model *m, const hx_expr_program *p)
+{
+    const hx_expr_input *in = hx_expr_inputs(p);
+    for (int j = 0; j < hx_expr_input_count(p); ++j) {
+        if (in[j].variable >= 0) {
+            const hx_variable *v = &m->variables[in[j].variable];
+            if (v->program == NULL ? v->function[0] != '\0' && hx_measure_find(v->function) < 0
+                                   : !program_exact(m, v->program))
+                return 0;
+        } else if (in[j].kind != HX_EXPR_INPUT_TIME && in[j].kind != HX_EXPR_INPUT_MEASURE &&
+                   in[j].kind != HX_EXPR_INPUT_DIF) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static int reads_exactly(const hx_model *m, const hx_load *l)
 {
     const hx_expr_program *p[HX_LOAD_PROGRAMS];
     programs_of(l, p);
-    for (int i = 0; i < HX_LOAD_PROGRAMS; ++i) {
-        if (p[i] == NULL)
-            continue;
-        const hx_expr_input *in = hx_expr_inputs(p[i]);
-        for (int j = 0; j < hx_expr_input_count(p[i]); ++j)
-            if (in[j].kind != HX_EXPR_INPUT_TIME && in[j].kind != HX_EXPR_INPUT_MEASURE &&
-                in[j].kind != HX_EXPR_INPUT_DIF)
-                return 0;
-    }
+    for (int i = 0; i < HX_LOAD_PROGRAMS; ++i)
+        if (p[i] != NULL && !program_exact(m, p[i]))
+            return 0;
     return 1;
 }
 
@@ -167,6 +182,10 @@ int hx_load_blocks_init(hx_jacobian *jac, hx_message *msg)
             if (p[i] != NULL && hx_expr_scratch_size(p[i]) > scratch)
                 scratch = hx_expr_scratch_size(p[i]);
     }
+    for (int k = 0; k < m->nvariables; ++k) /* the variables' partials, one at a time */
+        if (m->variables[k].program != NULL &&
+            hx_expr_scratch_size(m->variables[k].program) > scratch)
+            scratch = hx_expr_scratch_size(m->variables[k].program);
     jac->load_scratch = malloc(sizeof(double) * scratch);
     return jac->load_scratch == NULL ? hx_fail(msg, "out of memory") : 0;
 }
@@ -210,16 +229,69 @@ static const hx_motion *marker_motion(const hx_jacobian *jac, int marker, const 
     return out;
 }
 
-/* The change of program i's value when body b moves by mo (its measures'
- * slopes times their partials). */
-static double value_change(const hx_jacobian *jac, const load_values *lv, int i, int b,
-                           const hx_motion *mo)
+static double program_change(hx_jacobian *jac, const hx_expr_program *p,
+                             const double *partials, int b, const hx_motion *mo, int slot);
+
+/* The change of variable k's value (an expression's) when body b moves by
+ * mo, or per unit of Control_Diff state `slot` (b = -1): its partials at
+ * the build's state times its inputs' changes. A fault of its partials (one
+ * not finite: SQRT at 0) fails the build (jac->dd) and counts 0 here. */
+static double variable_change(hx_jacobian *jac, int k, int b, const hx_motion *mo, int slot)
 {
-    const hx_expr_input *in = hx_expr_inputs(lv->p[i]);
+    const hx_model *m = jac->d->m;
+    const hx_variable *v = &m->variables[k];
+    if (v->program == NULL) { /* a number, or sign times one measure (state_inputs.c) */
+        if (v->function[0] == '\0' || b < 0)
+            return 0.0;
+        hx_frame scratch[4];
+        hx_motion motion[4];
+        const hx_frame *f[4];
+        const hx_motion *mm[4];
+        for (int a = 0; a < 4; ++a) {
+            const int marker = a < v->nmarkers && v->marker_ids[a] != 0
+                                   ? hx_model_marker(m, v->marker_ids[a]) : -1;
+            f[a] = hx_frames_marker(&jac->dd.frames, marker, &scratch[a]);
+            mm[a] = marker_motion(jac, marker, f[a], b, mo, &motion[a]);
+        }
+        return v->sign * hx_measure_slope((hx_measure)hx_measure_find(v->function), f, mm);
+    }
+    const hx_expr_context c = {&jac->dd.frames, jac->dd.frames.variables, NULL};
+    double value, partials[HX_EXPR_MAX_INPUTS];
+    hx_expr_fault fault;
+    if (hx_expr_eval_partials(v->program, &c, &value, partials, jac->load_scratch, &fault) != 0) {
+        char element[48];
+        hx_message msg;
+        snprintf(element, sizeof element, "Reference_Variable %d", v->id);
+        hx_expr_fail(&msg, v->program, &fault, element);
+        hx_dynamics_fail(&jac->dd, "%s", msg.text);
+        return 0.0;
+    }
+    return program_change(jac, v->program, partials, b, mo, slot);
+}
+
+/* The change of program p's value (partials its partials in its inputs)
+ * when body b moves by mo (b = -1: none), or per unit of Control_Diff
+ * state `slot` (-1: none): each measure's slope, 1 for DIF of that state,
+ * a variable's change, times its partial. */
+static double program_change(hx_jacobian *jac, const hx_expr_program *p,
+                             const double *partials, int b, const hx_motion *mo, int slot)
+{
+    const hx_expr_input *in = hx_expr_inputs(p);
     const hx_frames *fr = &jac->dd.frames;
     double change = 0.0;
-    for (int j = 0; j < hx_expr_input_count(lv->p[i]); ++j) {
-        if (in[j].kind != HX_EXPR_INPUT_MEASURE || lv->partials[i][j] == 0.0)
+    for (int j = 0; j < hx_expr_input_count(p); ++j) {
+        if (partials[j] == 0.0)
+            continue;
+        if (in[j].variable >= 0) {
+            change += partials[j] * variable_change(jac, in[j].variable, b, mo, slot);
+            continue;
+        }
+        if (in[j].kind == HX_EXPR_INPUT_DIF) {
+            if (slot >= 0 && in[j].index[0] == slot)
+                change += partials[j];
+            continue;
+        }
+        if (in[j].kind != HX_EXPR_INPUT_MEASURE || b < 0)
             continue;
         hx_frame scratch[4];
         hx_motion motion[4];
@@ -232,7 +304,7 @@ static double value_change(const hx_jacobian *jac, const load_values *lv, int i,
             moves |= m[a] != NULL;
         }
         if (moves)
-            change += lv->partials[i][j] * hx_measure_slope((hx_measure)in[j].measure, f, m);
+            change += partials[j] * hx_measure_slope((hx_measure)in[j].measure, f, m);
     }
     return change;
 }
@@ -342,13 +414,10 @@ static int exact(hx_jacobian *jac, int k)
     int slots[HX_LOAD_BODIES_MAX];
     const int nslots = hx_load_diffs(m, k, slots);
     for (int s = 0; s < nslots; ++s) { /* d/dDIF: the partials in that input */
-        for (int i = 0; i < HX_LOAD_PROGRAMS; ++i) {
-            dvalue[i] = 0.0;
-            const hx_expr_input *in = lv.p[i] != NULL ? hx_expr_inputs(lv.p[i]) : NULL;
-            for (int j = 0; in != NULL && j < hx_expr_input_count(lv.p[i]); ++j)
-                if (in[j].kind == HX_EXPR_INPUT_DIF && in[j].index[0] == slots[s])
-                    dvalue[i] += lv.partials[i][j];
-        }
+        for (int i = 0; i < HX_LOAD_PROGRAMS; ++i)
+            dvalue[i] = lv.p[i] != NULL
+                            ? program_change(jac, lv.p[i], lv.partials[i], -1, NULL, slots[s])
+                            : 0.0;
         put_load_change(jac, k, &lv, dvalue, -1, NULL, d->diff_offset + slots[s]);
     }
     int bodies[HX_LOAD_BODIES_MAX];
@@ -363,11 +432,13 @@ static int exact(hx_jacobian *jac, int k)
             hx_motion mo;
             hx_body_column_motion(d, b, c, jac->y, &jac->dd.frames.bodies[b], &mo);
             for (int i = 0; i < HX_LOAD_PROGRAMS; ++i)
-                dvalue[i] = lv.p[i] != NULL ? value_change(jac, &lv, i, b, &mo) : 0.0;
+                dvalue[i] = lv.p[i] != NULL
+                                ? program_change(jac, lv.p[i], lv.partials[i], b, &mo, -1)
+                                : 0.0;
             put_load_change(jac, k, &lv, dvalue, b, &mo, columns[c]);
         }
     }
-    return 0;
+    return jac->dd.failed ? -1 : 0; /* a variable's partials faulted */
 }
 
 int hx_load_blocks(hx_jacobian *jac, double t, const double *y)
@@ -378,7 +449,7 @@ int hx_load_blocks(hx_jacobian *jac, double t, const double *y)
     for (int k = 0; k < m->nloads; ++k) {
         if (d->load_off[k])
             continue; /* switched off: nothing on the bodies, nothing here */
-        const int status = reads_exactly(&m->loads[k]) ? exact(jac, k) : differences(jac, k);
+        const int status = reads_exactly(m, &m->loads[k]) ? exact(jac, k) : differences(jac, k);
         if (status != 0)
             return -1;
     }
