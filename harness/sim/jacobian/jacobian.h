@@ -13,16 +13,18 @@
  *     both analytic in the motions of its bodies (body_motion.h), into the
  *     blocks of the bodies it joins;
  *   - each load (load_blocks.c): its expressions' exact partials times the
- *     slopes of the measures they read (measure_slope.h) and of its own
- *     geometry, analytic; a load that reads a variable by differences of
- *     that load alone;
+ *     slopes of the measures they read (measure_slope.h), through the
+ *     variables they read, and of its own geometry, analytic; a load that
+ *     reads a variable of another kind by differences of that load alone;
  *   - each Force_StateEqn (stateeqn_blocks.c): its partials (YFOXX..YFOYU, or
  *     differences of YFOSUB) with its inputs' slopes, by differences of the
  *     harness's measures on the bodies they measure;
  *   - the couplers (coupler_blocks.c): the accelerations they project, P
  *     J_free, plus their own terms by differences of the constraint stage;
  *   - the routines (routine_blocks.c): Control_Diff rows by differences of
- *     DIFSUB; a driven joint's rows, functions of time alone, zero.
+ *     DIFSUB (or of the expression, exact in the states it reads by DIF),
+ *     with the rates they read by DIF1 computed again; a driven joint's
+ *     rows, functions of time alone, zero.
  *
  * Its cost grows with the number of elements. The work accumulators' rows
  * are left out (their diagonal only): nothing depends on them, so Newton's
