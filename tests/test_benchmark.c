@@ -1,6 +1,7 @@
 /*
  * The benchmark's instruments: each method's stability limit against known
- * values; the fastest mode of a model against its analytic eigenvalue; a
+ * values; the fastest mode of a model against its analytic eigenvalue (a
+ * stiff Control_Diff's among them); a
  * stiff model run above the limit ending unstable (and below it finishing);
  * the closed-form references against tight adaptive runs; a short
  * work-precision sweep (orders of convergence, DOPRI5 cheaper than RK4 at
@@ -68,6 +69,38 @@ static void fastest_mode_of_the_damped_oscillator(void **state)
     assert_close(st.re, -150.0, 1e-5, 0);
     assert_close(st.im, sqrt(500.0 * 500.0 - 150.0 * 150.0), 1e-6, 0);
     assert_close(st.max_step[HX_METHOD_RK4], hx_stable_step(HX_METHOD_RK4, -150.0, st.im), 1e-5, 0);
+    sim_close(&s);
+}
+
+/* A body on a soft spring (omega = sqrt(200 / 2) = 10 rad/s along the line)
+ * beside a stiff filter state, DIF(1)' = -1e4 DIF(1): the fastest mode is the
+ * state's, lambda = -1e4 (real), and RK4's limit 2.785 / 1e4 (its reach on the
+ * negative real axis, stability_limits_of_each_method). Left out of the
+ * estimate, the state's mode would leave the spring's, |lambda| = 10. */
+static void fastest_mode_of_a_stiff_control_diff(void **state)
+{
+    (void)state;
+    static const char *const text =
+        "ADAMS/View model\nPART/1, GROUND\nMARKER/10, PART=1\n"
+        "PART/2, MASS=2, CM=20, IP=1,1,1\nMARKER/20, PART=2, QP=3,4,0\n"
+        "SFORCE/7, TRANSLATION, I=20, J=10, FUNCTION=-200*(DM(20,10) - 4.9)\n"
+        "DIFF/1, IC=1, FUNCTION=-1E4*DIF(1)\nEND\n";
+    sim s;
+    hx_message msg;
+    memset(&s, 0, sizeof s);
+    if (hx_session_open(&s.session, test_write_file("stiff_diff.adm", text), stderr, &msg) != 0 ||
+        hx_dynamics_init(&s.dynamics, &s.session, &msg) != 0 ||
+        hx_dynamics_data_init(&s.data, &s.dynamics, &msg) != 0)
+        fail_msg("%s", msg.text);
+    double y[64];
+    assert_true(s.dynamics.n <= 64);
+    assert_int_equal(hx_dynamics_initial_state(&s.dynamics, &s.data, y), 0);
+    hx_stability st;
+    assert_int_equal(hx_estimate_stability(&s.dynamics, 0.0, y, &st, &msg), 0);
+    assert_close(st.magnitude, 1e4, 1e-6, 0);
+    assert_close(st.re, -1e4, 1e-6, 0);
+    assert_true(st.im == 0.0);
+    assert_close(st.max_step[HX_METHOD_RK4], 2.78529356340528e-4, 1e-6, 0);
     sim_close(&s);
 }
 
@@ -305,6 +338,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(stability_limits_of_each_method),
         cmocka_unit_test(fastest_mode_of_the_damped_oscillator),
+        cmocka_unit_test(fastest_mode_of_a_stiff_control_diff),
         cmocka_unit_test(a_step_beyond_the_limit_is_reported_unstable),
         cmocka_unit_test(closed_forms_match_tight_adaptive_runs),
         cmocka_unit_test(work_precision_orders_and_dopri5_against_rk4),

@@ -118,6 +118,36 @@ static void jacobian_row_against_differences(void **state)
     close_model(&m), close_model(&f);
 }
 
+/* A rate read by DIF1 whose own rate depends on the body: DIFF 3's rate reads
+ * DIF1(2), DIFF 2's rate the body's DX and VY, and a spring reads DIF(3), so
+ * the body's columns reach DIFF 3's row through DIFF 2's rate and the
+ * body's rows through DIFF 3's state. The Jacobian (DIFF 3's row on the
+ * body's and DIFF 2's columns, DIF1(2) computed again at each moved state)
+ * against differences of the whole right-hand side away from the start,
+ * and BDF with it against BDF with differences. */
+static void rate_read_by_dif1_in_the_jacobian(void **state)
+{
+    (void)state;
+    static const char *const text =
+        ADM_HEAD "DIFF/2, IC=0.2, FUNCTION=DX(20,10)*VY(20,10) - 3*DIF(2)\n"
+                 "DIFF/3, IC=0.1, FUNCTION=-5*DIF(3) + 2*DIF1(2) + DIF1(2)*DIF(3)\n"
+                 "SFORCE/7, TRANSLATION, I=20, J=10, FUNCTION=-40*(DM(20,10) - 5) - "
+                 "2*VR(20,10) + 3*DIF(3)\nEND\n";
+    model m;
+    double *y = run("rate.adm", text, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, 1e-9, 0.4, &m);
+    long outside = 0;
+    const double worst = jacobian_against_differences(&m.d, 0.4, y, "DIF1", &outside);
+    printf("a rate read by DIF1: worst %.3g against differences, %ld outside\n", worst, outside);
+    assert_int_equal(outside, 0);
+    assert_true(worst < 1e-6);
+    model f;
+    double *yf = run("rate.adm", text, HX_METHOD_BDF, HX_JACOBIAN_FD, 1e-9, 0.4, &f);
+    for (int id = 2; id <= 3; ++id)
+        assert_close(diff_value(&m, y, id), diff_value(&f, yf, id), 1e-6, 1e-9);
+    free(y), free(yf);
+    close_model(&m), close_model(&f);
+}
+
 /* Forces reading DIF, directly and through a variable: a spring whose
  * stiffness a state ramps (DIF(1) -> 3 with rate 2 (3 - DIF(1))), and a
  * damping force scaled by VARVAL(5) = DIF(2)^2. At the start, DIF(1) = 0.5:
@@ -225,6 +255,7 @@ int main(void)
         cmocka_unit_test(linear_rate_against_the_closed_form),
         cmocka_unit_test(states_integrating_a_displacement),
         cmocka_unit_test(jacobian_row_against_differences),
+        cmocka_unit_test(rate_read_by_dif1_in_the_jacobian),
         cmocka_unit_test(forces_reading_states),
         cmocka_unit_test(xml_and_dataset_bit_identical),
         cmocka_unit_test(bad_diffs_are_named),

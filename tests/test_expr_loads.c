@@ -11,8 +11,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/vecmath.h"
 #include "model_runs.h"
 #include "sim/dynamics/loads.h"
+#include "sim/jacobian/measure_slope.h"
 #include "sim_support.h"
 #include "test_support.h"
 
@@ -154,6 +156,134 @@ static void jacobian_of_expression_loads_equals_differences(void **state)
     assert_int_equal(r.status, HX_INTEGRATION_OK);
     long outside = 0;
     const double worst = jacobian_against_differences(&m.d, 0.3, y, "expression loads", &outside);
+    assert_int_equal(outside, 0);
+    assert_true(worst < 1e-6);
+    free(y), free(ydot);
+    close_model(&m);
+}
+
+/* A number in [-1, 1) from a fixed sequence (the test is the same every run). */
+static double next(unsigned *seed)
+{
+    *seed = *seed * 1664525u + 1013904223u;
+    return ((*seed >> 8) & 0xffffff) / 8388608.0 - 1.0;
+}
+
+/* Frame f moved by s mo: p + s dp, R turned by s dth (world axes), v + s dv,
+ * w + s dw. */
+static void moved_frame(const hx_frame *f, const hx_motion *mo, double s, hx_frame *out)
+{
+    *out = *f;
+    if (mo == NULL)
+        return;
+    double turn[9], axis[3];
+    const double angle = s * v3_norm(mo->dth);
+    v3_scale(axis, mo->dth, 1.0 / v3_norm(mo->dth));
+    m3_axis_angle(turn, axis, angle);
+    m3_mul(out->R, turn, f->R);
+    v3_axpy(out->p, s, mo->dp);
+    v3_axpy(out->v, s, mo->dv);
+    v3_axpy(out->w, s, mo->dw);
+}
+
+/* Every measure's slope (measure_slope.h) against central differences of
+ * its value (hx_measure_value) along the same motion, at 40 sets of four
+ * frames and motions drawn at random (every position, axis, velocity and
+ * angular velocity varies; a frame left still now and then, as the world's
+ * is): a wrong sign, factor or index in any formula fails here. */
+static void measure_slopes_against_differences(void **state)
+{
+    (void)state;
+    unsigned seed = 7u;
+    double worst = 0.0;
+    for (int trial = 0; trial < 40; ++trial) {
+        hx_frame f[4];
+        hx_motion mo[4];
+        const hx_motion *m[4];
+        for (int a = 0; a < 4; ++a) {
+            double axis[3] = {next(&seed), next(&seed), next(&seed)};
+            v3_scale(axis, axis, 1.0 / v3_norm(axis));
+            m3_axis_angle(f[a].R, axis, 3.0 * next(&seed));
+            for (int i = 0; i < 3; ++i) {
+                f[a].p[i] = 2.0 * next(&seed), f[a].v[i] = next(&seed), f[a].w[i] = next(&seed);
+                mo[a].dp[i] = next(&seed), mo[a].dth[i] = next(&seed);
+                mo[a].dv[i] = next(&seed), mo[a].dw[i] = next(&seed);
+            }
+            m[a] = (trial + a) % 5 == 4 ? NULL : &mo[a];
+        }
+        const hx_frame *const fp[4] = {&f[0], &f[1], &f[2], &f[3]};
+        for (int k = 0; k < HX_MEASURE_COUNT; ++k) {
+            const double h = 1e-6;
+            hx_frame up[4], down[4];
+            for (int a = 0; a < 4; ++a) {
+                moved_frame(&f[a], m[a], h, &up[a]);
+                moved_frame(&f[a], m[a], -h, &down[a]);
+            }
+            const hx_frame *const pu[4] = {&up[0], &up[1], &up[2], &up[3]};
+            const hx_frame *const pd[4] = {&down[0], &down[1], &down[2], &down[3]};
+            const double difference =
+                (hx_measure_value((hx_measure)k, pu) - hx_measure_value((hx_measure)k, pd)) / (2 * h);
+            const double slope = hx_measure_slope((hx_measure)k, fp, m);
+            const double error = fabs(slope - difference) / fmax(1.0, fabs(difference));
+            if (error > 1e-6)
+                fail_msg("%s, trial %d: slope %.12g, differences %.12g",
+                         hx_measure_name((hx_measure)k), trial, slope, difference);
+            worst = fmax(worst, error);
+        }
+    }
+    printf("measure slopes against differences: worst relative error %.3g\n", worst);
+}
+
+/* The exact load blocks (load_blocks.c) on every measure an expression may
+ * read, against differences of the whole right-hand side at a state away
+ * from the start (both bodies turning about every axis, a state's rate
+ * moved): a vector load between two bodies in the axes of a marker on the
+ * second (its turning enters), a scalar torque about the z of a turned
+ * marker on body 2, a scalar force and its action-only twin, each reading
+ * DIF(1) too. A sign, a lever arm or a column wrong in any of them fails. */
+static void exact_load_blocks_on_every_measure(void **state)
+{
+    (void)state;
+    model m;
+    double *y, *ydot;
+    open_text(&m, "measures.xml",
+              "<MotionSolve><Model>\n"
+              "<Body_Ground id=\"1\"/>\n<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+              "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"2\" inertia_xx=\"1\" inertia_yy=\"1.5\""
+              " inertia_zz=\"2\" v_ic_x=\"1\" v_ic_y=\"2\" v_ic_z=\"0.5\" w_ic_x=\"0.4\""
+              " w_ic_y=\"-0.7\" w_ic_z=\"0.9\"/>\n"
+              "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"3\" pos_y=\"4\"/>\n"
+              "<Reference_Marker id=\"21\" body_id=\"2\" pos_x=\"3.5\" pos_y=\"4\" pos_z=\"0.3\""
+              " psi=\"0.4\" theta=\"0.7\" phi=\"-0.3\"/>\n"
+              "<Body_Rigid id=\"3\" cg_id=\"30\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\""
+              " inertia_zz=\"1.2\" v_ic_x=\"-0.5\" w_ic_x=\"-0.2\" w_ic_y=\"0.5\" w_ic_z=\"0.3\"/>\n"
+              "<Reference_Marker id=\"30\" body_id=\"3\" pos_x=\"1\" pos_y=\"-1\" pos_z=\"2\"/>\n"
+              "<Reference_Marker id=\"31\" body_id=\"3\" pos_x=\"1.2\" pos_y=\"-1\" pos_z=\"2.5\""
+              " psi=\"-0.6\" theta=\"0.5\" phi=\"1.1\"/>\n"
+              "<Control_Diff id=\"1\" type=\"EXPRESSION\" ic=\"0.5\""
+              " expr=\"-DIF(1) + 0.1*DX(20,10)\"/>\n"
+              "<Force_Vector_TwoBody id=\"8\" type=\"ForceAndTorque\" i_marker_id=\"21\""
+              " j_floating_marker_id=\"30\" ref_marker_id=\"31\""
+              " fx_expression=\"-3*AX(21,31) + 2*PSI(21,31) - DIF(1)*AZ(31,21)\""
+              " fy_expression=\"THETA(21,31)*PHI(21,31) - 5*DY(21,30,31)\""
+              " fz_expression=\"YAW(31,21) - PITCH(21,31) + ROLL(21,31) - 4*DZ(21,30)\""
+              " tx_expression=\"INCANG(21,10,30) - 0.5*VX(21,30,31,20)\""
+              " ty_expression=\"0.1*VM(21,30,31) - WY(21,30,31)\""
+              " tz_expression=\"-WM(21,30) + VZ(30,21,20,31)\"/>\n"
+              "<Force_Scalar_TwoBody id=\"9\" type=\"TORQUE\" i_marker_id=\"30\""
+              " j_marker_id=\"21\" val_expression=\"-4*AY(30,21) - WZ(30,21,21) + DIF(1)\"/>\n"
+              "<Force_Scalar_TwoBody id=\"10\" type=\"FORCE\" i_marker_id=\"20\""
+              " j_marker_id=\"31\" val_expression=\"-30*(DM(20,31) - 4) - VR(20,31,21)"
+              " + DIF(1)*DX(20,30,21)\"/>\n"
+              "<Force_Scalar_TwoBody id=\"11\" type=\"FORCE\" i_marker_id=\"30\""
+              " j_marker_id=\"21\" is_action_only=\"TRUE\""
+              " val_expression=\"-10*(DM(30,21) - 3) - 0.5*VR(30,21)\"/>\n" TAIL,
+              &y, &ydot);
+    hx_simulation_result r = simulate(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-10, 0.2, y);
+    assert_int_equal(r.status, HX_INTEGRATION_OK);
+    long outside = 0;
+    const double worst = jacobian_against_differences(&m.d, 0.2, y, "every measure", &outside);
+    printf("exact load blocks on every measure: worst %.3g against differences\n", worst);
     assert_int_equal(outside, 0);
     assert_true(worst < 1e-6);
     free(y), free(ydot);
@@ -320,6 +450,8 @@ int main(void)
         cmocka_unit_test(scalar_torque_by_expression),
         cmocka_unit_test(vector_forces_between_two_bodies),
         cmocka_unit_test(jacobian_of_expression_loads_equals_differences),
+        cmocka_unit_test(measure_slopes_against_differences),
+        cmocka_unit_test(exact_load_blocks_on_every_measure),
         cmocka_unit_test(dataset_forces_by_expressions),
         cmocka_unit_test(bad_expressions_are_named),
         cmocka_unit_test(faults_during_a_run_are_named),

@@ -42,7 +42,8 @@ int hx_jacobian_init(hx_jacobian *jac, const hx_dynamics *d, hx_message *msg)
         return hx_fail(msg, "out of memory");
     }
     /* each part says why it failed */
-    if (hx_element_blocks_init(jac, msg) != 0 || hx_stateeqn_blocks_init(jac, msg) != 0 ||
+    if (hx_element_blocks_init(jac, msg) != 0 || hx_load_blocks_init(jac, msg) != 0 ||
+        hx_stateeqn_blocks_init(jac, msg) != 0 ||
         hx_routine_blocks_init(jac, msg) != 0 || hx_jacobian_pattern(jac, msg) != 0) {
         hx_jacobian_free(jac);
         return -1;
@@ -68,6 +69,7 @@ void hx_jacobian_free(hx_jacobian *jac)
     free(jac->projector);
     free(jac->driven);
     free(jac->diff_scratch);
+    free(jac->load_scratch);
     free(jac->y);
     hx_dynamics_data_free(&jac->dd);
     hx_messages_destroy(&jac->twin_messages);

@@ -12,14 +12,19 @@
  *     deformation and rates, and the turning and lever arms of its force,
  *     both analytic in the motions of its bodies (body_motion.h), into the
  *     blocks of the bodies it joins;
- *   - each load (load_blocks.c) by differences of that load alone;
+ *   - each load (load_blocks.c): its expressions' exact partials times the
+ *     slopes of the measures they read (measure_slope.h), through the
+ *     variables they read, and of its own geometry, analytic; a load that
+ *     reads a variable of another kind by differences of that load alone;
  *   - each Force_StateEqn (stateeqn_blocks.c): its partials (YFOXX..YFOYU, or
  *     differences of YFOSUB) with its inputs' slopes, by differences of the
  *     harness's measures on the bodies they measure;
  *   - the couplers (coupler_blocks.c): the accelerations they project, P
  *     J_free, plus their own terms by differences of the constraint stage;
  *   - the routines (routine_blocks.c): Control_Diff rows by differences of
- *     DIFSUB; a driven joint's rows, functions of time alone, zero.
+ *     DIFSUB (or of the expression, exact in the states it reads by DIF),
+ *     with the rates they read by DIF1 computed again; a driven joint's
+ *     rows, functions of time alone, zero.
  *
  * Its cost grows with the number of elements. The work accumulators' rows
  * are left out (their diagonal only): nothing depends on them, so Newton's
@@ -74,6 +79,7 @@ typedef struct hx_jacobian {
      * time alone, marked once */
     unsigned char *driven;
     double *diff_scratch;       /* the Control_Diff expressions' partials (routine_blocks.c) */
+    double *load_scratch;       /* the loads' expressions' partials (load_blocks.c) */
     double *y, *f_plus, *f_minus;     /* scratch: n each */
     hx_messages twin_messages;  /* the twins' own messages, apart from the session's */
     long evaluations;           /* right-hand sides the builds evaluated */

@@ -77,6 +77,8 @@ int hx_element_blocks_init(hx_jacobian *jac, hx_message *msg);
 /* After the pattern: where each element's rows sit in its columns. */
 void hx_element_blocks_locate(hx_jacobian *jac);
 int hx_element_blocks(hx_jacobian *jac, double t, const double *y);
+/* The loads' expressions' scratch (load_blocks.c); 0, or -1 with msg. */
+int hx_load_blocks_init(hx_jacobian *jac, hx_message *msg);
 int hx_load_blocks(hx_jacobian *jac, double t, const double *y);
 int hx_stateeqn_blocks_init(hx_jacobian *jac, hx_message *msg);
 void hx_stateeqn_blocks_free(hx_jacobian *jac);

@@ -1,9 +1,13 @@
 /*
  * The Newton matrix's rows of the user routines that are not forces
  * (sim/dynamics/routines.h): a Control_Diff's row by central differences of
- * DIFSUB in its own state and in the columns its declared queries read (the
- * bodies of the markers they name, the Control_Diff states they name); a
- * driven joint's rows, functions of time alone, are zero.
+ * DIFSUB (or of its expression) in its own state and in the columns its
+ * declared queries (or its expression) read: the bodies of the markers they
+ * name, the Control_Diff states they name, and, for a rate read by DIF1,
+ * the columns that rate depends on in turn, the rate computed again at each
+ * moved state; an expression's partials in the states it reads by DIF are
+ * exact where it reads neither a variable nor a rate. A driven joint's
+ * rows, functions of time alone, are zero.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,9 +30,31 @@ static void add_column(int *cols, int *n, int max, int c)
         cols[(*n)++] = c;
 }
 
+/* The routine of the Control_Diff in slot `slot` (-1: none). */
+static int diff_routine(const hx_model *m, int slot)
+{
+    for (int k = 0; k < m->nroutines; ++k)
+        if (m->routines[k].kind == HX_ROUTINE_DIFF && m->routines[k].slot == slot)
+            return k;
+    return -1;
+}
+
+/* Whether program p reads a Control_Diff's rate (DIF1). */
+static int reads_rate(const hx_expr_program *p)
+{
+    const hx_expr_input *in = hx_expr_inputs(p);
+    for (int j = 0; j < hx_expr_input_count(p); ++j)
+        if (in[j].kind == HX_EXPR_INPUT_DIF1)
+            return 1;
+    return 0;
+}
+
+static void diff_columns_into(const hx_dynamics *d, int routine, int *cols, int *n, int max);
+
 /* The columns program p reads: the Control_Diff states it names (DIF), the
- * bodies its markers sit on, through the variables it reads (they form no
- * cycle: model/variable_programs.c). */
+ * columns of the rates it names (DIF1: the model refuses a cycle of them,
+ * model/routine_elements.c), the bodies its markers sit on, through the
+ * variables it reads (they form no cycle: model/variable_programs.c). */
 static void program_columns(const hx_dynamics *d, const hx_expr_program *p, int *cols, int *n,
                             int max)
 {
@@ -37,6 +63,11 @@ static void program_columns(const hx_dynamics *d, const hx_expr_program *p, int 
     for (int j = 0; j < hx_expr_input_count(p); ++j) {
         if (in[j].kind == HX_EXPR_INPUT_DIF)
             add_column(cols, n, max, d->diff_offset + in[j].index[0]);
+        if (in[j].kind == HX_EXPR_INPUT_DIF1) {
+            const int rate = diff_routine(m, in[j].index[0]);
+            if (rate >= 0)
+                diff_columns_into(d, rate, cols, n, max);
+        }
         if (in[j].variable >= 0) {
             const hx_variable *v = &m->variables[in[j].variable];
             if (v->program != NULL)
@@ -61,14 +92,13 @@ static void program_columns(const hx_dynamics *d, const hx_expr_program *p, int 
     }
 }
 
-int hx_diff_columns(const hx_dynamics *d, int routine, int *cols, int max)
+static void diff_columns_into(const hx_dynamics *d, int routine, int *cols, int *n, int max)
 {
     const hx_model *m = d->m;
-    int n = 0;
-    add_column(cols, &n, max, d->diff_offset + m->routines[routine].slot);
+    add_column(cols, n, max, d->diff_offset + m->routines[routine].slot);
     if (m->routines[routine].program != NULL) {
-        program_columns(d, m->routines[routine].program, cols, &n, max);
-        return n;
+        program_columns(d, m->routines[routine].program, cols, n, max);
+        return;
     }
     const hx_binding *b = d->routine_binding[routine];
     for (int q = 0; b != NULL && q < b->deps.count; ++q) {
@@ -78,7 +108,7 @@ int hx_diff_columns(const hx_dynamics *d, int routine, int *cols, int max)
             if (reads == HX_READS_DIFF) {
                 const int k = hx_model_routine(m, HX_ROUTINE_DIFF, dq->ipar[i]);
                 if (k >= 0)
-                    add_column(cols, &n, max, d->diff_offset + m->routines[k].slot);
+                    add_column(cols, n, max, d->diff_offset + m->routines[k].slot);
                 break; /* DIF names one element */
             }
             const int marker = reads == HX_READS_MARKERS && dq->ipar[i] != 0
@@ -88,25 +118,66 @@ int hx_diff_columns(const hx_dynamics *d, int routine, int *cols, int max)
             int body_cols[13];
             const int nb = hx_jacobian_body_columns(d, m->markers[marker].body, body_cols);
             for (int j = 0; j < nb; ++j)
-                add_column(cols, &n, max, body_cols[j]);
+                add_column(cols, n, max, body_cols[j]);
         }
     }
+}
+
+int hx_diff_columns(const hx_dynamics *d, int routine, int *cols, int max)
+{
+    int n = 0;
+    diff_columns_into(d, routine, cols, &n, max);
     return n;
 }
 
-/* DIFSUB (or the expression) of routine k at (t, y), jac->dd's kinematics set there; 0 or -1
- * (jac->dd.message). */
+/* The rates routine k's expression reads by DIF1 computed again at jac->dd's
+ * frames (and first those they read in turn), as the routines stage
+ * computes them (DIFSUB as for a difference); 0 or -1 (jac->dd.message). */
+static int read_rates(hx_jacobian *jac, int k)
+{
+    const hx_dynamics *d = jac->d;
+    hx_dynamics_data *dd = &jac->dd;
+    const hx_expr_program *p = d->m->routines[k].program;
+    if (p == NULL)
+        return 0;
+    const hx_expr_input *in = hx_expr_inputs(p);
+    for (int j = 0; j < hx_expr_input_count(p); ++j) {
+        const int r = in[j].kind == HX_EXPR_INPUT_DIF1 ? diff_routine(d->m, in[j].index[0]) : -1;
+        if (r < 0)
+            continue;
+        double rate;
+        if (d->m->routines[r].program != NULL) {
+            if (read_rates(jac, r) != 0 || hx_routines_diff_expression(d, dd, r, &rate) != 0)
+                return -1;
+        } else {
+            hx_binding *b = d->routine_binding[r];
+            hx_invoke_routine(b, &dd->frames, 1, 0, &rate, NULL);
+            jac->partial_calls++;
+            if (hx_dynamics_check_call(d, dd, b, NULL, 0, "", dd->frames.time) != 0)
+                return -1;
+        }
+        dd->frames.diffs[2 * in[j].index[0] + 1] = rate;
+    }
+    return 0;
+}
+
+/* DIFSUB (or the expression) of routine k at (t, y), jac->dd's kinematics
+ * set there, and the variables and the rates it reads (DIF1) computed there;
+ * 0 or -1 (jac->dd.message). */
 static int diff_rate(hx_jacobian *jac, int k, double t, const double *y, double *rate)
 {
     const hx_dynamics *d = jac->d;
     hx_dynamics_data *dd = &jac->dd;
     hx_dynamics_kinematics(d, dd, t, y);
     if (d->m->routines[k].program != NULL) {
-        if (d->m->routines[k].reads_variables) {
+        const int rates = reads_rate(d->m->routines[k].program);
+        if (d->m->routines[k].reads_variables || (rates && d->diffs_read_variables)) {
             hx_message msg;
             if (hx_variables_values(&dd->frames, dd->frames.variables, &msg) != 0)
                 return hx_dynamics_fail(dd, "%s", msg.text);
         }
+        if (rates && read_rates(jac, k) != 0)
+            return -1;
         return hx_routines_diff_expression(d, dd, k, rate);
     }
     hx_binding *b = d->routine_binding[k];
@@ -138,8 +209,9 @@ int hx_routine_blocks_init(hx_jacobian *jac, hx_message *msg)
 }
 
 /* The exact partials of the expression of routine k in the Control_Diff
- * states it reads by DIF (evaluate.h), where it reads no variable (a
- * variable's dependence on them is taken by differences with the rest):
+ * states it reads by DIF (evaluate.h), where it reads no variable and no
+ * rate (a variable's or a rate's dependence on them is taken by differences
+ * with the rest):
  * added to its row; their columns marked done. 0 or -1. */
 static int diff_exact(hx_jacobian *jac, int k, double t, const double *y, const int *cols, int nc,
                       unsigned char *done)
@@ -147,7 +219,7 @@ static int diff_exact(hx_jacobian *jac, int k, double t, const double *y, const 
     const hx_dynamics *d = jac->d;
     hx_dynamics_data *dd = &jac->dd;
     const hx_routine *r = &d->m->routines[k];
-    if (r->program == NULL || r->reads_variables)
+    if (r->program == NULL || r->reads_variables || reads_rate(r->program))
         return 0;
     hx_dynamics_kinematics(d, dd, t, y);
     const hx_expr_context c = {&dd->frames, dd->frames.variables, NULL};
@@ -212,7 +284,21 @@ int hx_routine_blocks(hx_jacobian *jac, double t, const double *y)
             hx_jacobian_add(jac, row, 1, c, &slope);
         }
     }
-    /* jac->dd's kinematics back at the build's state */
+    /* jac->dd's kinematics back at the build's state, and the variables and
+     * rates the differences moved */
     hx_dynamics_kinematics(d, dd, t, y);
+    int rates = 0;
+    for (int k = 0; k < m->nroutines; ++k)
+        rates |= m->routines[k].program != NULL && reads_rate(m->routines[k].program);
+    if (!rates && !d->diffs_read_variables)
+        return 0;
+    hx_message msg;
+    if ((m->variables_read || d->diffs_read_variables) &&
+        hx_variables_values(&dd->frames, dd->frames.variables, &msg) != 0)
+        return hx_dynamics_fail(dd, "%s", msg.text);
+    for (int k = 0; rates && k < m->nroutines; ++k)
+        if (m->routines[k].program != NULL && reads_rate(m->routines[k].program) &&
+            read_rates(jac, k) != 0)
+            return -1;
     return 0;
 }

@@ -74,7 +74,7 @@ typedef struct jv_context {
     double t;
     const double *y;
     double *plus, *minus, *fplus, *fminus;
-    int m; /* positions, velocities and element states: the dynamics proper */
+    int m; /* positions, velocities, element and Control_Diff states: the dynamics proper */
     double scale;
     int evaluations;
 } jv_context;
@@ -126,9 +126,11 @@ int hx_estimate_stability(const hx_dynamics *d, double t, const double *y, hx_st
                           hx_message *msg)
 {
     memset(out, 0, sizeof *out);
-    /* the element states follow the velocities (dynamics.h): bristles that
-     * slide fast are a model's fastest mode */
-    const int n = d->n, m = d->nq + d->nu + d->nstates;
+    /* the element states follow the velocities, the Control_Diff states follow
+     * them (docs/architecture.md, the layout of y): bristles that slide fast,
+     * or a filter's fast state, are a model's fastest mode; only the work
+     * accumulators, which nothing reads, are left out */
+    const int n = d->n, m = d->diff_offset + d->ndiffs;
     hx_dynamics_data dd;
     if (hx_dynamics_data_init(&dd, d, msg) != 0)
         return -1;

@@ -2,7 +2,9 @@
  * Stability limits of the integrators for a model: the fastest mode
  * of the dynamics linearized at a state (its eigenvalue lambda, by power
  * iteration on J^2 with J v from central differences of the right-hand side,
- * then a two-vector Arnoldi step for the pair it converged to), and for each
+ * then a two-vector Arnoldi step for the pair it converged to; over every
+ * state but the work accumulators: the bodies', the Force_StateEqn and the
+ * Control_Diff states), and for each
  * method the largest fixed step h with h lambda inside its stability region
  * (BDF, A(alpha)-stable, has none: any step).
  */
