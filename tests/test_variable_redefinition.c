@@ -245,7 +245,7 @@ static void refused(const hx_model *m, const char *commands, const char *a, cons
     hx_command_file_free(f);
 }
 
-/* A state equation's input (a U array's variable, held as its measure) and a
+/* A state equation's input (a U array's variable: TIME and measures only) and a
  * Control_Diff by an expression, on a model read alone (no library bound). */
 static const char inputs[] =
     "<MotionSolve><Model>\n<Body_Ground id=\"1\"/>\n<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
@@ -286,8 +286,9 @@ static void what_cannot_be_redefined_is_refused(void **state)
     hx_model *u = hx_model_parse(inputs, strlen(inputs), "inputs.xml", NULL, &msg);
     if (u == NULL)
         fail_msg("%s", msg.text);
-    refused(u, "VARIABLE/1, FUNCTION = 3*DX(20,10)\n", "redef.acf:4: VARIABLE/1: ",
-            "an input of a state equation (the U array 30 names it", "");
+    refused(u, "VARIABLE/1, FUNCTION = 3*VARVAL(2)\n", "redef.acf:4:26: VARIABLE/1: FUNCTION: ",
+            "VARVAL(2): an input of a state equation (the U array 30 names it)",
+            "reads TIME and measures only");
     refused(u, "VARIABLE/2, FUNCTION = DIF1(5)\n", "redef.acf:4:24: DIF1(5): ",
             "a variable reads a Control_Diff's state (DIF), not its rate", "");
     hx_model_free(u);

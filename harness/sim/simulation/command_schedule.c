@@ -111,18 +111,25 @@ static int redefine(const hx_command *c, const char *path, const hx_model *m,
     if (k == m->nvariables)
         return hx_fail(msg, "%s:%d: VARIABLE/%d: the model has no VARIABLE/%d given by a"
                        " FUNCTION (Reference_Variable %d)", path, c->line, id, id, id);
-    for (int a = 0; a < m->narrays; ++a)
-        for (int i = 0; m->arrays[a].type == HX_ARRAY_U && i < m->arrays[a].count; ++i)
-            if (m->arrays[a].variables[i] == k)
-                return hx_fail(msg, "%s:%d: VARIABLE/%d: an input of a state equation (the U"
-                               " array %d names it, docs/interface.md §7.10) is not redefined",
-                               path, c->line, id, m->arrays[a].id);
     hx_message why;
     const hx_expr_source where = {path, c->function_line, c->function_column};
     hx_expr_program *p = hx_expr_parse(c->function, strlen(c->function), &where, &why);
     if (p == NULL)
         return fail_function(path, id, why.text, msg);
     out->programs[out->nprograms++] = p; /* the schedule's from here */
+    /* a state equation's input reads TIME and measures only (docs/interface.md §7.10) */
+    const hx_expr_input *in = hx_expr_inputs(p);
+    for (int a = 0; a < m->narrays; ++a)
+        for (int i = 0; m->arrays[a].type == HX_ARRAY_U && i < m->arrays[a].count; ++i)
+            for (int j = 0; m->arrays[a].variables[i] == k && j < hx_expr_input_count(p); ++j)
+                if (in[j].kind != HX_EXPR_INPUT_TIME && in[j].kind != HX_EXPR_INPUT_MEASURE) {
+                    char name[64];
+                    return hx_fail(msg, "%s:%d:%d: VARIABLE/%d: FUNCTION: %s: an input of a"
+                                   " state equation (the U array %d names it) reads TIME and"
+                                   " measures only (docs/interface.md §7.10)", path, in[j].line,
+                                   in[j].column, id, hx_expr_input_text(&in[j], name, sizeof name),
+                                   m->arrays[a].id);
+                }
     if (hx_expr_link(p, m, &why) != 0)
         return fail_function(path, id, why.text, msg);
     hx_variable_definitions *v = &out->variables[out->nvariables];
