@@ -209,7 +209,7 @@ static void what_the_run_cannot_do_is_refused(void **state)
     refuse("DEACTIVATE/GFORCE, ID=1", "refused.acf:4: ", "DEACTIVATE/GFORCE",
            "the model has no GFORCE/1"); /* its SFORCE/1 is a scalar load */
     refuse("VARIABLE/3, FUNCTION=TIME", "refused.acf:4: ", "VARIABLE/3",
-           "redefining a FUNCTION between segments is not done by the harness yet");
+           "the model has no VARIABLE/3 given by a FUNCTION");
     refuse("PREFERENCES/SOLVERBIAS=CXX", "refused.acf:4: ", "PREFERENCES",
            "a command the harness does not read");
     refuse("SIMULATE/DYNAMIC, END=0.5, STEPS=5", "refused.acf:4: ", "SIMULATE/DYNAMIC",

@@ -246,17 +246,18 @@ static void bad_variables_are_named(void **state)
                  "DIFF/3, IC=1, FUNCTION=USER(1)\n"
                  "VARIABLE/5, FUNCTION=2*DIF1(3)\nEND\n",
                  (const char *const[]){"dif1.adm:5:", "DIF1(3)", "not its rate", NULL});
-    /* a Force_StateEqn's inputs are one measure each */
+    /* a Force_StateEqn's inputs read TIME and measures only (docs/interface.md §7.10) */
     sim_expect_parse_error("stateeqn.xml",
-                 HEAD "<Reference_Variable id=\"1\" expr=\"2*DX(20)\"/>\n"
+                 HEAD "<Reference_Variable id=\"2\" expr=\"TIME\"/>\n"
+                      "<Reference_Variable id=\"1\" expr=\"2*DX(20) + VARVAL(2)\"/>\n"
                       "<Reference_Array id=\"30\" type=\"U\" num_element=\"1\" variable_id=\"1\"/>\n"
                       "<Reference_Array id=\"31\" type=\"X\" num_element=\"1\"/>\n"
                       "<Force_StateEqn id=\"1\" type=\"USERSUB\" x_array_id=\"31\""
                       " u_array_id=\"30\" num_state=\"1\" i_marker_id=\"20\""
                       " j_floating_marker_id=\"10\" ref_marker_id=\"10\""
                       " usrsub_param_string=\"USER(1)\"/>\n" TAIL,
-                 (const char *const[]){"stateeqn.xml:11:", "Force_StateEqn 1",
-                                       "Reference_Variable 1", NULL});
+                 (const char *const[]){"stateeqn.xml:12:", "Force_StateEqn 1",
+                                       "Reference_Variable 1", "which reads VARVAL(2)", NULL});
 }
 
 /* A fault of a variable's expression names it, file:line:column and the time. */

@@ -15,7 +15,9 @@
 #include <string.h>
 
 #include "sim/jacobian/jacobian.h"
+#include "host/state_inputs.h"
 #include "sim/dynamics/stateeqns.h"
+#include "sim/simulation/command_schedule.h"
 #include "sim_support.h"
 #include "test_support.h"
 
@@ -278,6 +280,154 @@ static const char *scaled_model(const char *name, const char *library, const cha
     return scaled_model_ic(name, library, user, NULL);
 }
 
+/* ---- inputs given by expressions ------------------------------------------------------------- */
+
+/* The scaled state equation on the free body of scaled_model_ic, its first
+ * input an expression of two measures, u0 = DX(20,10,10) + 0.3 DY(30,10,10)^2,
+ * the second of another free body (3, drifting along y, which no other input
+ * reads), its seventh one of two measures and TIME, u6 = VX - 2 WZ + TIME (of
+ * marker 20 from marker 10, the world's axes); the others the usual measures. */
+static const char *expression_inputs_model(const char *name, const char *library,
+                                           const char *first)
+{
+    const char *const measure[12] = {
+        first != NULL ? first : "DX(20,10,10) + 0.3*DY(30,10,10)**2", "DY(20,10,10)", "DZ(20,10,10)", "AX(20,10)",
+        "AY(20,10)", "AZ(20,10)", "VX(20,10,10,10) - 2*WZ(20,10,10) + TIME", "VY(20,10,10,10)",
+        "VZ(20,10,10,10)", "WX(20,10,10)", "WY(20,10,10)", "WZ(20,10,10)"};
+    char xml[8192];
+    int n = snprintf(xml, sizeof xml,
+                     "<MotionSolve><Model>\n<Body_Ground id=\"1\"/>\n"
+                     "<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+                     "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"2\" inertia_xx=\"1\" inertia_yy=\"1\""
+                     " inertia_zz=\"1\" v_ic_x=\"3\" v_ic_y=\"-1\" w_ic_z=\"2\"/>\n"
+                     "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"0.5\"/>\n"
+                     "<Body_Rigid id=\"3\" cg_id=\"30\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\""
+                     " inertia_zz=\"1\" v_ic_y=\"2\"/>\n"
+                     "<Reference_Marker id=\"30\" body_id=\"3\" pos_y=\"0.4\"/>\n");
+    for (int k = 0; k < 12; ++k)
+        n += snprintf(xml + n, sizeof xml - (size_t)n, "<Reference_Variable id=\"%d\""
+                      " expr=\"%s\"/>\n", k + 1, measure[k]);
+    snprintf(xml + n, sizeof xml - (size_t)n,
+             "<Reference_Array id=\"30\" type=\"U\" num_element=\"12\" variable_id=\"1 2 3 4 5 6 7 8"
+             " 9 10 11 12\"/>\n<Reference_Array id=\"31\" type=\"X\" num_element=\"2\"/>\n"
+             "<Force_StateEqn id=\"1\" type=\"USERSUB\" x_array_id=\"31\" u_array_id=\"30\""
+             " num_state=\"2\" i_marker_id=\"20\" j_floating_marker_id=\"10\""
+             " ref_marker_id=\"10\" usrsub_param_string=\"USER(50, 2, 20, 1)\""
+             " usrsub_dll_name=\"%s\"/>\n</Model></MotionSolve>\n", library);
+    return test_write_file(name, xml);
+}
+
+/* The inputs are the expressions' values at the state (worked from the
+ * marker's frame), and the Newton matrix, whose dU/dy are differences of
+ * the expressions, equals differences of the right-hand side with no entry
+ * outside its pattern; with the library's partials and with YFOSUB alone. */
+static void inputs_given_by_expressions(void **state)
+{
+    (void)state;
+    const char *const libraries[2] = {SCALED_STATE_LIBRARY, PLAIN_STATE_LIBRARY};
+    for (int l = 0; l < 2; ++l) {
+        sim s;
+        sim_run(&s, expression_inputs_model(l == 0 ? "expr_in.xml" : "expr_in_plain.xml",
+                                            libraries[l], NULL),
+                HX_METHOD_DOPRI5, 1e-9, 0.3, 0.3);
+        const double *y = s.path.y + (s.path.rows - 1) * s.path.n;
+        sim_evaluate(&s, 0.3, y);
+        double u[12];
+        assert_int_equal(hx_stateeqn_inputs(&s.data.frames, 0, u), 0);
+        hx_frame scratch, other;
+        const hx_frame *f =
+            hx_frames_marker(&s.data.frames, hx_model_marker(s.session.model, 20), &scratch);
+        const hx_frame *g =
+            hx_frames_marker(&s.data.frames, hx_model_marker(s.session.model, 30), &other);
+        assert_close(g->p[1], 0.4 + 2.0 * 0.3, 1e-9, 0.0); /* body 3 drifts: y = 0.4 + 2 t */
+        assert_true(fabs(f->w[2]) > 0.1); /* every term counts */
+        assert_close(u[0], f->p[0] + 0.3 * g->p[1] * g->p[1], 1e-12, 1e-14);
+        assert_close(u[1], f->p[1], 1e-12, 1e-14);
+        assert_close(u[6], f->v[0] - 2.0 * f->w[2] + 0.3, 1e-12, 1e-14);
+        assert_true(jacobian_error(&s.dynamics, 0.3, y, "expression inputs") < 1e-6);
+        sim_close(&s);
+    }
+}
+
+/* The schedule of acf_text (a command file) run on the model at path with
+ * method: the end state (malloc'ed) and the result in r. */
+static double *scheduled_run(const char *path, const char *acf_text, hx_method method,
+                             hx_simulation_result *r)
+{
+    hx_session session;
+    hx_dynamics d;
+    hx_message msg;
+    if (hx_session_open(&session, path, NULL, &msg) != 0 || hx_dynamics_init(&d, &session, &msg) != 0)
+        fail_msg("%s", msg.text);
+    hx_command_file *f = hx_command_file_parse(acf_text, strlen(acf_text), "in.acf", &msg);
+    hx_command_schedule s;
+    const hx_command_overrides none = {0};
+    if (f == NULL || hx_command_schedule_make(f, "in.acf", session.model, path, 1e-9, 1e-9, &none,
+                                              NULL, &s, &msg) != 0)
+        fail_msg("%s", msg.text);
+    hx_command_file_free(f);
+    hx_simulation_options so = {0};
+    hx_integrator_defaults(&so.integration);
+    so.integration.method = method;
+    so.integration.t_end = s.t_end;
+    so.skip_energy = 1;
+    double *y = calloc((size_t)d.n, sizeof(double));
+    assert_non_null(y);
+    if (hx_simulate_segments(&d, &so, s.segments, s.nsegments, y, r) != 0)
+        fail_msg("%s", r->message);
+    hx_command_schedule_free(&s);
+    hx_dynamics_free(&d);
+    hx_session_close(&session);
+    return y;
+}
+
+/* A command file's VARIABLE (docs/interface.md §9.9) makes the first input
+ * read body 3, which none read before: BDF's pattern holds its columns
+ * (nothing outside it) and BDF follows DOPRI5. */
+static void an_input_redefined_between_segments(void **state)
+{
+    (void)state;
+    const char *path = expression_inputs_model("expr_redef.xml", SCALED_STATE_LIBRARY,
+                                               "DX(20,10,10)");
+    static const char acf[] = "expr_redef\n\nSIMULATE/DYNAMIC, END=0.15, STEPS=3\n"
+                              "VARIABLE/1, FUNCTION = DX(20,10,10) + 0.3*DY(30,10,10)**2\n"
+                              "SIMULATE/DYNAMIC, END=0.4, STEPS=5\n";
+    hx_simulation_result r, b;
+    double *exact = scheduled_run(path, acf, HX_METHOD_DOPRI5, &r);
+    double *bdf = scheduled_run(path, acf, HX_METHOD_BDF, &b);
+    assert_int_equal(b.jacobian_outside, 0);
+    double worst = 0.0;
+    for (int i = 0; i < r.n - 2; ++i) /* not the work accumulators */
+        worst = fmax(worst, fabs(bdf[i] - exact[i]));
+    assert_true(worst < 1e-3);
+    free(exact), free(bdf);
+}
+
+/* An input's expression that faults ends the run naming the variable, the
+ * function, its file:line:column and the time. */
+static void a_faulting_input_ends_the_run(void **state)
+{
+    (void)state;
+    const char *path = expression_inputs_model("expr_fault.xml", SCALED_STATE_LIBRARY,
+                                               "LOG(DX(20,10,10) - 10)");
+    hx_session session;
+    hx_dynamics d;
+    hx_message msg;
+    if (hx_session_open(&session, path, NULL, &msg) != 0 || hx_dynamics_init(&d, &session, &msg) != 0)
+        fail_msg("%s", msg.text);
+    hx_simulation_options so = {0};
+    hx_integrator_defaults(&so.integration);
+    so.integration.method = HX_METHOD_DOPRI5;
+    so.integration.t_end = 0.01;
+    so.integration.output_interval = 0.01;
+    hx_simulation_result r;
+    assert_int_equal(hx_simulate(&d, &so, NULL, &r), -1);
+    assert_contains(r.message, "Force_StateEqn 1: its input ", "expr_fault.xml:", "Reference_Variable 1",
+                    "LOG", "at t = 0");
+    hx_dynamics_free(&d);
+    hx_session_close(&session);
+}
+
 /* States so large that their rates overflow: the run ends at once, naming
  * the element, what it returned and when. */
 static void a_non_finite_rate_ends_the_run(void **state)
@@ -396,6 +546,9 @@ static void every_integrator_finishes_on_the_bundled_model(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(inputs_given_by_expressions),
+        cmocka_unit_test(a_faulting_input_ends_the_run),
+        cmocka_unit_test(an_input_redefined_between_segments),
         cmocka_unit_test(friction_holds_below_breakaway),
         cmocka_unit_test(friction_slides_at_mu_d_above_breakaway),
         cmocka_unit_test(a_mount_in_series_with_friction_integrates_smoothly),

@@ -181,6 +181,15 @@ static void stateeqn_errors_name_element_and_line(void **state)
                    "attribute x_array_id is missing");
     expect_refused("no_n.xml", X3 ELEMENT("x_array_id=\"31\""), "no_n.xml:8:", "Force_StateEqn 7",
                    "attribute num_state is missing");
+    /* an input by an expression reads TIME and measures only (docs/interface.md §7.10):
+     * another variable's value (VARVAL) is refused, naming the variable and what it reads */
+    expect_refused("varval.xml",
+                   "<Reference_Variable id=\"1\" expr=\"DX(20,10)\"/>\n"
+                   "<Reference_Variable id=\"5\" expr=\"TIME + 2*VARVAL(1)\"/>\n"
+                   "<Reference_Array id=\"30\" type=\"U\" num_element=\"1\" variable_id=\"5\"/>\n"
+                   X3 ELEMENT("x_array_id=\"31\" u_array_id=\"30\" num_state=\"3\""),
+                   "varval.xml:11:", "Force_StateEqn 7: its U array 30 names Reference_Variable 5",
+                   "which reads VARVAL(1)", "TIME and measures only");
     expect_refused("neg.xml", X3 ELEMENT("x_array_id=\"31\" num_state=\"-1\""), "neg.xml:8:",
                    "num_state -1");
     expect_refused("unread.xml", X3 ELEMENT("x_array_id=\"31\" num_state=\"3\" y_array_id=\"4\""),

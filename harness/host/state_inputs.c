@@ -1,6 +1,9 @@
 /* A Force_StateEqn's inputs at a state (state_inputs.h). */
 #include "host/state_inputs.h"
 
+#include <stdio.h>
+
+#include "expr/evaluate.h"
 #include "host/queries.h"
 
 int hx_variable_value(const hx_frames *fr, const hx_variable *v, double *value)
@@ -38,6 +41,13 @@ int hx_stateeqn_inputs(const hx_frames *fr, int element, double *u)
     int nknown = 0;
     for (int i = 0; i < f->ninput; ++i) {
         const hx_variable *v = &m->variables[f->inputs[i]];
+        if (v->program != NULL) { /* an expression of TIME and measures (§7.10) */
+            const hx_expr_context c = {fr, NULL, NULL};
+            hx_expr_fault fault;
+            if (hx_expr_eval(v->program, &c, &u[i], &fault) != 0)
+                return -1;
+            continue;
+        }
         const int axis = v->function[0] != '\0' ? component(v) : -1;
         if (axis < 0) { /* a number, or DM */
             if (hx_variable_value(fr, v, &u[i]) != 0)
@@ -63,6 +73,28 @@ int hx_stateeqn_inputs(const hx_frames *fr, int element, double *u)
         u[i] = v->sign * known[k].v[axis];
     }
     return 0;
+}
+
+int hx_stateeqn_inputs_why(const hx_frames *fr, int element, hx_message *msg)
+{
+    const hx_model *m = fr->model;
+    const hx_stateeqn *f = &m->stateeqns[element];
+    for (int i = 0; i < f->ninput; ++i) {
+        const hx_variable *v = &m->variables[f->inputs[i]];
+        double value;
+        if (v->program != NULL) {
+            const hx_expr_context c = {fr, NULL, NULL};
+            hx_expr_fault fault;
+            if (hx_expr_eval(v->program, &c, &value, &fault) != 0) {
+                char element_name[48];
+                snprintf(element_name, sizeof element_name, "Reference_Variable %d", v->id);
+                return hx_expr_fail(msg, v->program, &fault, element_name);
+            }
+        } else if (hx_variable_value(fr, v, &value) != 0)
+            return hx_fail(msg, "%s:%d: Reference_Variable %d: not answered", m->path, v->line,
+                           v->id);
+    }
+    return hx_fail(msg, "an input could not be measured");
 }
 
 int hx_variable_is_angle(const hx_variable *v)

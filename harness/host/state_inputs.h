@@ -12,8 +12,13 @@
  * unknown (the model's resolve pass has ruled that out). */
 int hx_variable_value(const hx_frames *fr, const hx_variable *v, double *value);
 
-/* The ninput inputs of Force_StateEqn `element` at frames fr; 0 or -1. */
+/* The ninput inputs of Force_StateEqn `element` at frames fr (a variable by
+ * an expression evaluated there, docs/interface.md §7.10); 0 or -1. */
 int hx_stateeqn_inputs(const hx_frames *fr, int element, double *u);
+/* Why hx_stateeqn_inputs failed at fr: "file:line:column: Reference_Variable
+ * ID: what at t = ..." for an expression's fault, or the input that could not
+ * be measured, into msg; -1. Not a hot path: called after a failure. */
+int hx_stateeqn_inputs_why(const hx_frames *fr, int element, hx_message *msg);
 
 /* 1 when variable v is an angle (AX, AY, AZ): differences of it wrap. */
 int hx_variable_is_angle(const hx_variable *v);

@@ -12,6 +12,7 @@
 #include <strings.h>
 
 #include "model/draft.h"
+#include "model/expr/expr.h"
 #include "model/load_elements.h"
 #include "model/number_list.h"
 #include "model/routine_elements.h"
@@ -387,13 +388,19 @@ static int resolve_arrays(hx_draft *d, hx_stateeqn *f, const raw_stateeqn *raw)
     for (int i = 0; i < u->count; ++i) {
         f->inputs[i] = u->variables[i];
         const hx_variable *v = &m->variables[u->variables[i]];
-        if (v->program != NULL) {
-            hx_draft_fail(d, f->line, "Force_StateEqn %d: its U array %d names Reference_Variable"
-                          " %d, an expression beyond one measure: a Force_StateEqn's inputs are"
-                          " one measure or a number each (docs/interface.md §7.10)", f->id, u->id,
-                          v->id);
-            return -1;
-        }
+        /* an expression of TIME and measures: the harness evaluates it at the
+         * frames and differences it for the Jacobian; what other variables,
+         * arrays or Control_Diffs hold is computed elsewhere (docs/interface.md §7.10) */
+        const hx_expr_input *in = v->program != NULL ? hx_expr_inputs(v->program) : NULL;
+        for (int j = 0; v->program != NULL && j < hx_expr_input_count(v->program); ++j)
+            if (in[j].kind != HX_EXPR_INPUT_TIME && in[j].kind != HX_EXPR_INPUT_MEASURE) {
+                char name[64];
+                hx_draft_fail(d, f->line, "Force_StateEqn %d: its U array %d names"
+                              " Reference_Variable %d, which reads %s: a Force_StateEqn's input"
+                              " reads TIME and measures only (docs/interface.md §7.10)", f->id,
+                              u->id, v->id, hx_expr_input_text(&in[j], name, sizeof name));
+                return -1;
+            }
         for (int j = 0; j < v->nmarkers; ++j) /* states keep the frames its inputs read */
             if (v->marker_ids[j] != 0)
                 m->markers[hx_model_marker(m, v->marker_ids[j])].tracked = 1;

@@ -107,9 +107,11 @@ int hx_stateeqns_apply(const hx_dynamics *d, hx_dynamics_data *dd, const double 
         const hx_stateeqn *f = &d->m->stateeqns[k];
         double *out = dd->stateeqn_outputs + 6 * k, *xdot = ydot + se->offset[k];
         double *u = dd->stateeqn_work; /* the call's own copies come after them */
-        if (hx_stateeqn_inputs(&dd->frames, k, u) != 0)
-            return hx_dynamics_fail(dd, "Force_StateEqn %d: an input could not be measured",
-                                    f->id);
+        if (hx_stateeqn_inputs(&dd->frames, k, u) != 0) {
+            hx_message why;
+            hx_stateeqn_inputs_why(&dd->frames, k, &why);
+            return hx_dynamics_fail(dd, "Force_StateEqn %d: its input %s", f->id, why.text);
+        }
         if (hx_stateeqn_call(d, dd, k, y + se->offset[k], u, 0, xdot, out) != 0)
             return -1;
         ydot[d->element_work] += apply_outputs(d, dd, f, out);

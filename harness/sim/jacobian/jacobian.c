@@ -44,11 +44,19 @@ int hx_jacobian_init(hx_jacobian *jac, const hx_dynamics *d, hx_message *msg)
     /* each part says why it failed */
     if (hx_element_blocks_init(jac, msg) != 0 || hx_load_blocks_init(jac, msg) != 0 ||
         hx_stateeqn_blocks_init(jac, msg) != 0 ||
-        hx_routine_blocks_init(jac, msg) != 0 || hx_jacobian_pattern(jac, msg) != 0) {
+        hx_routine_blocks_init(jac, msg) != 0 || hx_jacobian_pattern(jac, 0, msg) != 0) {
         hx_jacobian_free(jac);
         return -1;
     }
     hx_element_blocks_locate(jac);
+    return 0;
+}
+
+int hx_jacobian_widen(hx_jacobian *jac, hx_message *msg)
+{
+    if (hx_jacobian_pattern(jac, 1, msg) != 0)
+        return -1;
+    hx_element_blocks_locate(jac); /* the blocks' places in the wider pattern */
     return 0;
 }
 

@@ -89,6 +89,11 @@ typedef struct hx_jacobian {
 /* Returns 0, or -1 with msg (out of memory, or a callee's reason). */
 int hx_jacobian_init(hx_jacobian *jac, const hx_dynamics *d, hx_message *msg);
 void hx_jacobian_free(hx_jacobian *jac);
+/* The pattern widened to cover the dependencies of the variables' definitions
+ * now in force in the model (a command file's VARIABLE/id, FUNCTION=,
+ * docs/interface.md §9.9): the union of the pattern before and theirs.
+ * Called before a run, once for each segment's definitions. 0, or -1 with msg. */
+int hx_jacobian_widen(hx_jacobian *jac, hx_message *msg);
 
 /* J at (t, y) into values (jac->pattern.nnz, the pattern's order); fy =
  * f(t, y) as the integrator has it (the assembly takes every element's

@@ -98,8 +98,10 @@ int hx_routine_blocks(hx_jacobian *jac, double t, const double *y);
 #define DIFF_COLUMNS_MAX (1 + HX_MAX_QUERIES * 4 * 13)
 int hx_diff_columns(const hx_dynamics *d, int routine, int *cols, int max);
 
-/* The pattern from the model's structure (pattern.c); 0, or -1 with msg. */
-int hx_jacobian_pattern(hx_jacobian *jac, hx_message *msg);
+/* The pattern from the model's structure (pattern.c); 0, or -1 with msg.
+ * With widen set, the one built before united with the one under the
+ * variables' definitions now in force (hx_jacobian_widen). */
+int hx_jacobian_pattern(hx_jacobian *jac, int widen, hx_message *msg);
 
 /* The bodies (non-ground, distinct) Force_StateEqn k measures its inputs on;
  * returns their count, at most max. */

@@ -136,11 +136,14 @@ static void coupled_rows(pairs *p, const hx_jacobian *jac)
     free(is_row), free(is_col);
 }
 
-int hx_jacobian_pattern(hx_jacobian *jac, hx_message *msg)
+int hx_jacobian_pattern(hx_jacobian *jac, int widen, hx_message *msg)
 {
     const hx_dynamics *d = jac->d;
     const hx_model *m = d->m;
     pairs p = {0};
+    for (int c = 0; widen && c < jac->pattern.n; ++c) /* the pattern so far, kept */
+        for (int i = jac->pattern.colptr[c]; i < jac->pattern.colptr[c + 1]; ++i)
+            add(&p, jac->pattern.rowind[i], c);
     for (int b = 0; b < m->nbodies; ++b)
         body_by_body(&p, d, b, b, 1);
     for (int k = 0; k < m->nforces; ++k) {
@@ -181,8 +184,13 @@ int hx_jacobian_pattern(hx_jacobian *jac, hx_message *msg)
                 add(&p, d->diff_offset + m->routines[k].slot, cols[j]);
         }
     coupled_rows(&p, jac);
+    hx_sparsity built = {0};
     const int status =
-        p.failed ? -1 : hx_sparsity_from_pairs(&jac->pattern, jac->n, p.rows, p.cols, p.count);
+        p.failed ? -1 : hx_sparsity_from_pairs(&built, jac->n, p.rows, p.cols, p.count);
+    if (status == 0) {
+        hx_sparsity_free(&jac->pattern);
+        jac->pattern = built;
+    }
     free(p.rows);
     free(p.cols);
     return status == 0 ? 0 : hx_fail(msg, "out of memory for the Jacobian's pattern");

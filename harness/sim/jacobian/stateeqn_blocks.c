@@ -21,6 +21,7 @@
 #include "base/vecmath.h"
 #include "host/invoke.h"
 #include "host/state_inputs.h"
+#include "model/expr/expr.h"
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/stateeqns.h"
 #include "sim/jacobian/jacobian_parts.h"
@@ -44,8 +45,18 @@ int hx_stateeqn_input_bodies(const hx_dynamics *d, int k, int *bodies, int max)
     int count = 0;
     for (int i = 0; i < f->ninput; ++i) {
         const hx_variable *v = &m->variables[f->inputs[i]];
-        for (int j = 0; j < v->nmarkers; ++j) {
-            const int marker = v->marker_ids[j] != 0 ? hx_model_marker(m, v->marker_ids[j]) : -1;
+        /* the markers of its measure, or of every measure its expression reads */
+        int markers[4 * 64], nmarkers = 0;
+        if (v->program == NULL)
+            for (int j = 0; j < v->nmarkers; ++j)
+                markers[nmarkers++] = v->marker_ids[j] != 0 ? hx_model_marker(m, v->marker_ids[j])
+                                                            : -1;
+        const hx_expr_input *in = v->program != NULL ? hx_expr_inputs(v->program) : NULL;
+        for (int l = 0; v->program != NULL && l < hx_expr_input_count(v->program); ++l)
+            for (int j = 0; in[l].kind == HX_EXPR_INPUT_MEASURE && j < in[l].nids && j < 4; ++j)
+                markers[nmarkers++] = in[l].index[j];
+        for (int j = 0; j < nmarkers; ++j) {
+            const int marker = markers[j];
             const int b = marker >= 0 ? m->markers[marker].body : -1;
             if (b < 0 || d->dof[b].kind == HX_DOF_GROUND)
                 continue;

@@ -6,6 +6,8 @@
 #include <string.h>
 #include <strings.h>
 
+#include "model/expr/expr.h"
+
 /* The name of a path without its folder and extension, into out. */
 static void stem(const char *path, char *out, size_t size)
 {
@@ -64,25 +66,86 @@ static int switch_loads(const hx_command *c, const char *path, const hx_model *m
  * switched off and the gravity so far (a SIMULATE/STATIC that no SIMULATE/DYNAMIC
  * follows before a switch or the end). */
 static void equilibrium_alone(hx_command_schedule *out, double t, double rtol, double atol,
-                              const unsigned char *off, size_t nloads, const double gravity[3])
+                              const unsigned char *off, size_t nloads, const double gravity[3],
+                              const hx_variable_definitions *variables)
 {
     unsigned char *flags = out->loads_off + (size_t)out->nsegments * nloads;
     memcpy(flags, off, nloads);
     double *g = out->gravity + 3 * (size_t)out->nsegments;
     memcpy(g, gravity, 3 * sizeof(double));
-    out->segments[out->nsegments++] = (hx_segment){t, 0.0, rtol, atol, flags, g, 1};
+    out->segments[out->nsegments++] = (hx_segment){t, 0.0, rtol, atol, flags, g, 1, variables};
+}
+
+/* "file:line:column: VARIABLE/id: FUNCTION: what" from the engine's
+ * "file:line:column: what" (why), as a dataset's messages name the element. */
+static int fail_function(const char *path, int id, const char *why, hx_message *msg)
+{
+    const size_t n = strlen(path);
+    const char *q = why;
+    if (strncmp(why, path, n) == 0 && why[n] == ':') {
+        q = why + n + 1;
+        for (int field = 0; field < 2 && *q >= '0' && *q <= '9'; ++field) {
+            while (*q >= '0' && *q <= '9')
+                ++q;
+            if (*q == ':')
+                ++q;
+        }
+        if (*q == ' ')
+            ++q;
+    }
+    return hx_fail(msg, "%.*sVARIABLE/%d: FUNCTION: %s", (int)(q - why), why, id, q);
+}
+
+/* VARIABLE/id, FUNCTION= (docs/interface.md §9.9): the text parsed where it
+ * stands in the command file, linked against m, and a new set of definitions,
+ * the one in force (current; NULL the model's) with it, ordered; that set in
+ * *current. 0, or -1 with the reason. */
+static int redefine(const hx_command *c, const char *path, const hx_model *m,
+                    hx_command_schedule *out, const hx_variable_definitions **current,
+                    hx_message *msg)
+{
+    const int id = c->ids[0];
+    int k = 0;
+    while (k < m->nvariables && m->variables[k].id != id)
+        ++k;
+    if (k == m->nvariables)
+        return hx_fail(msg, "%s:%d: VARIABLE/%d: the model has no VARIABLE/%d given by a"
+                       " FUNCTION (Reference_Variable %d)", path, c->line, id, id, id);
+    hx_message why;
+    const hx_expr_source where = {path, c->function_line, c->function_column};
+    hx_expr_program *p = hx_expr_parse(c->function, strlen(c->function), &where, &why);
+    if (p == NULL)
+        return fail_function(path, id, why.text, msg);
+    out->programs[out->nprograms++] = p; /* the schedule's from here */
+    /* a state equation's input reads TIME and measures only (docs/interface.md §7.10) */
+    const hx_expr_input *in = hx_expr_inputs(p);
+    for (int a = 0; a < m->narrays; ++a)
+        for (int i = 0; m->arrays[a].type == HX_ARRAY_U && i < m->arrays[a].count; ++i)
+            for (int j = 0; m->arrays[a].variables[i] == k && j < hx_expr_input_count(p); ++j)
+                if (in[j].kind != HX_EXPR_INPUT_TIME && in[j].kind != HX_EXPR_INPUT_MEASURE) {
+                    char name[64];
+                    return hx_fail(msg, "%s:%d:%d: VARIABLE/%d: FUNCTION: %s: an input of a"
+                                   " state equation (the U array %d names it) reads TIME and"
+                                   " measures only (docs/interface.md §7.10)", path, in[j].line,
+                                   in[j].column, id, hx_expr_input_text(&in[j], name, sizeof name),
+                                   m->arrays[a].id);
+                }
+    if (hx_expr_link(p, m, &why) != 0)
+        return fail_function(path, id, why.text, msg);
+    hx_variable_definitions *v = &out->variables[out->nvariables];
+    if ((*current != NULL ? hx_variable_definitions_copy(v, *current, msg)
+                          : hx_variable_definitions_of(v, m, msg)) != 0)
+        return -1;
+    out->nvariables++;
+    if (hx_variable_definitions_redefine(v, m, k, p, path, c->line, &why) != 0)
+        return hx_fail(msg, "%s:%d: VARIABLE/%d: %s", path, c->line, id, why.text);
+    *current = v;
+    return 0;
 }
 
 static int refuse(const char *path, const hx_command *c, hx_message *msg)
 {
-    switch (c->kind) {
-    case HX_COMMAND_VARIABLE:
-        return hx_fail(msg, "%s:%d: VARIABLE/%d: redefining a FUNCTION between segments is not"
-                       " done by the harness yet (the model's expressions are compiled once,"
-                       " when it is read)", path, c->line, c->ids[0]);
-    default:
-        return hx_fail(msg, "%s:%d: a command the run does not take", path, c->line);
-    }
+    return hx_fail(msg, "%s:%d: a command the run does not take", path, c->line);
 }
 
 /* The command line's --end cuts the schedule there (or draws its last
@@ -127,6 +190,10 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
                         ((out->segments = calloc((size_t)f->ncommands, sizeof(hx_segment))) == NULL ||
                          (out->loads_off = calloc((size_t)f->ncommands * nloads + 1, 1)) == NULL ||
                          (out->gravity = calloc(3 * (size_t)f->ncommands, sizeof(double))) ==
+                             NULL ||
+                         (out->variables = calloc((size_t)f->ncommands, sizeof *out->variables)) ==
+                             NULL ||
+                         (out->programs = calloc((size_t)f->ncommands, sizeof *out->programs)) ==
                              NULL))) {
         free(off);
         hx_command_schedule_free(out);
@@ -135,6 +202,7 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
     double t = 0.0, gravity[3]; /* the model's until an ACCGRAV changes it */
     memcpy(gravity, m->gravity, sizeof gravity);
     int noted = 0, statics = 0; /* statics: a SIMULATE/STATIC since the last segment */
+    const hx_variable_definitions *variables = NULL; /* in force: NULL the model's own */
     for (int k = 0; k < f->ncommands; ++k) {
         const hx_command *c = &f->commands[k];
         if (c->kind == HX_COMMAND_STOP)
@@ -152,10 +220,18 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
             continue;
         }
         if (statics && (c->kind == HX_COMMAND_ACTIVATE || c->kind == HX_COMMAND_DEACTIVATE ||
-                        c->kind == HX_COMMAND_ACCGRAV)) {
+                        c->kind == HX_COMMAND_ACCGRAV || c->kind == HX_COMMAND_VARIABLE)) {
             /* the equilibrium is the one under the switches before this command */
-            equilibrium_alone(out, t, rtol, atol, off, nloads, gravity);
+            equilibrium_alone(out, t, rtol, atol, off, nloads, gravity, variables);
             statics = 0;
+        }
+        if (c->kind == HX_COMMAND_VARIABLE) {
+            if (redefine(c, path, m, out, &variables, msg) != 0) {
+                free(off);
+                hx_command_schedule_free(out);
+                return -1;
+            }
+            continue;
         }
         if (c->kind == HX_COMMAND_ACTIVATE || c->kind == HX_COMMAND_DEACTIVATE) {
             if (switch_loads(c, path, m, off, msg) != 0) {
@@ -198,12 +274,13 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
         memcpy(flags, off, nloads);
         double *g = out->gravity + 3 * (size_t)out->nsegments;
         memcpy(g, gravity, sizeof gravity);
-        out->segments[out->nsegments++] = (hx_segment){end, dt, rtol, atol, flags, g, statics};
+        out->segments[out->nsegments++] =
+            (hx_segment){end, dt, rtol, atol, flags, g, statics, variables};
         statics = 0;
         t = end;
     }
     if (statics) /* a SIMULATE/STATIC last: the equilibrium alone */
-        equilibrium_alone(out, t, rtol, atol, off, nloads, gravity);
+        equilibrium_alone(out, t, rtol, atol, off, nloads, gravity, variables);
     free(off);
     if (out->nsegments == 0) {
         hx_command_schedule_free(out);
@@ -218,5 +295,11 @@ void hx_command_schedule_free(hx_command_schedule *s)
     free(s->segments);
     free(s->loads_off);
     free(s->gravity);
+    for (int k = 0; k < s->nvariables; ++k)
+        hx_variable_definitions_free(&s->variables[k]);
+    free(s->variables);
+    for (int k = 0; k < s->nprograms; ++k)
+        hx_expr_free(s->programs[k]);
+    free(s->programs);
     memset(s, 0, sizeof *s);
 }

@@ -8,8 +8,10 @@
  * VTORQUE, GFORCE) and ACCGRAV's gravity, for the segments after them;
  * SIMULATE/STATIC as the next segment's start from the static equilibrium
  * (or a segment of no length, the equilibrium alone, when a switch or the
- * end comes first). What the run cannot do yet (switching other elements,
- * VARIABLE) is refused by name and file:line.
+ * end comes first); VARIABLE/id, FUNCTION= as the variables' definitions of
+ * the segments after it (parsed, linked against the model and ordered here,
+ * before the run). What the run cannot do yet (switching other elements) is
+ * refused by name and file:line.
  */
 #ifndef HX_SIM_SIMULATION_COMMAND_SCHEDULE_H
 #define HX_SIM_SIMULATION_COMMAND_SCHEDULE_H
@@ -19,6 +21,7 @@
 #include "base/message.h"
 #include "model/adm/command_file.h"
 #include "model/model.h"
+#include "model/variable_definitions.h"
 #include "sim/simulation/simulation.h"
 
 /* The command line's values, each 0 when not given (the file's then). */
@@ -32,6 +35,11 @@ typedef struct hx_command_schedule {
     double t_end; /* the last segment's end */
     unsigned char *loads_off; /* the segments' flags, nloads a segment */
     double *gravity;          /* the segments' gravity, 3 a segment (ACCGRAV) */
+    hx_variable_definitions *variables; /* one set a VARIABLE command: the definitions
+                                         * in force after it (segments point here) */
+    int nvariables;
+    hx_expr_program **programs; /* the VARIABLE commands' programs, linked */
+    int nprograms;
 } hx_command_schedule;
 
 /* The schedule of command file f (read from path) for model m, read from

@@ -19,6 +19,8 @@ typedef struct run_context {
     hx_simulation_result *result;
     double started, last_progress;
     hx_jacobian *jacobian;    /* BDF: its sparsity, and with analytic partials J */
+    const hx_variable_definitions *own; /* the model's variables, when a segment redefines
+                                         * one (NULL: none does) */
 } run_context;
 
 static int rhs(void *ctx, double t, const double *y, double *ydot)
@@ -108,12 +110,16 @@ static void add_stats(hx_integrator_stats *run, const hx_integrator_stats *segme
     }
 }
 
-/* The loads a segment switches off (docs/interface.md §9.9). */
-static void switch_segment(const hx_dynamics *d, const hx_segment *g)
+/* The loads a segment switches off, its gravity and its variables'
+ * definitions (docs/interface.md §9.9). */
+static void switch_segment(const run_context *rc, const hx_segment *g)
 {
+    const hx_dynamics *d = rc->d;
     for (int j = 0; j < d->m->nloads; ++j)
         d->load_off[j] = g->loads_off != NULL ? g->loads_off[j] : 0;
     memcpy(d->gravity, g->gravity != NULL ? g->gravity : d->m->gravity, 3 * sizeof(double));
+    if (rc->own != NULL)
+        hx_variable_definitions_apply(g->variables != NULL ? g->variables : rc->own, d->m);
 }
 
 /* y moved to the static equilibrium at t (equilibrium.h); the energy balance
@@ -146,7 +152,7 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
         return -1;
     }
     if (nsegments > 0)
-        switch_segment(d, &segments[0]);
+        switch_segment(rc, &segments[0]);
     if ((opt->static_start || (nsegments > 0 && segments[0].equilibrium)) &&
         find_equilibrium(rc, 0.0, y) != 0)
         return -1;
@@ -174,7 +180,7 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
         const double *g = segments[k].gravity != NULL ? segments[k].gravity : d->m->gravity;
         const int regravity = k > 0 && memcmp(g, d->gravity, 3 * sizeof(double)) != 0;
         const hx_energy before = regravity ? hx_energy_of(d, dd, t, y) : result->energy0;
-        switch_segment(d, &segments[k]);
+        switch_segment(rc, &segments[k]);
         if (regravity) { /* an ACCGRAV: the potential's new zero, not work done */
             const hx_energy after = hx_energy_of(d, dd, t, y);
             result->energy0.total += after.total - before.total;
@@ -237,8 +243,27 @@ int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *
                 hx_simulation_result *result)
 {
     const hx_segment whole = {opt->integration.t_end, opt->integration.output_interval,
-                              opt->integration.rtol, opt->integration.atol, NULL, NULL, 0};
+                              opt->integration.rtol, opt->integration.atol, NULL, NULL, 0, NULL};
     return hx_simulate_segments(d, opt, &whole, 1, y_end, result);
+}
+
+/* BDF's pattern widened to the dependencies of every segment's variables
+ * (docs/interface.md §9.9), once before the run; the model's own back in
+ * force after. 0, or -1 with msg. */
+static int widen(hx_jacobian *jac, const hx_segment *segments, int nsegments,
+                 const hx_variable_definitions *own, hx_message *msg)
+{
+    int status = 0;
+    for (int k = 0; k < nsegments && status == 0; ++k) {
+        if (segments[k].variables == NULL ||
+            (k > 0 && segments[k].variables == segments[k - 1].variables))
+            continue;
+        hx_variable_definitions_apply(segments[k].variables, jac->d->m);
+        status = hx_jacobian_widen(jac, msg);
+    }
+    if (own->program != NULL)
+        hx_variable_definitions_apply(own, jac->d->m);
+    return status;
 }
 
 int hx_simulate_segments(const hx_dynamics *d, const hx_simulation_options *opt,
@@ -257,18 +282,29 @@ int hx_simulate_segments(const hx_dynamics *d, const hx_simulation_options *opt,
         snprintf(result->message, sizeof result->message, "out of memory");
         return -1;
     }
-    if (hx_dynamics_data_init(&dd, d, &msg) != 0 ||
-        (opt->integration.method == HX_METHOD_BDF && hx_jacobian_init(&jac, d, &msg) != 0)) {
+    /* the model's own variables, kept when a segment redefines one */
+    hx_variable_definitions own = {0};
+    int redefines = 0;
+    for (int k = 0; k < nsegments; ++k)
+        redefines |= segments[k].variables != NULL;
+    if ((redefines && hx_variable_definitions_of(&own, d->m, &msg) != 0) ||
+        hx_dynamics_data_init(&dd, d, &msg) != 0 ||
+        (opt->integration.method == HX_METHOD_BDF &&
+         (hx_jacobian_init(&jac, d, &msg) != 0 || widen(&jac, segments, nsegments, &own, &msg) != 0))) {
         snprintf(result->message, sizeof result->message, "%s", msg.text);
         result->status = HX_INTEGRATION_FAILED;
     } else {
-        run_context rc = {d, &dd, opt, result, hx_seconds(), hx_seconds(), &jac};
+        run_context rc = {d, &dd, opt, result, hx_seconds(), hx_seconds(), &jac,
+                          redefines ? &own : NULL};
         status = simulate(&rc, segments, nsegments, y, y_end);
     }
-    /* every load on again and the model's gravity, as the model has them, however the
-     * run ended: the next run on d starts from the model */
+    /* every load on again, the model's gravity and variables, as the model has them,
+     * however the run ended: the next run on d starts from the model */
     memset(d->load_off, 0, (size_t)d->m->nloads);
     memcpy(d->gravity, d->m->gravity, 3 * sizeof(double));
+    if (redefines && own.program != NULL)
+        hx_variable_definitions_apply(&own, d->m);
+    hx_variable_definitions_free(&own);
     hx_jacobian_free(&jac);
     hx_dynamics_data_free(&dd);
     free(y);

@@ -12,6 +12,7 @@
 #include <stdio.h>
 
 #include "sim/dynamics/dynamics.h"
+#include "model/variable_definitions.h"
 #include "sim/dynamics/energy.h"
 #include "sim/ode/integrator.h"
 #include "sim/simulation/equilibrium.h"
@@ -60,14 +61,17 @@ int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *
 /* One segment of a run (a command file's SIMULATE/DYNAMIC, docs/interface.md
  * §9.9): its end time (absolute), the time between its CSV rows (0: every
  * step), its tolerances, the loads switched off during it (one flag per
- * load of the model; NULL: none), its gravity (3; NULL: the model's), and
+ * load of the model; NULL: none), its gravity (3; NULL: the model's),
  * whether it starts with the static equilibrium (a SIMULATE/STATIC before it; a
- * segment that ends where it starts is that equilibrium alone). */
+ * segment that ends where it starts is that equilibrium alone), and its
+ * variables' definitions (a VARIABLE/id, FUNCTION= before it; NULL: the
+ * model's own). */
 typedef struct hx_segment {
     double t_end, output_interval, rtol, atol;
     const unsigned char *loads_off;
     const double *gravity;
     int equilibrium;
+    const hx_variable_definitions *variables;
 } hx_segment;
 
 /* The same run in segments, one after the other: each from the state the one
