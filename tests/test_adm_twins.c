@@ -177,6 +177,12 @@ static void same_model(const hx_model *a, const hx_model *b)
         assert_memory_equal(x->ic, y->ic, sizeof x->ic);
         same_user(&x->user, &y->user);
     }
+    assert_int_equal(a->ngcons, b->ngcons);
+    for (int k = 0; k < a->ngcons; ++k) {
+        assert_int_equal(a->gcons[k].id, b->gcons[k].id);
+        assert_int_equal(a->gcons[k].i_marker, b->gcons[k].i_marker);
+        assert_int_equal(hx_expr_op_count(a->gcons[k].program), hx_expr_op_count(b->gcons[k].program));
+    }
     assert_int_equal(a->nsplines, b->nsplines);
     for (int k = 0; k < a->nsplines; ++k) {
         const hx_spline *x = &a->splines[k], *y = &b->splines[k];

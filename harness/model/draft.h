@@ -49,7 +49,7 @@ typedef struct hx_draft {
     int cap_markers, cap_bodies, cap_joints, cap_couplers, cap_forces, cap_loads, cap_strings;
     int cap_variables, cap_arrays, cap_stateeqns, cap_routines;
     int cap_splines, cap_pinputs, cap_poutputs, cap_expressions;
-    int cap_requests;
+    int cap_requests, cap_gcons;
     int *marker_slots;    /* open addressing over the markers read so far, by id */
     int nmarker_slots;
     int *body_slots;      /* the same over the bodies */
@@ -97,6 +97,9 @@ int hx_draft_resolve_routines(hx_draft *d);
  * (model.h's variable_order), a cycle of VARVALs refused; after the arrays
  * and the routines; 0 or -1. */
 int hx_draft_link_variables(hx_draft *d);
+/* The general constraints' pass (gcon_elements.c): their I markers, their
+ * expressions linked and their inputs checked; 0 or -1. */
+int hx_draft_link_gcons(hx_draft *d);
 /* The requests' pass (request_elements.c): their markers' indices, their
  * expressions linked against the model; 0 or -1. */
 int hx_draft_resolve_requests(hx_draft *d);

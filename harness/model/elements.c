@@ -11,6 +11,7 @@
 
 #include "base/vecmath.h"
 #include "model/joint_elements.h"
+#include "model/gcon_elements.h"
 #include "model/load_elements.h"
 #include "model/orientation.h"
 #include "model/units.h"
@@ -523,6 +524,7 @@ const hx_element_spec hx_element_specs[] = {
     {"Constraint_Joint", hx_joint_attrs, hx_build_joint, NULL, 0},
     {"Constraint_Jprim", hx_joint_attrs, hx_build_jprim, NULL, 0},
     {"Constraint_Coupler", coupler_attrs, build_coupler, NULL, 0},
+    {"Constraint_General", hx_gcon_attrs, hx_build_gcon, NULL, 0},
     {"Force_Vector_TwoBody", force_vector_attrs, build_force_vector, NULL, 0},
     {"Force_Field", force_field_attrs, build_force_field, NULL, 0},
     {"Force_Vector_OneBody", vector_load_attrs, build_vector_load, NULL, 0},

@@ -268,6 +268,9 @@ void hx_model_free(hx_model *m)
         for (int j = 0; j < 8; ++j)
             hx_expr_free(m->requests[k].f[j]);
     free(m->requests);
+    for (int k = 0; k < m->ngcons; ++k)
+        hx_expr_free(m->gcons[k].program);
+    free(m->gcons);
     for (int k = 0; k < m->nvariables; ++k)
         hx_expr_free(m->variables[k].program);
     free(m->variables);

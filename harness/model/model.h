@@ -287,6 +287,17 @@ typedef struct hx_model_expression {
     int line, column;
 } hx_model_expression;
 
+/* A general constraint (Constraint_General, an Adams GCON; docs/interface.md
+ * §7.16): an expression of the markers' displacements and rotations and of
+ * time that the motion holds at zero, one row of the constraint system. */
+typedef struct hx_gcon {
+    int id;
+    int i_marker_id;          /* the marker its reaction would be read at; 0: none */
+    int i_marker;             /* its index, or -1 */
+    hx_expr_program *program; /* linked; its inputs checked (gcon_elements.c) */
+    int line;
+} hx_gcon;
+
 typedef struct hx_model {
     char *path;
     char *dir;               /* folder of the model file */
@@ -302,6 +313,8 @@ typedef struct hx_model {
     int njoints;
     hx_coupler *couplers;
     int ncouplers;
+    hx_gcon *gcons;          /* the general constraints, in the order read */
+    int ngcons;
     hx_force *forces;
     int nforces;
     hx_load *loads;

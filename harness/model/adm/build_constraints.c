@@ -1,6 +1,7 @@
 /*
- * JOINT, JPRIM, COUPLER and MOTION (docs/interface.md §9.4) into
- * Constraint_Joint, Constraint_Jprim, Constraint_Coupler and Motion_Joint. Which joints the harness simulates
+ * JOINT, JPRIM, COUPLER, MOTION and GCON (docs/interface.md §9.4) into
+ * Constraint_Joint, Constraint_Jprim, Constraint_Coupler, Motion_Joint and
+ * Constraint_General. Which joints the harness simulates
  * is decided before (simulated.c): here every entry built is one it holds.
  */
 #include <stdio.h>
@@ -155,5 +156,25 @@ int hx_adm_build_motion(hx_adm_reader *r, hx_adm_entry *e)
         hx_adm_element_number(&el, "ic_vel", hx_adm_number(e, "ICVEL", 0, 0.0));
     if (hx_adm_element_user(r, e, &el, NULL) != 0)
         return -1;
+    return hx_adm_element_build(r, e, &el, NULL);
+}
+
+/* GCON/id, I=marker, FUNCTION=expression into a Constraint_General (a
+ * FUNCTION=USER(...) goes on to its builder, which refuses a GCOSUB). */
+int hx_adm_build_gcon(hx_adm_reader *r, hx_adm_entry *e)
+{
+    hx_adm_element el;
+    hx_adm_element_init(&el, "Constraint_General");
+    if (hx_adm_has(e, "I"))
+        hx_adm_element_number(&el, "i_marker_id", hx_adm_ref(e, "I"));
+    if (hx_adm_is_user(hx_adm_text(e, "FUNCTION"))) {
+        if (hx_adm_element_user(r, e, &el, NULL) != 0)
+            return -1;
+    } else {
+        if (hx_adm_has(e, "ROUTINE"))
+            return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
+                               " FUNCTION=USER(...)");
+        hx_adm_element_expression(&el, "expr", e, "FUNCTION");
+    }
     return hx_adm_element_build(r, e, &el, NULL);
 }

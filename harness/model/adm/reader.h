@@ -72,6 +72,7 @@ int hx_adm_build_joint(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_jprim(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_coupler(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_motion(hx_adm_reader *r, hx_adm_entry *e);
+int hx_adm_build_gcon(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_gforce(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_sforce(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_field(hx_adm_reader *r, hx_adm_entry *e);

@@ -56,6 +56,9 @@ static const hx_adm_keyword motion[] = {
     K("FUNCTION", HX_ADM_EXPR, 1, 1, 1, NULL), ROUTINES(1), REAL("ICDISP", 1), REAL("ICVEL", 1),
     KEND};
 
+static const hx_adm_keyword gcon[] = {
+    ID("I", "MARKER"), K("FUNCTION", HX_ADM_EXPR, 1, 1, 1, NULL), ROUTINES(1), KEND};
+
 static const hx_adm_keyword gforce[] = {
     NEED_ID("I", "MARKER"), NEED_ID("JFLOAT", "MARKER"), ID("RM", "MARKER"), EXPR("FX"),
     EXPR("FY"), EXPR("FZ"), EXPR("TX"), EXPR("TY"), EXPR("TZ"), EXPR("FUNCTION"), ROUTINES(1),
@@ -142,6 +145,7 @@ const hx_adm_spec hx_adm_statements[] = {
     BUILD("JPRIM", jprim, hx_adm_build_jprim),
     BUILD("COUPLER", coupler, hx_adm_build_coupler),
     BUILD("MOTION", motion, hx_adm_build_motion),
+    BUILD("GCON", gcon, hx_adm_build_gcon),
     BUILD("GFORCE", gforce, hx_adm_build_gforce),
     BUILD("VFORCE", vforce, hx_adm_build_gforce),
     BUILD("VTORQUE", vtorque, hx_adm_build_gforce),
@@ -173,8 +177,6 @@ const hx_adm_spec hx_adm_statements[] = {
     SETTING("ENVIRONMENT", "solver environment settings"),
     SETTING("MATRIX", "a MATRIX is data of elements the harness does not simulate (LSE, FIELD"
                       " matrices given by id, ...)"),
-    UNSIMULATED("GCON", "a general constraint (an expression), which the harness does not"
-                        " simulate yet"),
     UNSIMULATED("UCON", "a user constraint, which the harness does not simulate yet"),
     UNSIMULATED("GEAR", "a GEAR (a constraint through a common velocity marker), which the"
                         " harness does not simulate yet"),

@@ -23,6 +23,7 @@
 #include "sim/dynamics/constraint_matrix.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/coordinate_rows.h"
+#include "sim/dynamics/expression_rows.h"
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/joint_equations.h"
 #include "sim/dynamics/redundancy.h"
@@ -128,6 +129,8 @@ int hx_constraints_init(hx_dynamics *d, hx_message *msg)
         if (m->routines[k].kind == HX_ROUTINE_MOTION && !m->joints[m->routines[k].joint].reduced)
             d->motion_routine[d->nmotions++] = k;
     n += d->nmotions;
+    d->gcon_first = n; /* a Constraint_General: a row f(q, t) = 0 (expression_rows.h) */
+    n += m->ngcons;
     d->nrows = n;
     d->rows = calloc((size_t)n + 1, sizeof *d->rows);
     d->u_body = malloc(sizeof(int) * ((size_t)d->nu + 1));
@@ -188,7 +191,7 @@ int hx_constraints_init(hx_dynamics *d, hx_message *msg)
         sort_blocks(r);
         r->scale = rt->motion_type == 'T' ? L : 1.0;
     }
-    return 0;
+    return hx_expression_rows_init(d, L, msg);
 }
 
 void hx_constraints_free(hx_dynamics *d)
@@ -208,12 +211,13 @@ void hx_constraints_free(hx_dynamics *d)
 size_t hx_constraints_work_size(const hx_dynamics *d)
 {
     const size_t n = (size_t)d->nrows, nu = (size_t)d->nu, v = (size_t)d->row_values;
-    return 2 * v * n + n * n + 4 * n + 2 * nu + 16; /* G, W, A, phi, gamma, step, spare; x, y */
+    return 2 * v * n + n * n + 4 * n + 2 * nu + 16 /* G, W, A, phi, gamma, step, spare; x, y */
+           + hx_expression_rows_work_size(d);
 }
 
 /* The work's parts (dd->constraint_work). */
 typedef struct work {
-    double *G, *W, *A, *phi, *gamma, *step, *x;
+    double *G, *W, *A, *phi, *gamma, *step, *x, *expression;
 } work;
 
 static work parts(const hx_dynamics *d, hx_dynamics_data *dd)
@@ -222,6 +226,7 @@ static work parts(const hx_dynamics *d, hx_dynamics_data *dd)
     work w;
     w.G = dd->constraint_work, w.W = w.G + v * n, w.A = w.W + v * n, w.phi = w.A + n * n;
     w.gamma = w.phi + n, w.step = w.gamma + n, w.x = w.step + 2 * n;
+    w.expression = w.x + 2 * (size_t)d->nu + 16;
     return w;
 }
 
@@ -275,6 +280,26 @@ static int constraint_jacobian(const hx_dynamics *d, hx_dynamics_data *dd, doubl
             return -1;
         memcpy(G + V * r, joint_G, sizeof(double) * 12);
     }
+    for (int k = 0; k < d->m->ngcons; ++k) {
+        const int r = d->gcon_first + k;
+        if (hx_expression_rows_eval(d, dd, k, t, y, parts(d, dd).expression, phi + r, G + V * r,
+                                    gamma ? gamma + r : NULL) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+/* What row i's G u must equal: f'(t) of a motion, -df/dt of a general
+ * constraint, else 0. */
+static int row_rate(const hx_dynamics *d, hx_dynamics_data *dd, int i, double t,
+                    const double *y, double *rate)
+{
+    *rate = 0.0;
+    if (i >= d->gcon_first)
+        return hx_expression_rows_rate(d, dd, i - d->gcon_first, t, y, parts(d, dd).expression,
+                                       rate);
+    if (i >= d->motion_first)
+        return hx_coordinate_rows_rate(d, dd, i, t, rate);
     return 0;
 }
 
@@ -431,10 +456,10 @@ int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t,
     const int formed = hx_constraint_matrix_form(d, w.G, w.W, w.A);
     for (int a = 0; a < n; ++a)
         w.step[a] = row_dot(d, w.G, d->active[a], y + d->nq, 0.0);
-    for (int a = 0; a < n; ++a) /* a motion's row holds G u = f'(t) */
+    for (int a = 0; a < n; ++a) /* a motion's row holds G u = f'(t), a GCON's -df/dt */
         if (d->active[a] >= d->motion_first) {
             double rate;
-            if (hx_coordinate_rows_rate(d, dd, d->active[a], t, &rate) != 0)
+            if (row_rate(d, dd, d->active[a], t, y, &rate) != 0)
                 return -1;
             w.step[a] -= rate;
         }
@@ -472,7 +497,7 @@ int hx_constraints_residuals(const hx_dynamics *d, hx_dynamics_data *dd, double 
     *phi_max = hx_max_abs(w.phi, d->nrows);
     for (int i = 0; i < d->nrows; ++i) {
         double rate = 0.0;
-        if (i >= d->motion_first && hx_coordinate_rows_rate(d, dd, i, t, &rate) != 0)
+        if (row_rate(d, dd, i, t, y, &rate) != 0)
             return -1;
         *phidot_max = fmax(*phidot_max, fabs(row_dot(d, w.G, i, y + d->nq, 0.0) - rate));
     }

@@ -74,9 +74,12 @@ typedef struct hx_dynamics {
     int load_work, element_work;  /* y indices of the work done by loads and by elements */
     hx_binding **coupler_binding; /* per coupler; NULL for the built-in form */
     int nrows;                    /* constraint rows: the couplers', the joints', then the
-                                   * motions' on joints between bodies */
+                                   * motions' on joints between bodies, the general
+                                   * constraints' */
     int motion_first, nmotions;   /* the motions' rows: from motion_first, one a motion */
     int *motion_routine;          /* per motion row: its Motion_Joint routine (model.h) */
+    int gcon_first;               /* the general constraints' rows: from gcon_first, one a
+                                   * Constraint_General (expression_rows.h) */
     int row_values;               /* values a row of G keeps (hx_constraint_row) */
     unsigned char *coupler_general; /* per coupler: 1 when a joint of it is not reduced */
     hx_constraint_row *rows;

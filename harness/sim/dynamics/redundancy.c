@@ -72,6 +72,10 @@ const char *hx_redundancy_name_row(const hx_dynamics *d, int row, char *text, si
         snprintf(text, size, "COUPLER/%d", m->couplers[row].id);
         return text;
     }
+    if (row >= d->gcon_first && row < d->gcon_first + m->ngcons) {
+        snprintf(text, size, "GCON/%d", m->gcons[row - d->gcon_first].id);
+        return text;
+    }
     if (row >= d->motion_first && row < d->motion_first + d->nmotions) {
         snprintf(text, size, "MOTION/%d",
                  m->routines[d->motion_routine[row - d->motion_first]].id);
