@@ -32,10 +32,9 @@ int hx_jacobian_init(hx_jacobian *jac, const hx_dynamics *d, hx_message *msg)
         jac->f_minus = jac->f_plus + jac->n;
         jac->ncoupled = nc > 0 ? hx_constraints_coupled(d, jac->coupled) : 0;
         const size_t k = (size_t)jac->ncoupled;
-        jac->projector = calloc(k * k + 2 * k + (size_t)nc * ((size_t)nc + 1) + 1, sizeof(double));
+        jac->projector = calloc(k * k + 4 * k + (size_t)nc * ((size_t)nc + 1) + 1, sizeof(double));
         jac->coupler_work = jac->projector + k * k;
-        jac->coupled_at = calloc(k + 1, sizeof(int));
-        ok = jac->projector != NULL && jac->coupled_at != NULL;
+        ok = jac->projector != NULL;
     }
     if (!ok) {
         hx_jacobian_free(jac);
@@ -43,7 +42,8 @@ int hx_jacobian_init(hx_jacobian *jac, const hx_dynamics *d, hx_message *msg)
     }
     /* each part says why it failed */
     if (hx_element_blocks_init(jac, msg) != 0 || hx_stateeqn_blocks_init(jac, msg) != 0 ||
-        hx_routine_blocks_init(jac, msg) != 0 || hx_jacobian_pattern(jac, msg) != 0) {
+        hx_routine_blocks_init(jac, msg) != 0 || hx_coupler_blocks_init(jac, msg) != 0 ||
+        hx_jacobian_pattern(jac, msg) != 0 || hx_coupler_blocks_locate(jac, msg) != 0) {
         hx_jacobian_free(jac);
         return -1;
     }
@@ -64,7 +64,7 @@ void hx_jacobian_free(hx_jacobian *jac)
     free(jac->body_marker_start);
     hx_stateeqn_blocks_free(jac);
     free(jac->coupled);
-    free(jac->coupled_at);
+    hx_coupler_blocks_free(jac);
     free(jac->projector);
     free(jac->driven);
     free(jac->diff_scratch);

@@ -82,6 +82,11 @@ int hx_stateeqn_blocks_init(hx_jacobian *jac, hx_message *msg);
 void hx_stateeqn_blocks_free(hx_jacobian *jac);
 int hx_stateeqn_blocks(hx_jacobian *jac, double t, const double *y);
 void hx_stateeqn_blocks_describe(const hx_jacobian *jac, char *text, size_t size);
+/* The constraint system's groups (before the pattern) and where their rows
+ * sit (after it); 0, or -1 with msg (out of memory). */
+int hx_coupler_blocks_init(hx_jacobian *jac, hx_message *msg);
+int hx_coupler_blocks_locate(hx_jacobian *jac, hx_message *msg);
+void hx_coupler_blocks_free(hx_jacobian *jac);
 int hx_coupler_blocks(hx_jacobian *jac, double t, const double *y);
 /* Control_Diff rows and driven joints' rows (routine_blocks.c): the driven
  * rows marked once (0, or -1 with msg); at a build, last: its differences set
