@@ -146,6 +146,163 @@ static void jacobian_on_jointed_bodies_with_partials(void **state)
                    "jointed bodies, a GFOSUB twin, at t = 0.05 s", HX_PARTIALS_TWIN);
 }
 
+/* The constraint system's blocks group by group (coupler_blocks.c): three
+ * groups of bodies that no constraint row joins. A: a differential's carrier
+ * on a revolute to ground, its two side gears on revolutes to it (joints
+ * between moving bodies: none of the three is reduced, the carrier's joint
+ * not being its only one), a coupler of the gears' joints (between moving
+ * bodies), and one of the left gear's joint with the reduced revolute of a
+ * pendulum, itself coupled to a second pendulum on a reduced revolute;
+ * B: a double pendulum of free bodies on spherical joints, swinging; D: two
+ * pendulums on reduced revolutes coupled alone (the couplers' former
+ * arithmetic). Force_Fields join B's lower body to A's left gear, A's first
+ * pendulum to A's right gear and D's first pendulum to B's lower body, so
+ * each group's rows reach columns of another group, which P must not mix.
+ * Sizes differ (A 20 velocities and 43 columns, B 12 and 26, D 2 and 4), so
+ * the stage's differences, which move a column of every group at once, run
+ * past the shorter groups. */
+static const char grouped_model[] =
+    "<MotionSolve><Model>\n"
+    "<Param_Unit force_unit=\"NEWTON\" mass_unit=\"KILOGRAM\" length_unit=\"MILLIMETER\""
+    " time_unit=\"SECOND\"/>\n"
+    "<Force_Gravity grav_x=\"0\" grav_y=\"0\" grav_z=\"-9810\"/>\n"
+    "<Reference_String id=\"401\" string=\"%s/flex_coupled.gfj\"/>\n"
+    "<Body_Ground id=\"1\"/>\n"
+#define AXIS_Y " a00=\"1\" a10=\"0\" a20=\"0\" a01=\"0\" a11=\"0\" a21=\"-1\" a02=\"0\" a12=\"1\" a22=\"0\""
+    "<Reference_Marker id=\"11\" body_id=\"1\"" AXIS_Y "/>\n"
+    "<Reference_Marker id=\"111\" body_id=\"1\" pos_y=\"-200\" pos_z=\"100\"/>\n"
+    "<Reference_Marker id=\"211\" body_id=\"1\" pos_x=\"500\"" AXIS_Y "/>\n"
+    "<Reference_Marker id=\"212\" body_id=\"1\" pos_x=\"800\"" AXIS_Y "/>\n"
+    /* A */
+    "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"8\" inertia_xx=\"2e4\" inertia_yy=\"4e4\""
+    " inertia_zz=\"2e4\" w_ic_y=\"2\"/>\n"
+    "<Reference_Marker id=\"20\" body_id=\"2\" pos_z=\"-20\"/>\n"
+    "<Reference_Marker id=\"21\" body_id=\"2\"" AXIS_Y "/>\n"
+    "<Reference_Marker id=\"22\" body_id=\"2\" pos_y=\"-50\"" AXIS_Y "/>\n"
+    "<Reference_Marker id=\"23\" body_id=\"2\" pos_y=\"50\"" AXIS_Y "/>\n"
+    "<Body_Rigid id=\"3\" cg_id=\"30\" mass=\"3\" inertia_xx=\"6e3\" inertia_yy=\"1e4\""
+    " inertia_zz=\"6e3\" w_ic_y=\"2\"/>\n"
+    "<Reference_Marker id=\"30\" body_id=\"3\" pos_x=\"5\" pos_y=\"-50\"/>\n"
+    "<Reference_Marker id=\"31\" body_id=\"3\" pos_y=\"-50\"" AXIS_Y "/>\n"
+    "<Reference_Marker id=\"33\" body_id=\"3\" pos_y=\"-100\" pos_z=\"-50\"/>\n"
+    "<Body_Rigid id=\"4\" cg_id=\"40\" mass=\"4\" inertia_xx=\"8e3\" inertia_yy=\"1.5e4\""
+    " inertia_zz=\"8e3\" w_ic_y=\"2\"/>\n"
+    "<Reference_Marker id=\"40\" body_id=\"4\" pos_x=\"-4\" pos_y=\"50\" pos_z=\"3\"/>\n"
+    "<Reference_Marker id=\"41\" body_id=\"4\" pos_y=\"50\"" AXIS_Y "/>\n"
+    "<Reference_Marker id=\"42\" body_id=\"4\" pos_x=\"250\" pos_y=\"50\"/>\n"
+    "<Constraint_Joint id=\"1\" type=\"REVOLUTE\" i_marker_id=\"21\" j_marker_id=\"11\"/>\n"
+    "<Constraint_Joint id=\"2\" type=\"REVOLUTE\" i_marker_id=\"31\" j_marker_id=\"22\"/>\n"
+    "<Constraint_Joint id=\"3\" type=\"REVOLUTE\" i_marker_id=\"41\" j_marker_id=\"23\"/>\n"
+    "<Constraint_Coupler id=\"4\" joint1_id=\"2\" freedom_1=\"R\" joint2_id=\"3\""
+    " freedom_2=\"R\" coefficients=\"1, 1\"/>\n"
+    "<Constraint_Coupler id=\"5\" joint1_id=\"2\" freedom_1=\"R\" joint2_id=\"22\""
+    " freedom_2=\"R\" coefficients=\"1, -2\"/>\n"
+    "<Force_Scalar_TwoBody id=\"1\" type=\"TORQUE\" i_marker_id=\"21\" j_marker_id=\"11\""
+    " val=\"1000\"/>\n"
+    /* B */
+    "<Body_Rigid id=\"12\" cg_id=\"120\" mass=\"1\" inertia_xx=\"2e3\" inertia_yy=\"2.5e3\""
+    " inertia_zz=\"1.5e3\" w_ic_x=\"1\"/>\n"
+    "<Reference_Marker id=\"120\" body_id=\"12\" pos_x=\"10\" pos_y=\"-200\" pos_z=\"50\"/>\n"
+    "<Reference_Marker id=\"121\" body_id=\"12\" pos_y=\"-200\" pos_z=\"100\"/>\n"
+    "<Reference_Marker id=\"122\" body_id=\"12\" pos_y=\"-200\"/>\n"
+    "<Body_Rigid id=\"13\" cg_id=\"130\" mass=\"2\" inertia_xx=\"3e3\" inertia_yy=\"2e3\""
+    " inertia_zz=\"4e3\" v_ic_x=\"100\" w_ic_z=\"1.5\"/>\n"
+    "<Reference_Marker id=\"130\" body_id=\"13\" pos_y=\"-190\" pos_z=\"-50\"/>\n"
+    "<Reference_Marker id=\"131\" body_id=\"13\" pos_y=\"-200\"/>\n"
+    "<Reference_Marker id=\"132\" body_id=\"13\" pos_y=\"-100\" pos_z=\"-50\"/>\n"
+    "<Constraint_Joint id=\"11\" type=\"SPHERICAL\" i_marker_id=\"121\" j_marker_id=\"111\"/>\n"
+    "<Constraint_Joint id=\"12\" type=\"SPHERICAL\" i_marker_id=\"131\" j_marker_id=\"122\"/>\n"
+    /* C */
+    "<Body_Rigid id=\"22\" cg_id=\"220\" mass=\"1\" inertia_xx=\"3400\" inertia_yy=\"3400\""
+    " inertia_zz=\"100\" w_ic_y=\"3\"/>\n"
+    "<Reference_Marker id=\"220\" body_id=\"22\" pos_x=\"500\" pos_z=\"-200\"/>\n"
+    "<Reference_Marker id=\"221\" body_id=\"22\" pos_x=\"500\"" AXIS_Y "/>\n"
+    "<Reference_Marker id=\"222\" body_id=\"22\" pos_x=\"250\" pos_y=\"50\"/>\n"
+    "<Body_Rigid id=\"23\" cg_id=\"230\" mass=\"2\" inertia_xx=\"15000\" inertia_yy=\"15000\""
+    " inertia_zz=\"200\"/>\n"
+    "<Reference_Marker id=\"230\" body_id=\"23\" pos_x=\"800\" pos_z=\"-300\"/>\n"
+    "<Reference_Marker id=\"231\" body_id=\"23\" pos_x=\"800\"" AXIS_Y "/>\n"
+    "<Constraint_Joint id=\"21\" type=\"REVOLUTE\" i_marker_id=\"221\" j_marker_id=\"211\"/>\n"
+    "<Constraint_Joint id=\"22\" type=\"REVOLUTE\" i_marker_id=\"231\" j_marker_id=\"212\"/>\n"
+    "<Constraint_Coupler id=\"23\" joint1_id=\"21\" freedom_1=\"R\" joint2_id=\"22\""
+    " freedom_2=\"R\" coefficients=\"10, 15\"/>\n"
+    /* D */
+    "<Reference_Marker id=\"311\" body_id=\"1\" pos_x=\"1100\"" AXIS_Y "/>\n"
+    "<Reference_Marker id=\"312\" body_id=\"1\" pos_x=\"1400\"" AXIS_Y "/>\n"
+    "<Body_Rigid id=\"32\" cg_id=\"320\" mass=\"1.5\" inertia_xx=\"3000\" inertia_yy=\"3000\""
+    " inertia_zz=\"100\" w_ic_y=\"-2\"/>\n"
+    "<Reference_Marker id=\"320\" body_id=\"32\" pos_x=\"1150\" pos_z=\"-200\"/>\n"
+    "<Reference_Marker id=\"321\" body_id=\"32\" pos_x=\"1100\"" AXIS_Y "/>\n"
+    "<Reference_Marker id=\"322\" body_id=\"32\" pos_x=\"600\" pos_y=\"-150\" pos_z=\"-50\"/>\n"
+    "<Body_Rigid id=\"33\" cg_id=\"330\" mass=\"2.5\" inertia_xx=\"12000\" inertia_yy=\"12000\""
+    " inertia_zz=\"300\"/>\n"
+    "<Reference_Marker id=\"330\" body_id=\"33\" pos_x=\"1400\" pos_z=\"-250\"/>\n"
+    "<Reference_Marker id=\"331\" body_id=\"33\" pos_x=\"1400\"" AXIS_Y "/>\n"
+    "<Constraint_Joint id=\"31\" type=\"REVOLUTE\" i_marker_id=\"321\" j_marker_id=\"311\"/>\n"
+    "<Constraint_Joint id=\"32\" type=\"REVOLUTE\" i_marker_id=\"331\" j_marker_id=\"312\"/>\n"
+    "<Constraint_Coupler id=\"33\" joint1_id=\"31\" freedom_1=\"R\" joint2_id=\"32\""
+    " freedom_2=\"R\" coefficients=\"3, -4\"/>\n"
+    "<Reference_Marker id=\"133\" body_id=\"13\" pos_x=\"600\" pos_y=\"-150\" pos_z=\"-50\"/>\n"
+#undef AXIS_Y
+    /* across the groups */
+    "<Force_Field id=\"1\" i_marker_id=\"132\" j_marker_id=\"33\""
+    " usrsub_param_string=\"USER(3, 401)\" usrsub_dll_name=\"libusrsub.so\"/>\n"
+    "<Force_Field id=\"2\" i_marker_id=\"222\" j_marker_id=\"42\""
+    " usrsub_param_string=\"USER(3, 401)\" usrsub_dll_name=\"libusrsub.so\"/>\n"
+    "<Force_Field id=\"3\" i_marker_id=\"322\" j_marker_id=\"133\""
+    " usrsub_param_string=\"USER(3, 401)\" usrsub_dll_name=\"libusrsub.so\"/>\n"
+    "</Model></MotionSolve>\n";
+
+/* The index of the body of id `id`, and the y column of its first position. */
+static int body_index(const model *m, int id)
+{
+    for (int b = 0; b < m->d.m->nbodies; ++b)
+        if (m->d.m->bodies[b].id == id)
+            return b;
+    fail_msg("no body %d", id);
+    return -1;
+}
+
+static int first_column(const model *m, int id)
+{
+    return m->d.dof[body_index(m, id)].q;
+}
+
+static void jacobian_of_constraint_groups(void **state)
+{
+    (void)state;
+    static char text[16384];
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1); /* libusrsub.so is built there too */
+    snprintf(text, sizeof text, grouped_model, EXAMPLES_DIR);
+    const char *path = test_write_file("constraint_groups.xml", text);
+    model m;
+    open_model(&m, path);
+    hx_jacobian jac;
+    hx_message msg;
+    assert_int_equal(hx_jacobian_init(&jac, &m.d, &msg), 0);
+    /* the groups as the comment above counts them, in the order of their first
+     * rows (the couplers' rows come first: A, D, then B's joints) */
+    assert_int_equal(jac.ngroups, 3);
+    for (int g = 0; g < 3; ++g) {
+        static const int velocities[3] = {20, 2, 12}, columns[3] = {43, 4, 26};
+        assert_int_equal(jac.group_start[g + 1] - jac.group_start[g], velocities[g]);
+        assert_int_equal(jac.group_column_start[g + 1] - jac.group_column_start[g], columns[g]);
+    }
+    /* B's rows reach A's left gear and D's first pendulum (Force_Fields), not
+     * A's pendulums; D's rows reach B's lower body, not A's gears */
+    const int row_b = m.d.nq + m.d.dof[body_index(&m, 13)].u;
+    const int row_d = m.d.nq + m.d.dof[body_index(&m, 33)].u;
+    assert_true(hx_sparsity_find(&jac.pattern, row_b, first_column(&m, 3)) >= 0);
+    assert_true(hx_sparsity_find(&jac.pattern, row_b, first_column(&m, 32)) >= 0);
+    assert_true(hx_sparsity_find(&jac.pattern, row_b, first_column(&m, 22)) < 0);
+    assert_true(hx_sparsity_find(&jac.pattern, row_d, first_column(&m, 13)) >= 0);
+    assert_true(hx_sparsity_find(&jac.pattern, row_d, first_column(&m, 3)) < 0);
+    hx_jacobian_free(&jac);
+    close_model(&m);
+    /* swinging and turning: every row and column of the groups against differences */
+    jacobian_after(path, 0.05, "three constraint groups at t = 0.05 s", HX_PARTIALS_FIESUB);
+}
+
 /* The y of a model with Force_StateEqn states, a Control_Diff state after
  * them and loads (suspension_bushing.xml with tp_routines.c's LAG on the arm's
  * angle): every block where the layout puts it, against differences, during
@@ -303,6 +460,7 @@ int main(void)
         cmocka_unit_test(jacobian_asks_a_field_for_its_partials),
         cmocka_unit_test(jacobian_has_the_routines_rows),
         cmocka_unit_test(jacobian_on_jointed_bodies_with_partials),
+        cmocka_unit_test(jacobian_of_constraint_groups),
         cmocka_unit_test(jacobian_with_state_equations_diffs_and_loads),
         cmocka_unit_test(non_finite_partials_stop_the_run_with_their_element),
         cmocka_unit_test(a_twin_that_disagrees_is_set_aside),

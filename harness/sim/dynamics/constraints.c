@@ -534,8 +534,8 @@ int hx_constraints_coupled(const hx_dynamics *d, int *index)
 }
 
 int hx_constraints_projector(const hx_dynamics *d, hx_dynamics_data *dd, double t,
-                             const double *y, const int *index, int count, double *work_,
-                             double *P)
+                             const double *y, const int *index, int count,
+                             const int *group_start, int ngroups, double *work_, double *P)
 {
     const int n = d->nactive;
     work w = parts(d, dd);
@@ -546,28 +546,40 @@ int hx_constraints_projector(const hx_dynamics *d, hx_dynamics_data *dd, double 
     const int dense = d->envelope_first == NULL;
     if (!dense && hx_constraint_matrix_form(d, w.G, w.W, A) != 0)
         return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
-    for (int j = 0; j < count; ++j) {
+    int solves = 0;
+    for (int g = 0; g < ngroups; ++g)
+        if (group_start[g + 1] - group_start[g] > solves)
+            solves = group_start[g + 1] - group_start[g];
+    memset(P, 0, sizeof(double) * (size_t)count * (size_t)count);
+    for (int j = 0; j < solves; ++j) {
         if (dense)
             hx_constraint_matrix_gram(d, w.G, w.W, A);
         memset(col, 0, sizeof(double) * (size_t)d->nu);
-        col[index[j]] = 1.0;
+        for (int g = 0; g < ngroups; ++g) /* the j-th velocity of every group at once */
+            if (group_start[g] + j < group_start[g + 1])
+                col[index[group_start[g] + j]] = 1.0;
         for (int k = 0; k < n; ++k)
             z[k] = row_dot(d, w.G, d->active[k], col, 0.0);
         if (hx_constraint_matrix_solve(d, A, z) != 0)
             return hx_dynamics_fail(dd, "the constraint Jacobian is singular at t = %g", t);
         transpose_apply(d, w.G, z, s);
-        for (int i = 0; i < count; ++i) {
-            const int u = index[i], b = d->u_body[u];
-            const hx_body_dof *dof = &d->dof[b];
-            double ms;
-            if (dof->kind != HX_DOF_FREE) {
-                ms = (1.0 / dof->mass) * s[u];
-            } else {
-                double block[6];
-                hx_constraint_matrix_inverse_mass(d, b, s + dof->u, block);
-                ms = block[u - dof->u];
+        for (int g = 0; g < ngroups; ++g) {
+            const int jj = group_start[g] + j;
+            if (jj >= group_start[g + 1])
+                continue;
+            for (int i = group_start[g]; i < group_start[g + 1]; ++i) {
+                const int u = index[i], b = d->u_body[u];
+                const hx_body_dof *dof = &d->dof[b];
+                double ms;
+                if (dof->kind != HX_DOF_FREE) {
+                    ms = (1.0 / dof->mass) * s[u];
+                } else {
+                    double block[6];
+                    hx_constraint_matrix_inverse_mass(d, b, s + dof->u, block);
+                    ms = block[u - dof->u];
+                }
+                P[i + count * jj] = (i == jj ? 1.0 : 0.0) - ms;
             }
-            P[i + count * j] = (i == j ? 1.0 : 0.0) - ms;
         }
     }
     return 0;

@@ -35,11 +35,15 @@ int hx_constraints_coupled(const hx_dynamics *d, int *index);
 
 /* The couplers' share of the accelerations is udot = P udot_free + c(q, u),
  * with P = I - M^-1 G^T (G M^-1 G^T)^-1 G: P over the coupled velocities
- * (index, count, from hx_constraints_coupled), column-major count x count;
- * work holds nrows (nrows + 1) values. 0, or -1 (dd->message). */
+ * (index, count, from hx_constraints_coupled), column-major count x count.
+ * index lists them in ngroups groups (group_start, ngroups + 1 entries) no
+ * row joins: P is zero between groups, so one solve gives a column of every
+ * group (as many solves as the largest group has velocities; one group of
+ * all: one a velocity). work holds nrows (nrows + 1) values. 0, or -1
+ * (dd->message). */
 int hx_constraints_projector(const hx_dynamics *d, hx_dynamics_data *dd, double t,
-                             const double *y, const int *index, int count, double *work,
-                             double *P);
+                             const double *y, const int *index, int count,
+                             const int *group_start, int ngroups, double *work, double *P);
 
 /* Normalizes quaternions and projects onto the constraints (positions by
  * Newton, mass-weighted, then velocities); fails when they cannot be met, the largest

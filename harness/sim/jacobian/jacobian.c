@@ -32,10 +32,9 @@ int hx_jacobian_init(hx_jacobian *jac, const hx_dynamics *d, hx_message *msg)
         jac->f_minus = jac->f_plus + jac->n;
         jac->ncoupled = nc > 0 ? hx_constraints_coupled(d, jac->coupled) : 0;
         const size_t k = (size_t)jac->ncoupled;
-        jac->projector = calloc(k * k + 2 * k + (size_t)nc * ((size_t)nc + 1) + 1, sizeof(double));
+        jac->projector = calloc(k * k + 4 * k + (size_t)nc * ((size_t)nc + 1) + 1, sizeof(double));
         jac->coupler_work = jac->projector + k * k;
-        jac->coupled_at = calloc(k + 1, sizeof(int));
-        ok = jac->projector != NULL && jac->coupled_at != NULL;
+        ok = jac->projector != NULL;
     }
     if (!ok) {
         hx_jacobian_free(jac);
@@ -43,8 +42,9 @@ int hx_jacobian_init(hx_jacobian *jac, const hx_dynamics *d, hx_message *msg)
     }
     /* each part says why it failed */
     if (hx_element_blocks_init(jac, msg) != 0 || hx_load_blocks_init(jac, msg) != 0 ||
-        hx_stateeqn_blocks_init(jac, msg) != 0 ||
-        hx_routine_blocks_init(jac, msg) != 0 || hx_jacobian_pattern(jac, 0, msg) != 0) {
+        hx_stateeqn_blocks_init(jac, msg) != 0 || hx_routine_blocks_init(jac, msg) != 0 ||
+        hx_coupler_blocks_init(jac, msg) != 0 || hx_jacobian_pattern(jac, 0, msg) != 0 ||
+        hx_coupler_blocks_locate(jac, msg) != 0) {
         hx_jacobian_free(jac);
         return -1;
     }
@@ -54,10 +54,10 @@ int hx_jacobian_init(hx_jacobian *jac, const hx_dynamics *d, hx_message *msg)
 
 int hx_jacobian_widen(hx_jacobian *jac, hx_message *msg)
 {
-    if (hx_jacobian_pattern(jac, 1, msg) != 0)
+    if (hx_jacobian_pattern(jac, 1, msg) != 0 || hx_load_blocks_init(jac, msg) != 0)
         return -1;
     hx_element_blocks_locate(jac); /* the blocks' places in the wider pattern */
-    return 0;
+    return hx_coupler_blocks_locate(jac, msg);
 }
 
 void hx_jacobian_free(hx_jacobian *jac)
@@ -73,7 +73,7 @@ void hx_jacobian_free(hx_jacobian *jac)
     free(jac->body_marker_start);
     hx_stateeqn_blocks_free(jac);
     free(jac->coupled);
-    free(jac->coupled_at);
+    hx_coupler_blocks_free(jac);
     free(jac->projector);
     free(jac->driven);
     free(jac->diff_scratch);

@@ -19,8 +19,9 @@
  *   - each Force_StateEqn (stateeqn_blocks.c): its partials (YFOXX..YFOYU, or
  *     differences of YFOSUB) with its inputs' slopes, by differences of the
  *     harness's measures on the bodies they measure;
- *   - the couplers (coupler_blocks.c): the accelerations they project, P
- *     J_free, plus their own terms by differences of the constraint stage;
+ *   - the constraint system (coupler_blocks.c): the accelerations it
+ *     projects, P J_free, plus its own terms by differences of the
+ *     constraint stage, group by group of the bodies its rows join;
  *   - the routines (routine_blocks.c): Control_Diff rows by differences of
  *     DIFSUB (or of the expression, exact in the states it reads by DIF),
  *     with the rates they read by DIF1 computed again; a driven joint's
@@ -70,16 +71,24 @@ typedef struct hx_jacobian {
     int *body_markers, *body_marker_start; /* each body's tracked markers */
     /* Force_StateEqn elements (stateeqn_blocks.c) */
     struct hx_stateeqn_blocks *stateeqn_blocks;
-    /* couplers (coupler_blocks.c) */
+    /* the constraint system (coupler_blocks.c): the coupled velocities in
+     * groups that no row joins, each group's accelerations a function of its
+     * own bodies' states and free accelerations alone */
     int ncoupled;               /* coupled velocities */
-    int *coupled;               /* their indices into u */
-    int *coupled_at;            /* scratch: where their rows sit in one column */
-    double *projector, *coupler_work; /* P (ncoupled^2); gathered rows; the solve's */
+    int *coupled;               /* their indices into u, group by group */
+    int ngroups, *group_start;  /* ngroups + 1: each group's first in coupled */
+    int *group_columns, *group_column_start; /* each group's bodies' y columns */
+    int *group_pattern, *group_pattern_start; /* the columns each group's rows have */
+    int *coupled_at;            /* per group and column of it: where its rows sit */
+    long *coupled_at_start;     /* ngroups + 1 */
+    double *projector, *coupler_work; /* P (ncoupled^2, zero between groups); 4 ncoupled
+                                       * and the solves' scratch */
     /* driven joints (routine_blocks.c): the y rows whose rate is a function of
      * time alone, marked once */
     unsigned char *driven;
     double *diff_scratch;       /* the Control_Diff expressions' partials (routine_blocks.c) */
     double *load_scratch;       /* the loads' expressions' partials (load_blocks.c) */
+    size_t load_scratch_size;   /* its doubles */
     double *y, *f_plus, *f_minus;     /* scratch: n each */
     hx_messages twin_messages;  /* the twins' own messages, apart from the session's */
     long evaluations;           /* right-hand sides the builds evaluated */

@@ -77,13 +77,20 @@ int hx_element_blocks_init(hx_jacobian *jac, hx_message *msg);
 /* After the pattern: where each element's rows sit in its columns. */
 void hx_element_blocks_locate(hx_jacobian *jac);
 int hx_element_blocks(hx_jacobian *jac, double t, const double *y);
-/* The loads' expressions' scratch (load_blocks.c); 0, or -1 with msg. */
+/* The loads' expressions' scratch (load_blocks.c), grown to the variables'
+ * definitions in force when called again (hx_jacobian_widen); 0, or -1 with msg. */
 int hx_load_blocks_init(hx_jacobian *jac, hx_message *msg);
 int hx_load_blocks(hx_jacobian *jac, double t, const double *y);
 int hx_stateeqn_blocks_init(hx_jacobian *jac, hx_message *msg);
 void hx_stateeqn_blocks_free(hx_jacobian *jac);
 int hx_stateeqn_blocks(hx_jacobian *jac, double t, const double *y);
 void hx_stateeqn_blocks_describe(const hx_jacobian *jac, char *text, size_t size);
+/* The constraint system's groups (before the pattern) and where their rows
+ * sit (after it, again after each change of the pattern); 0, or -1 with msg
+ * (out of memory). */
+int hx_coupler_blocks_init(hx_jacobian *jac, hx_message *msg);
+int hx_coupler_blocks_locate(hx_jacobian *jac, hx_message *msg);
+void hx_coupler_blocks_free(hx_jacobian *jac);
 int hx_coupler_blocks(hx_jacobian *jac, double t, const double *y);
 /* Control_Diff rows and driven joints' rows (routine_blocks.c): the driven
  * rows marked once (0, or -1 with msg); at a build, last: its differences set

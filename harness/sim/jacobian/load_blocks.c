@@ -186,8 +186,14 @@ int hx_load_blocks_init(hx_jacobian *jac, hx_message *msg)
         if (m->variables[k].program != NULL &&
             hx_expr_scratch_size(m->variables[k].program) > scratch)
             scratch = hx_expr_scratch_size(m->variables[k].program);
-    jac->load_scratch = malloc(sizeof(double) * scratch);
-    return jac->load_scratch == NULL ? hx_fail(msg, "out of memory") : 0;
+    if (jac->load_scratch != NULL && scratch <= jac->load_scratch_size)
+        return 0;
+    double *grown = realloc(jac->load_scratch, sizeof(double) * scratch);
+    if (grown == NULL)
+        return hx_fail(msg, "out of memory");
+    jac->load_scratch = grown;
+    jac->load_scratch_size = scratch;
+    return 0;
 }
 
 /* A load's values and their partials in its inputs at the build's state. */

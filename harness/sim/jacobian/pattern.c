@@ -4,9 +4,10 @@
  * body an element, a load or a Force_StateEqn joins it to (and on that
  * element's states); a Force_StateEqn's rows on its states and on the bodies
  * its inputs measure; the coupled velocities' rows on everything any of
- * them depends on (the couplers mix them); a Control_Diff's row on its state
- * and what its DIFSUB declared it reads (routine_blocks.c); the work
- * accumulators' rows on nothing (newton_matrix.h). The diagonal is always in.
+ * their group depends on (the constraints mix a group's rows,
+ * coupler_blocks.c); a Control_Diff's row on its state and what its DIFSUB
+ * declared it reads (routine_blocks.c); the work accumulators' rows on
+ * nothing (newton_matrix.h). The diagonal is always in.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -104,35 +105,38 @@ static void state_element(pairs *p, const hx_dynamics *d, int k)
     }
 }
 
-/* The coupled velocities' rows: each on every column any of them has. */
+/* The coupled velocities' rows, group by group (coupler_blocks.c): each
+ * group's rows on every column any of them has, on its velocities and its
+ * bodies' positions; a group's rows are independent of another's columns. */
 static void coupled_rows(pairs *p, const hx_jacobian *jac)
 {
     const hx_dynamics *d = jac->d;
-    if (jac->ncoupled == 0)
+    if (jac->ncoupled == 0 || jac->n <= 0)
         return;
-    unsigned char *is_row = calloc((size_t)jac->n, 1), *is_col = calloc((size_t)jac->n, 1);
+    const size_t n = (size_t)jac->n;
+    unsigned char *is_row = calloc(n, 1), *is_col = calloc(n, 1);
     if (is_row == NULL || is_col == NULL) {
         free(is_row), free(is_col);
         p->failed = 1;
         return;
     }
-    for (int i = 0; i < jac->ncoupled; ++i)
-        is_row[d->nq + jac->coupled[i]] = 1;
     const long before = p->count;
-    for (long k = 0; k < before; ++k)
-        if (is_row[p->rows[k]])
-            is_col[p->cols[k]] = 1;
-    for (int i = 0; i < jac->ncoupled; ++i)
-        is_col[d->nq + jac->coupled[i]] = 1;
-    for (int b = 0; b < d->m->nbodies; ++b) /* the coupled bodies' positions */
-        for (int i = 0; i < jac->ncoupled; ++i)
-            if (d->dof[b].kind != HX_DOF_GROUND && d->dof[b].u == jac->coupled[i])
-                for (int c = 0; c < (d->dof[b].kind == HX_DOF_FREE ? 7 : 1); ++c)
-                    is_col[d->dof[b].q + c] = 1;
-    for (int c = 0; c < jac->n; ++c)
-        if (is_col[c])
-            for (int i = 0; i < jac->ncoupled; ++i)
-                add(p, d->nq + jac->coupled[i], c);
+    for (int g = 0; g < jac->ngroups; ++g) {
+        const int first = jac->group_start[g], last = jac->group_start[g + 1];
+        memset(is_row, 0, n);
+        memset(is_col, 0, n);
+        for (int i = first; i < last; ++i)
+            is_row[d->nq + jac->coupled[i]] = 1;
+        for (long k = 0; k < before; ++k)
+            if (is_row[p->rows[k]])
+                is_col[p->cols[k]] = 1;
+        for (int c = jac->group_column_start[g]; c < jac->group_column_start[g + 1]; ++c)
+            is_col[jac->group_columns[c]] = 1; /* its bodies' positions and velocities */
+        for (int c = 0; c < jac->n; ++c)
+            if (is_col[c])
+                for (int i = first; i < last; ++i)
+                    add(p, d->nq + jac->coupled[i], c);
+    }
     free(is_row), free(is_col);
 }
 
