@@ -1,5 +1,6 @@
 /* The user routines that are not forces in the equations of motion (routines.h). */
 #include "expr/evaluate.h"
+#include "expr/time_derivative.h"
 #include "host/invoke.h"
 #include "host/variable_values.h"
 #include "sim/dynamics/routines.h"
@@ -65,6 +66,17 @@ int hx_routines_motion(const hx_dynamics *d, hx_dynamics_data *dd, int k, int io
 {
     static const char *const what[3] = {"value (iord 0)", "rate (iord 1)",
                                          "acceleration (iord 2)"};
+    const hx_routine *r = &d->m->routines[k];
+    if (r->program != NULL) { /* by expression: f, f' exact, f'' by differences of f' */
+        hx_expr_fault fault;
+        if (hx_time_derivative_eval(r->program, &dd->frames, iord, value, &fault) == 0)
+            return 0;
+        char element[48];
+        hx_message msg;
+        snprintf(element, sizeof element, "Motion_Joint %d", r->id);
+        hx_expr_fail(&msg, r->program, &fault, element);
+        return hx_dynamics_fail(dd, "%s", msg.text);
+    }
     hx_binding *b = d->routine_binding[k];
     hx_invoke_routine(b, &dd->frames, iord, 0, value, NULL);
     return hx_dynamics_check_call(d, dd, b, value, 1, what[iord], dd->frames.time);

@@ -50,8 +50,9 @@ int hx_routines_diff_expression(const hx_dynamics *d, hx_dynamics_data *dd, int 
 int hx_routines_driven_rows(const hx_dynamics *d, int *rows);
 
 /* MOTSUB of routine k (a Motion_Joint) at iord 0, 1 or 2, at dd->frames's
- * time: the reduced driver's and a motion row's (constraints.c); 0 or -1
- * (dd->message). */
+ * time, or its expression's value, rate and acceleration in time
+ * (expr/time_derivative.h): the reduced driver's and a motion row's
+ * (constraints.c); 0 or -1 (dd->message). */
 int hx_routines_motion(const hx_dynamics *d, hx_dynamics_data *dd, int k, int iord,
                        double *value);
 
