@@ -373,10 +373,17 @@ int hx_draft_resolve_routines(hx_draft *d)
                           " translation)", r->id, r->joint_id);
             return -1;
         }
-        if (!m->joints[joint].reduced && r->val_type != 'D') {
-            hx_draft_fail(d, r->line, "Motion_Joint %d: val_type %c on joint %d, which is not a"
+        if (!m->joints[joint].reduced && r->val_type == 'A') {
+            hx_draft_fail(d, r->line, "Motion_Joint %d: val_type A on joint %d, which is not a"
                           " body's only joint to ground: the harness drives such a joint in"
-                          " displacement (val_type D) only", r->id, r->val_type, r->joint_id);
+                          " displacement or velocity (val_type D or V) only", r->id, r->joint_id);
+            return -1;
+        }
+        if (!m->joints[joint].reduced && r->val_type == 'V' && r->ic_given[0]) {
+            hx_draft_fail(d, r->line, "Motion_Joint %d: ic_disp on joint %d, which is not a"
+                          " body's only joint to ground: a velocity motion there starts from"
+                          " the coordinate where the model places the joint (leave ic_disp"
+                          " out)", r->id, r->joint_id);
             return -1;
         }
         const char freedom = type == HX_JOINT_CYLINDRICAL ? r->motion_type

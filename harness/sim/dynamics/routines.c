@@ -3,6 +3,7 @@
 #include "expr/time_derivative.h"
 #include "host/invoke.h"
 #include "host/variable_values.h"
+#include "sim/dynamics/coordinate_rows.h"
 #include "sim/dynamics/routines.h"
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/joint_coordinate.h"
@@ -234,10 +235,13 @@ int hx_routines_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, con
             const int body = m->markers[m->joints[r->joint].i_marker].body;
             if (hx_routines_motion(d, dd, k, 0, &values[0]) != 0)
                 return -1;
-            if (!m->joints[r->joint].reduced) { /* a row: its coordinate near f */
+            if (!m->joints[r->joint].reduced) { /* a row: its coordinate near f, or its rate */
                 double value;
-                hx_joint_coordinate_near(d, r->joint, r->motion_type, y, values[0], &value, NULL,
-                                         NULL);
+                if (r->val_type == 'V')
+                    value = hx_coordinate_rows_joint_rate(d, r->joint, r->motion_type, y);
+                else
+                    hx_joint_coordinate_near(d, r->joint, r->motion_type, y, values[0], &value,
+                                             NULL, NULL);
                 fprintf(f, ",%.6g", value - values[0]);
                 continue;
             }
