@@ -9,6 +9,8 @@
  *    iord 0 and 1 its value and rate at t = 0; for V its rate is MOTSUB's
  *    value and its acceleration iord 1; for A its acceleration is the value.
  *    The joint's forces then do not move it: its reaction is the motion's.
+ *    A motion by expression gives the same three values in time
+ *    (expr/time_derivative.h).
  *    The coordinate follows the integrated rates, within the integrator's
  *    tolerance of MOTSUB's value (the CSV's motionID.error says how far).
  *  - Post_Request (REQSUB) and USERSUB Reference_Variable (VARSUB) values are
