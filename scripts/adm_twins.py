@@ -143,6 +143,20 @@ def twin(path):
             else:
                 args += user(a)
             statement("COUPLER", i, args)
+        elif tag == "Motion_Joint":
+            args = ["JOINT = " + a["joint_id"]]
+            if "motion_type" in a:
+                args.append({"T": "TRANSLATION", "R": "ROTATION"}[a["motion_type"].upper()])
+            args.append({"D": "DISPLACEMENT", "V": "VELOCITY",
+                         "A": "ACCELERATION"}[a.get("val_type", "D").upper()])
+            for x, k in (("ICDISP", "ic_disp"), ("ICVEL", "ic_vel")):
+                if k in a:
+                    args.append("%s = %s" % (x, a[k]))
+            if a.get("type", "").upper() == "USERSUB" or "usrsub_param_string" in a:
+                args += user(a)
+            else:
+                args.append("FUNCTION = " + a["expr"])
+            statement("MOTION", i, args)
         elif tag == "Force_Vector_TwoBody":
             kind = {"forceandtorque": "GFORCE", "forceonly": "VFORCE",
                     "torqueonly": "VTORQUE"}[a.get("type", "ForceAndTorque").lower()]

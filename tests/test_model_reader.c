@@ -407,13 +407,12 @@ static void unsimulated_elements_are_read_and_refused_by_the_dynamics(void **sta
     (void)state;
     char xml[2048];
     snprintf(xml, sizeof xml, HEAD "%s"
-             "<Motion_Joint id=\"5\" joint_id=\"3\" type=\"EXPRESSION\" val_type=\"D\""
-             " expr=\"0\"/>\n" TAIL, free_body);
+             "<Control_StateEqn id=\"5\" num_state=\"1\"/>\n" TAIL, free_body);
     hx_model *m;
     char *warnings = warnings_of("motion.xml", xml, &m);
-    assert_contains(warnings, "motion.xml:6:", "warning", "Motion_Joint id=5", "run and bench refuse");
+    assert_contains(warnings, "motion.xml:6:", "warning", "Control_StateEqn id=5", "run and bench refuse");
     assert_int_equal(m->nunsimulated, 1);
-    assert_contains(m->unsimulated, "Motion_Joint 5", "line 6");
+    assert_contains(m->unsimulated, "Control_StateEqn 5", "line 6");
     free(warnings);
     hx_model_free(m);
     hx_session s;
@@ -421,7 +420,7 @@ static void unsimulated_elements_are_read_and_refused_by_the_dynamics(void **sta
     assert_int_equal(hx_session_open(&s, test_write_file("motion.xml", xml), NULL, &msg), 0);
     hx_dynamics d;
     assert_int_equal(hx_dynamics_init(&d, &s, &msg), -1);
-    assert_contains(msg.text, "Motion_Joint 5", "does not simulate");
+    assert_contains(msg.text, "Control_StateEqn 5", "does not simulate");
     if (d.dof != NULL)
         hx_dynamics_free(&d);
     hx_session_close(&s);

@@ -534,7 +534,7 @@ const hx_element_spec hx_element_specs[] = {
     {"Reference_Variable", hx_variable_attrs, hx_build_variable, NULL, 0},
     {"Post_Request", hx_request_attrs, hx_build_request, NULL, 0},
     {"Control_Diff", hx_diff_attrs, hx_build_diff, NULL, 0},
-    {"Motion_Joint", hx_motion_attrs, hx_build_motion, NULL, 1},
+    {"Motion_Joint", hx_motion_attrs, hx_build_motion, NULL, 0},
     {"Reference_Spline", hx_spline_attrs, hx_build_spline, hx_spline_text, 0},
 };
 const int hx_element_spec_count = (int)(sizeof hx_element_specs / sizeof hx_element_specs[0]);

@@ -209,8 +209,9 @@ typedef struct hx_routine {
     int joint;           /* its index */
     char val_type;       /* Motion_Joint: 'D', 'V' or 'A': what MOTSUB's value is */
     char motion_type;    /* Motion_Joint: 'R', 'T', or 0 when not written */
-    /* Control_Diff type EXPRESSION (docs/interface.md §7.10): its rate, linked; NULL: a
-     * DIFSUB (user) one, which has no other field below */
+    /* Control_Diff type EXPRESSION (docs/interface.md §7.10): its rate, linked; a
+     * Motion_Joint type EXPRESSION (§7.12): its value, a function of TIME alone; NULL:
+     * a user routine's (DIFSUB, MOTSUB, ...), which has no other field below */
     hx_expr_program *program;
     int reads_variables; /* its program reads VARVAL or ARYVAL of a U array */
     int line;

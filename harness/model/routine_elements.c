@@ -88,10 +88,10 @@ const hx_attr_spec hx_diff_attrs[] = {
     ID, TEXT("type"), {"is_implicit", HX_ATTR_BOOL, 0}, REAL("ic"), REAL("ic_dot"),
     {"is_static_hold", HX_ATTR_BOOL, 0}, TEXT("expr"), USER_CALL, END};
 
-/* type="EXPRESSION" (or no type, an expr and no user routine): the state's
+/* type="EXPRESSION" (or no type and no user routine): a Control_Diff's
  * rate is expr (docs/interface.md §7.10), parsed here, linked once the model
- * is whole (hx_draft_resolve_routines). */
-static int expression_diff(const hx_element_read *e)
+ * is whole (hx_draft_resolve_routines); a Motion_Joint's the same. */
+static int expression_form(const hx_element_read *e)
 {
     const char *type = hx_attr_text(e, "type");
     if (type != NULL)
@@ -102,7 +102,7 @@ static int expression_diff(const hx_element_read *e)
 
 void hx_build_diff(hx_draft *d, const hx_element_read *e)
 {
-    const int expression = expression_diff(e);
+    const int expression = expression_form(e);
     if (expression) {
         if (!hx_attr_present(e, "expr")) {
             hx_draft_fail(d, e->line, "Control_Diff %d: attribute expr is missing (type"
@@ -140,13 +140,39 @@ void hx_build_diff(hx_draft *d, const hx_element_read *e)
 
 const hx_attr_spec hx_motion_attrs[] = {
     ID, TEXT("type"), REQUIRED("joint_id", HX_ATTR_INT), TEXT("joint_type"),
-    TEXT("motion_type"), TEXT("val_type"), REAL("ic_disp"), REAL("ic_vel"), IGNORED("expr"),
+    TEXT("motion_type"), TEXT("val_type"), REAL("ic_disp"), REAL("ic_vel"), TEXT("expr"),
     USER_CALL, END};
+
+/* type="EXPRESSION" (or no type and no user routine): the motion is expr, a
+ * function of TIME (docs/interface.md §7.12), parsed here, linked once the
+ * model is whole (hx_draft_resolve_routines); else MOTSUB's. */
+static int expression_motion(hx_draft *d, const hx_element_read *e)
+{
+    if (!expression_form(e))
+        return user_type(d, e) != 0 ? -1 : 0;
+    if (!hx_attr_present(e, "expr")) {
+        hx_draft_fail(d, e->line, "Motion_Joint %d: attribute expr is missing (type EXPRESSION:"
+                      " the motion as a function of TIME)", e->id);
+        return -1;
+    }
+    if (hx_attr_present(e, "usrsub_param_string") || hx_attr_present(e, "usrsub_dll_name")) {
+        hx_draft_fail(d, e->line, "Motion_Joint %d: type EXPRESSION takes no user routine"
+                      " (usrsub_*)", e->id);
+        return -1;
+    }
+    return 1;
+}
 
 void hx_build_motion(hx_draft *d, const hx_element_read *e)
 {
-    if (user_type(d, e) != 0)
+    const int expression = expression_motion(d, e);
+    if (expression < 0)
         return;
+    if (!expression && hx_attr_present(e, "expr")) {
+        hx_draft_fail(d, e->line, "Motion_Joint %d: type USERSUB takes no expr (MOTSUB computes"
+                      " the motion)", e->id);
+        return;
+    }
     const char *val_type = hx_attr_text(e, "val_type");
     if (val_type == NULL)
         val_type = "D";
@@ -162,8 +188,10 @@ void hx_build_motion(hx_draft *d, const hx_element_read *e)
                       motion_type);
         return;
     }
-    hx_routine *r = push_routine(d, e, HX_ROUTINE_MOTION, 1);
+    hx_routine *r = push_routine(d, e, HX_ROUTINE_MOTION, !expression);
     if (r == NULL)
+        return;
+    if (expression && hx_draft_parse_expression(d, e, "expr", &r->program) != 0)
         return;
     r->val_type = (char)(val_type[0] & ~0x20); /* upper case */
     r->ic[0] = hx_attr_number(e, "ic_disp", 0.0);
@@ -224,6 +252,31 @@ static int link_diff(hx_draft *d, int k)
     return 0;
 }
 
+/* Links a Motion_Joint's expression: TIME is all it may read (its rate and
+ * acceleration are taken in time, expr/time_derivative.h); any other input
+ * is refused at its file:line:column. */
+static int link_motion(hx_draft *d, hx_routine *r)
+{
+    hx_message why;
+    if (hx_expr_link(r->program, d->m, &why) != 0) {
+        hx_draft_fail_expression(d, "Motion_Joint", r->id, "expr", why.text);
+        return -1;
+    }
+    const hx_expr_input *in = hx_expr_inputs(r->program);
+    const int n = hx_expr_input_count(r->program);
+    while (in < hx_expr_inputs(r->program) + n && in->kind == HX_EXPR_INPUT_TIME)
+        ++in;
+    if (in == hx_expr_inputs(r->program) + n)
+        return 0;
+    char name[64], what[HX_MESSAGE_MAX];
+    snprintf(what, sizeof what, "%s:%d:%d: %s: a motion's expression reads TIME alone (the"
+             " harness takes its rate and acceleration in time; a motion of the state is not"
+             " simulated)", d->path, in->line, in->column,
+             hx_expr_input_text(in, name, sizeof name));
+    hx_draft_fail_expression(d, "Motion_Joint", r->id, "expr", what);
+    return -1;
+}
+
 /* The expression Control_Diffs linked and ordered, each after those whose
  * rate it reads (passes until none is added: they are few, this runs once);
  * a cycle of DIF1 is refused naming each element of it with its line. */
@@ -239,7 +292,7 @@ static int order_diffs(hx_draft *d)
     }
     int total = 0;
     for (int k = 0; k < m->nroutines; ++k)
-        if (m->routines[k].program != NULL) {
+        if (m->routines[k].program != NULL && m->routines[k].kind == HX_ROUTINE_DIFF) {
             ++total;
             if (link_diff(d, k) != 0) {
                 free(ordered);
@@ -250,7 +303,8 @@ static int order_diffs(hx_draft *d)
     for (int added = 1; added && count < total;) {
         added = 0;
         for (int k = 0; k < m->nroutines; ++k) {
-            if (m->routines[k].program == NULL || ordered[k])
+            if (m->routines[k].program == NULL || m->routines[k].kind != HX_ROUTINE_DIFF ||
+                ordered[k])
                 continue;
             int ready = 1;
             for (int j = 0; j < hx_expr_input_count(m->routines[k].program) && ready; ++j) {
@@ -268,7 +322,7 @@ static int order_diffs(hx_draft *d)
         int first = -1;
         for (int k = 0; k < m->nroutines; ++k) {
             const hx_routine *r = &m->routines[k];
-            if (r->program == NULL || ordered[k])
+            if (r->program == NULL || r->kind != HX_ROUTINE_DIFF || ordered[k])
                 continue;
             first = first < 0 ? k : first;
             for (int j = 0; j < hx_expr_input_count(r->program); ++j) {
@@ -319,10 +373,17 @@ int hx_draft_resolve_routines(hx_draft *d)
                           " translation)", r->id, r->joint_id);
             return -1;
         }
-        if (!m->joints[joint].reduced && r->val_type != 'D') {
-            hx_draft_fail(d, r->line, "Motion_Joint %d: val_type %c on joint %d, which is not a"
+        if (!m->joints[joint].reduced && r->val_type == 'A') {
+            hx_draft_fail(d, r->line, "Motion_Joint %d: val_type A on joint %d, which is not a"
                           " body's only joint to ground: the harness drives such a joint in"
-                          " displacement (val_type D) only", r->id, r->val_type, r->joint_id);
+                          " displacement or velocity (val_type D or V) only", r->id, r->joint_id);
+            return -1;
+        }
+        if (!m->joints[joint].reduced && r->val_type == 'V' && r->ic_given[0]) {
+            hx_draft_fail(d, r->line, "Motion_Joint %d: ic_disp on joint %d, which is not a"
+                          " body's only joint to ground: a velocity motion there starts from"
+                          " the coordinate where the model places the joint (leave ic_disp"
+                          " out)", r->id, r->joint_id);
             return -1;
         }
         const char freedom = type == HX_JOINT_CYLINDRICAL ? r->motion_type
@@ -343,6 +404,8 @@ int hx_draft_resolve_routines(hx_draft *d)
             }
         r->joint = joint;
         r->motion_type = freedom;
+        if (r->program != NULL && link_motion(d, r) != 0)
+            return -1;
     }
     return 0;
 }

@@ -137,7 +137,11 @@ int hx_adm_build_motion(hx_adm_reader *r, hx_adm_entry *e)
 {
     hx_adm_element el;
     hx_adm_element_init(&el, "Motion_Joint");
-    hx_adm_element_text(&el, "type", "USERSUB");
+    const int user = hx_adm_is_user(hx_adm_text(e, "FUNCTION"));
+    if (!user && hx_adm_has(e, "ROUTINE"))
+        return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
+                           " FUNCTION=USER(...)");
+    hx_adm_element_text(&el, "type", user ? "USERSUB" : "EXPRESSION");
     hx_adm_element_number(&el, "joint_id", hx_adm_ref(e, "JOINT"));
     if (hx_adm_has(e, "TRANSLATION") && hx_adm_has(e, "ROTATION"))
         return hx_adm_fail(r, e, e->line, "TRANSLATION and ROTATION: give one");
@@ -154,7 +158,9 @@ int hx_adm_build_motion(hx_adm_reader *r, hx_adm_entry *e)
         hx_adm_element_number(&el, "ic_disp", hx_adm_number(e, "ICDISP", 0, 0.0));
     if (hx_adm_has(e, "ICVEL"))
         hx_adm_element_number(&el, "ic_vel", hx_adm_number(e, "ICVEL", 0, 0.0));
-    if (hx_adm_element_user(r, e, &el, NULL) != 0)
+    if (!user)
+        hx_adm_element_expression(&el, "expr", e, "FUNCTION");
+    else if (hx_adm_element_user(r, e, &el, NULL) != 0)
         return -1;
     return hx_adm_element_build(r, e, &el, NULL);
 }

@@ -107,9 +107,12 @@ static int coupler_terms(const hx_dynamics *d, hx_dynamics_data *dd, int k, doub
     return n;
 }
 
-/* Motion k's row (docs/interface.md §7.14): phi = a(q) - f(t), G the joint
- * coordinate's, and G u_dot = f''(t) - c, MOTSUB's iord 0 and 2 at t (the
- * rotation unwrapped against f). */
+/* Motion k's row (docs/interface.md §7.12): in displacement phi = a(q) -
+ * f(t), G the joint coordinate's, and G u_dot = f''(t) - c, MOTSUB's iord 0
+ * and 2 at t (the rotation unwrapped against f); in velocity (val_type V)
+ * the row holds G u = f(t) and G u_dot = f'(t) - c, and phi = 0: the
+ * coordinate is where the integrated rates take it, which the position
+ * projection leaves (its Newton step has no component along the row). */
 int hx_coordinate_rows_motion(const hx_dynamics *d, hx_dynamics_data *dd, int k, double t,
                               const double *y, double *phi, double G[12], double *gamma)
 {
@@ -117,6 +120,16 @@ int hx_coordinate_rows_motion(const hx_dynamics *d, hx_dynamics_data *dd, int k,
     const hx_routine *rt = &d->m->routines[routine];
     double f, accel = 0.0, value, c;
     dd->frames.time = t;
+    if (rt->val_type == 'V') {
+        if (gamma != NULL && hx_routines_motion(d, dd, routine, 1, &accel) != 0)
+            return -1;
+        memset(G, 0, sizeof(double) * 12);
+        hx_joint_coordinate_near(d, rt->joint, rt->motion_type, y, 0.0, &value, G, &c);
+        *phi = 0.0;
+        if (gamma != NULL)
+            *gamma = accel - c;
+        return 0;
+    }
     if (hx_routines_motion(d, dd, routine, 0, &f) != 0 ||
         (gamma != NULL && hx_routines_motion(d, dd, routine, 2, &accel) != 0))
         return -1;
@@ -128,12 +141,26 @@ int hx_coordinate_rows_motion(const hx_dynamics *d, hx_dynamics_data *dd, int k,
     return 0;
 }
 
-/* What G u is held to at row i: a motion's rate f'(t), else 0 (not called). */
+/* What G u is held to at row i: a motion's rate f'(t) (f(t) for val_type
+ * V), else 0 (not called). */
 int hx_coordinate_rows_rate(const hx_dynamics *d, hx_dynamics_data *dd, int i, double t,
                             double *rate)
 {
+    const int routine = d->motion_routine[i - d->motion_first];
     dd->frames.time = t;
-    return hx_routines_motion(d, dd, d->motion_routine[i - d->motion_first], 1, rate);
+    return hx_routines_motion(d, dd, routine, d->m->routines[routine].val_type == 'V' ? 0 : 1,
+                              rate);
+}
+
+double hx_coordinate_rows_joint_rate(const hx_dynamics *d, int joint, char freedom,
+                                     const double *y)
+{
+    const hx_model *m = d->m;
+    const hx_joint *j = &m->joints[joint];
+    double value, G[12] = {0};
+    hx_joint_coordinate_near(d, joint, freedom, y, 0.0, &value, G, NULL);
+    const double rate = block_rate(d, m->markers[j->i_marker].body, G, y);
+    return j->reduced ? rate : rate + block_rate(d, m->markers[j->j_marker].body, G + 6, y);
 }
 
 /* A general coupler's row: sum_i grad_i G_i, each joint's blocks at its

@@ -1,7 +1,9 @@
 /* The user routines that are not forces in the equations of motion (routines.h). */
 #include "expr/evaluate.h"
+#include "expr/time_derivative.h"
 #include "host/invoke.h"
 #include "host/variable_values.h"
+#include "sim/dynamics/coordinate_rows.h"
 #include "sim/dynamics/routines.h"
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/joint_coordinate.h"
@@ -65,6 +67,17 @@ int hx_routines_motion(const hx_dynamics *d, hx_dynamics_data *dd, int k, int io
 {
     static const char *const what[3] = {"value (iord 0)", "rate (iord 1)",
                                          "acceleration (iord 2)"};
+    const hx_routine *r = &d->m->routines[k];
+    if (r->program != NULL) { /* by expression: f, f' exact, f'' by differences of f' */
+        hx_expr_fault fault;
+        if (hx_time_derivative_eval(r->program, &dd->frames, iord, value, &fault) == 0)
+            return 0;
+        char element[48];
+        hx_message msg;
+        snprintf(element, sizeof element, "Motion_Joint %d", r->id);
+        hx_expr_fail(&msg, r->program, &fault, element);
+        return hx_dynamics_fail(dd, "%s", msg.text);
+    }
     hx_binding *b = d->routine_binding[k];
     hx_invoke_routine(b, &dd->frames, iord, 0, value, NULL);
     return hx_dynamics_check_call(d, dd, b, value, 1, what[iord], dd->frames.time);
@@ -222,10 +235,13 @@ int hx_routines_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, con
             const int body = m->markers[m->joints[r->joint].i_marker].body;
             if (hx_routines_motion(d, dd, k, 0, &values[0]) != 0)
                 return -1;
-            if (!m->joints[r->joint].reduced) { /* a row: its coordinate near f */
+            if (!m->joints[r->joint].reduced) { /* a row: its coordinate near f, or its rate */
                 double value;
-                hx_joint_coordinate_near(d, r->joint, r->motion_type, y, values[0], &value, NULL,
-                                         NULL);
+                if (r->val_type == 'V')
+                    value = hx_coordinate_rows_joint_rate(d, r->joint, r->motion_type, y);
+                else
+                    hx_joint_coordinate_near(d, r->joint, r->motion_type, y, values[0], &value,
+                                             NULL, NULL);
                 fprintf(f, ",%.6g", value - values[0]);
                 continue;
             }

@@ -9,6 +9,8 @@
  *    iord 0 and 1 its value and rate at t = 0; for V its rate is MOTSUB's
  *    value and its acceleration iord 1; for A its acceleration is the value.
  *    The joint's forces then do not move it: its reaction is the motion's.
+ *    A motion by expression gives the same three values in time
+ *    (expr/time_derivative.h).
  *    The coordinate follows the integrated rates, within the integrator's
  *    tolerance of MOTSUB's value (the CSV's motionID.error says how far).
  *  - Post_Request (REQSUB) and USERSUB Reference_Variable (VARSUB) values are
@@ -50,8 +52,9 @@ int hx_routines_diff_expression(const hx_dynamics *d, hx_dynamics_data *dd, int 
 int hx_routines_driven_rows(const hx_dynamics *d, int *rows);
 
 /* MOTSUB of routine k (a Motion_Joint) at iord 0, 1 or 2, at dd->frames's
- * time: the reduced driver's and a motion row's (constraints.c); 0 or -1
- * (dd->message). */
+ * time, or its expression's value, rate and acceleration in time
+ * (expr/time_derivative.h): the reduced driver's and a motion row's
+ * (constraints.c); 0 or -1 (dd->message). */
 int hx_routines_motion(const hx_dynamics *d, hx_dynamics_data *dd, int k, int iord,
                        double *value);
 
