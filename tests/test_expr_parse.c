@@ -319,7 +319,8 @@ static void link_errors_name_the_id(void **state)
                     "m.xml:10:9: SFORCE is not answered by the harness yet: another element's"
                     " force");
     assert_contains(expr_link_error(&fixture, "ACCX(10)", &msg),
-                    "m.xml:10:5: ACCX is not answered by the harness yet: an acceleration");
+                    "m.xml:10:5: ACCX(10): an acceleration is known only once the forces are",
+                    "algebraic loop");
     assert_contains(expr_link_error(&fixture, "ORIENT(1, 1, 10)", &msg),
                     "m.xml:10:5: ORIENT is not answered by the harness yet");
 }

@@ -2,8 +2,8 @@
  * A program's ids resolved against a model (expr.h): markers, variables,
  * Control_Diffs, arrays, splines and curves by id to their indices, each id
  * the model does not define named with its place in the text; a function
- * the harness does not answer yet is refused here, and so is a joint's
- * reaction anywhere but in an output expression.
+ * the harness does not answer yet is refused here, and so are a joint's
+ * reaction and a marker's acceleration anywhere but in an output expression.
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -63,6 +63,14 @@ static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, 
     switch (in->kind) {
     case HX_EXPR_INPUT_TIME: return 0;
     case HX_EXPR_INPUT_REACTION: return link_reaction(p, in, m, text, output, msg);
+    case HX_EXPR_INPUT_ACCELERATION:
+        if (!output)
+            return fail_at(p, msg, in->line, in->column, "%s: an acceleration is known only once"
+                           " the forces are: a force or variable that reads it closes an"
+                           " algebraic loop, which the harness does not solve (REQUEST and"
+                           " Post_Request expressions may read it)", text);
+        /* its markers are linked as a measure's */
+        /* fall through */
     case HX_EXPR_INPUT_MEASURE:
         for (int k = 0; k < 4; ++k) {
             in->index[k] = in->ids[k] == 0 ? -1 : hx_model_marker(m, in->ids[k]);

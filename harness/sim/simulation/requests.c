@@ -3,7 +3,8 @@
  * from the harness's own measures (frames/measure_functions.h), the
  * expressions by the evaluator (expr/evaluate.h), the variables they read
  * by the host's own answers (host/state_inputs.h), the joints' reactions
- * (JOINT, JPRIM) from the caller's.
+ * (JOINT, JPRIM) and the bodies' accelerations (ACCX .. WDTM) from the
+ * caller's.
  */
 #include <stdlib.h>
 
@@ -53,14 +54,14 @@ static void marker_values(const hx_frames *fr, const hx_request *q, double out[8
 }
 
 int hx_requests_values(const hx_frames *fr, int k, const double *variables,
-                       const double *reactions, double out[8], hx_message *msg)
+                       const hx_expr_outputs *s, double out[8], hx_message *msg)
 {
     const hx_request *q = &fr->model->requests[k];
     if (q->kind != HX_REQUEST_EXPRESSIONS) {
         marker_values(fr, q, out);
         return 0;
     }
-    const hx_expr_context c = {fr, variables, reactions};
+    const hx_expr_context c = {fr, variables, s};
     for (int j = 0; j < 8; ++j) {
         out[j] = 0.0;
         hx_expr_fault fault;
@@ -80,7 +81,7 @@ void hx_requests_csv_header(FILE *f, const hx_model *m)
             fprintf(f, ",request%d.%d", m->requests[k].id, j);
 }
 
-int hx_requests_csv_row(FILE *f, const hx_frames *fr, const double *reactions,
+int hx_requests_csv_row(FILE *f, const hx_frames *fr, const hx_expr_outputs *s,
                         hx_message *msg)
 {
     const hx_model *m = fr->model;
@@ -98,7 +99,7 @@ int hx_requests_csv_row(FILE *f, const hx_frames *fr, const double *reactions,
     int status = 0;
     for (int k = 0; k < m->nrequests && status == 0; ++k) {
         double values[8];
-        status = hx_requests_values(fr, k, variables, reactions, values, msg);
+        status = hx_requests_values(fr, k, variables, s, values, msg);
         for (int j = 0; j < 8 && status == 0; ++j)
             fprintf(f, ",%.15g", values[j]);
     }
