@@ -7,7 +7,9 @@
  * known torque, alpha = T / I about a body axis that is not the world's; a
  * spring's mass, ACCX = -k x / m at every row of a run (the value at the
  * row's state, not an earlier one's); ACCX in a force or a variable refused
- * with its file, line and column.
+ * with its file, line and column; REQUEST/ACCELERATION and Post_Request's
+ * MARKER_ACCELERATION in Adams' order (F1 ACCM, F2..F4 ACCX..ACCZ in RM's
+ * axes, F5 WDTM, F6..F8 WDTX..WDTZ), in a run's CSV and at a state.
  */
 #include <math.h>
 #include <stdio.h>
@@ -87,12 +89,14 @@ static const char falling[] =
     "ACCGRAV/, IGRAV=0, JGRAV=0, KGRAV=-9.81\n"
     "PART/1, GROUND\n"
     "MARKER/10, PART=1\n"
+    "MARKER/11, PART=1, REULER=90D,90D,0\n"
     "PART/2, MASS=2, CM=20, IP=1,1,1, VX=1, VZ=5, WZ=2, WM=20\n"
     "MARKER/20, PART=2, QP=0,0,1\n"
     "MARKER/21, PART=2, QP=1,0,1\n"
     "REQUEST/7, F2=ACCX(20)\\F3=ACCY(20)\\F4=ACCZ(20)\\F1=ACCM(20)\\\n"
     ", F6=WDTX(20)\\F7=WDTY(20)\\F8=WDTZ(20)\\F5=WDTM(20)\n"
     "REQUEST/8, F2=ACCX(21,10)\\F3=ACCY(21,0,10)\\F4=ACCZ(21,10,10,10)\\F1=ACCM(21,10,10)\n"
+    "REQUEST/9, ACCELERATION, I=21, J=10, RM=11\n"
     "END\n";
 
 static void free_fall(void **state)
@@ -106,6 +110,9 @@ static void free_fall(void **state)
     const int first = csv_column(csv, "request7.1");
     assert_true(first > 0);
     assert_int_equal(csv_column(csv, "request8.1"), first + 8);
+    assert_int_equal(csv_column(csv, "request9.1"), first + 16);
+    assert_int_equal(csv_column(csv, "request9.8"), first + 23);
+    assert_int_equal(csv_column(csv, "energy"), first + 24); /* appended before it */
     csv_table t;
     csv_read(csv, &t);
     assert_int_equal(t.rows, 5);
@@ -125,6 +132,14 @@ static void free_fall(void **state)
                 fail_msg("t = %g, column %d: %.15g, expected %.15g", time, first + k + 1,
                          csv_at(&t, row, first + k), w);
         }
+        /* REQUEST/9, ACCELERATION of 21 in RM = 11's axes (x the world's y, y its z, z its
+         * x): ACCM, then (a_y, a_z, a_x) = (-4 sin 2t, -9.81, -4 cos 2t); WDTM, WDT: 0 */
+        const double acc[8] = {sqrt(16 + 9.81 * 9.81), -4 * sin(turn), -9.81, -4 * cos(turn),
+                               0, 0, 0, 0};
+        for (int k = 0; k < 8; ++k)
+            if (fabs(csv_at(&t, row, first + 16 + k) - acc[k]) > 1e-6 * (1 + fabs(acc[k])))
+                fail_msg("t = %g, request9.%d: %.15g, expected %.15g", time, k + 1,
+                         csv_at(&t, row, first + 16 + k), acc[k]);
         /* the centre's: exactly, whatever the state */
         assert_true(csv_at(&t, row, first + 3) == -9.81);
     }
@@ -158,9 +173,13 @@ static void pendulum_at_the_bottom(void **state)
     /* L = 1.5, w = 2: at the bottom gravity has no moment about the pivot, so
      * alpha = 0 and the centre's acceleration is the centripetal w^2 L = 4 *
      * 1.5 = 6, toward the pivot (+y); none along the path (x) */
+#define ACC_REQUEST "<Post_Request id=\"3\" type=\"MARKER_ACCELERATION\" i_marker_id=\"22\"" \
+                    " j_marker_id=\"10\"/>"
     static const char *const joints[2] = {
-        "<Constraint_Joint id=\"1\" type=\"REVOLUTE\" i_marker_id=\"21\" j_marker_id=\"10\"/>",
-        "<Constraint_Joint id=\"1\" type=\"SPHERICAL\" i_marker_id=\"21\" j_marker_id=\"10\"/>"};
+        "<Constraint_Joint id=\"1\" type=\"REVOLUTE\" i_marker_id=\"21\" j_marker_id=\"10\"/>"
+        ACC_REQUEST,
+        "<Constraint_Joint id=\"1\" type=\"SPHERICAL\" i_marker_id=\"21\" j_marker_id=\"10\"/>"
+        ACC_REQUEST};
     for (int k = 0; k < 2; ++k) { /* reduced, then rows (a free body held by a spherical) */
         evaluated e;
         evaluate_text(&e, "bottom.xml", pendulum(1.5, 2.0, joints[k]));
@@ -185,8 +204,17 @@ static void pendulum_at_the_bottom(void **state)
         /* resolved in K = 21's axes (the world's here: the body is unturned) */
         EXPECT(&e, "ACCY(20, 0, 21)", 6.0, 1e-9);
         EXPECT(&e, "WDTZ(20)", 0.0, 1e-9);
-        /* the same component in a turned frame: a marker on the ground turned +90
-         * degrees about z has its x along the world's y */
+        /* MARKER_ACCELERATION of 22: |(-2, 6, 0)| = sqrt(40), (-2, 6, 0), no angular one */
+        const double want[8] = {sqrt(40.0), -2, 6, 0, 0, 0, 0, 0};
+        double got[8];
+        hx_message msg;
+        assert_int_equal(hx_requests_values(&e.m.data.frames, 0, NULL, &e.outputs, got, &msg), 0);
+        for (int j = 0; j < 8; ++j)
+            if (fabs(got[j] - want[j]) > 1e-9)
+                fail_msg("Post_Request 3 expr%d: %.15g, expected %.15g", j + 1, got[j], want[j]);
+        /* without the accelerations: refused, naming the request */
+        assert_int_equal(hx_requests_values(&e.m.data.frames, 0, NULL, NULL, got, &msg), -1);
+        assert_contains(msg.text, "bottom.xml:", "Post_Request 3", "no accelerations");
         release(&e);
     }
     /* away from the bottom: at 90 degrees (the centre level with the pivot) gravity
@@ -230,6 +258,7 @@ static const char torqued[] =
     "MARKER/20, PART=2, REULER=0,90D,0\n"
     "MARKER/21, PART=2, QP=2,0,0\n"
     "SFORCE/1, ROTATION, I=20, J=10, FUNCTION=3\n"
+    "REQUEST/5, ACCELERATION, I=21, RM=11\n"
     "END\n";
 
 static void torque_over_inertia(void **state)
@@ -251,6 +280,16 @@ static void torque_over_inertia(void **state)
     EXPECT(&e, "ACCZ(21, 20)", 1.5, 1e-12);
     /* relative to the body's own frame, it does not turn */
     EXPECT(&e, "WDTM(20, 21)", 0.0, 1e-12);
+    /* REQUEST/5, ACCELERATION of 21 in RM = 11's axes (x the world's y, y its z, z its
+     * x): ACCM 1.5, (a_y, a_z, a_x) = (0, 1.5, 0), WDTM 0.75, (alpha_y, alpha_z,
+     * alpha_x) = (-0.75, 0, 0) */
+    const double want[8] = {1.5, 0, 1.5, 0, 0.75, -0.75, 0, 0};
+    double got[8];
+    hx_message msg;
+    assert_int_equal(hx_requests_values(&e.m.data.frames, 0, NULL, &e.outputs, got, &msg), 0);
+    for (int j = 0; j < 8; ++j)
+        if (fabs(got[j] - want[j]) > 1e-12)
+            fail_msg("REQUEST/5 F%d: %.15g, expected %.15g", j + 1, got[j], want[j]);
     release(&e);
 }
 

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 
 #include "expr/evaluate.h"
+#include "frames/acceleration_measures.h"
 #include "frames/measure_functions.h"
 #include "host/state_inputs.h"
 #include "host/variable_values.h"
@@ -53,10 +54,46 @@ static void marker_values(const hx_frames *fr, const hx_request *q, double out[8
     }
 }
 
+/* ACCELERATION in the same order: ACCM, ACCX .. ACCZ (I, J, RM), WDTM,
+ * WDTX .. WDTZ, the time derivatives in the ground's frame; each marker's
+ * from its body's (the world's at rest). */
+static int acceleration_values(const hx_frames *fr, const hx_request *q, const double *bodies,
+                               double out[8], hx_message *msg)
+{
+    if (bodies == NULL)
+        return hx_fail(msg, "%s:%d: %s: ACCELERATION: no accelerations were given to read it"
+                       " from (they are known at output times only)", fr->model->path,
+                       q->line, q->label);
+    static const double rest[6] = {0, 0, 0, 0, 0, 0};
+    hx_frame scratch[3];
+    const hx_frame *f[4];
+    double acc[2][6];
+    const double *a[4] = {rest, rest, rest, rest};
+    for (int j = 0; j < 3; ++j)
+        f[j] = hx_frames_marker(fr, q->markers[j], &scratch[j]);
+    f[3] = &hx_world_frame;
+    for (int j = 0; j < 2; ++j)
+        if (q->markers[j] >= 0) {
+            const int b = fr->model->markers[q->markers[j]].body;
+            hx_point_acceleration(&fr->bodies[b], bodies + 6 * b, f[j]->p, acc[j]);
+            a[j] = acc[j];
+        }
+    const hx_frame *const in_world[4] = {f[0], f[1], &hx_world_frame, &hx_world_frame};
+    out[0] = hx_acceleration_value(HX_ACC_M, in_world, a);
+    out[4] = hx_acceleration_value(HX_WDT_M, in_world, a);
+    for (int j = 0; j < 3; ++j) {
+        out[1 + j] = hx_acceleration_value((hx_acceleration_measure)(HX_ACC_X + j), f, a);
+        out[5 + j] = hx_acceleration_value((hx_acceleration_measure)(HX_WDT_X + j), f, a);
+    }
+    return 0;
+}
+
 int hx_requests_values(const hx_frames *fr, int k, const double *variables,
                        const hx_expr_outputs *s, double out[8], hx_message *msg)
 {
     const hx_request *q = &fr->model->requests[k];
+    if (q->kind == HX_REQUEST_ACCELERATION)
+        return acceleration_values(fr, q, s != NULL ? s->accelerations : NULL, out, msg);
     if (q->kind != HX_REQUEST_EXPRESSIONS) {
         marker_values(fr, q, out);
         return 0;
