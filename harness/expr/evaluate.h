@@ -25,6 +25,10 @@ typedef struct hx_expr_outputs {
     const double *accelerations; /* the bodies' by index (model->bodies), six each: the body
                                   * frame origin's linear and the angular one, world axes
                                   * (sim/dynamics/accelerations.h); ACCX .. WDTM read them */
+    const double *loads;         /* the loads' by index (model->loads), twelve each: the force
+                                  * and torque on I at I's origin, then on J at the point the
+                                  * load puts its reaction (sim/dynamics/loads.h), world axes;
+                                  * SFORCE reads them */
 } hx_expr_outputs;
 
 typedef struct hx_expr_context {

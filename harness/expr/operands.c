@@ -44,6 +44,35 @@ static int variable(const hx_expr_context *c, const hx_expr_input *in, double *v
     return 0;
 }
 
+/* comp 1..8 of a force F and torque T: FM, FX, FY, FZ, TM, TX, TY, TZ, the
+ * components in rm's axes. */
+static double component(const hx_expr_context *c, int comp, int rm, const double F[3],
+                        const double T[3])
+{
+    const int torque = comp > 4;
+    const double *v = torque ? T : F;
+    if (comp == 1 || comp == 5)
+        return v3_norm(v);
+    hx_frame scratch;
+    double in_rm[3];
+    m3_tapply(in_rm, hx_frames_marker(c->frames, rm, &scratch)->R, v);
+    return in_rm[comp - (torque ? 6 : 2)];
+}
+
+/* SFORCE(id, jflag, comp, rm) (docs/interface.md §8.3): jflag 0 on I at I,
+ * 1 on J where the load puts it. */
+static int load(const hx_expr_context *c, const hx_expr_input *in, double *value,
+                hx_expr_fault *fault)
+{
+    const char *name = hx_expr_function_at(in->function)->name;
+    if (c->outputs == NULL || c->outputs->loads == NULL)
+        return fault_of(fault, HX_EXPR_FAULT_INPUT, name, "no loads were given to read it from"
+                        " (they are known at output times only)", 0, 0.0);
+    const double *at = c->outputs->loads + 12 * in->index[0] + 6 * (in->ids[1] == 1);
+    *value = component(c, in->ids[2], in->index[3], at, at + 3);
+    return 0;
+}
+
 /* JOINT(id, jflag, comp, rm), JPRIM(...) (docs/interface.md §7.14): jflag 0 the
  * reaction on I at I, 1 the one on J at J (-F, and -(T + (x_I - x_J) x F));
  * comp 1..8 FM, FX, FY, FZ, TM, TX, TY, TZ, the components in rm's axes. */
@@ -132,6 +161,10 @@ int hx_expr_operand_input(const hx_expr_program *p, const hx_expr_context *c, in
         break;
     case HX_EXPR_INPUT_ACCELERATION:
         if (acceleration(c, in, value, fault) != 0)
+            return -1;
+        break;
+    case HX_EXPR_INPUT_LOAD:
+        if (load(c, in, value, fault) != 0)
             return -1;
         break;
     case HX_EXPR_INPUT_DIF:

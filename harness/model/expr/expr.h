@@ -34,7 +34,8 @@ typedef enum hx_expr_input_kind {
     HX_EXPR_INPUT_DIF1,
     HX_EXPR_INPUT_ARYVAL,
     HX_EXPR_INPUT_REACTION,
-    HX_EXPR_INPUT_ACCELERATION
+    HX_EXPR_INPUT_ACCELERATION,
+    HX_EXPR_INPUT_LOAD
 } hx_expr_input_kind;
 
 typedef struct hx_expr_input {
@@ -50,7 +51,8 @@ typedef struct hx_expr_input {
                        * VARVAL: the variable's index; DIF, DIF1: the Control_Diff's slot;
                        * ARYVAL: the array's index; REACTION: the joint's index (model
                        * order, primitives among them), its I and J markers' and rm's
-                       * (-1: the world's axes) */
+                       * (-1: the world's axes); LOAD: the load's index (model->loads),
+                       * index[3] rm's */
     int variable;     /* the variable it reads (VARVAL, ARYVAL of a U array), else -1 */
     int line, column; /* its first place in the text */
 } hx_expr_input;

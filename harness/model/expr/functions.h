@@ -51,6 +51,7 @@ typedef enum hx_expr_function_kind {
     HX_FK_ARYVAL,     /* a component of a Reference_Array */
     HX_FK_REACTION,   /* a joint's reaction (JOINT, JPRIM): output expressions only */
     HX_FK_ACCELERATION, /* a marker's acceleration (ACCX .. WDTM): output expressions only */
+    HX_FK_LOAD,       /* an SFORCE's force (id, jflag, comp, rm): output expressions only */
     HX_FK_UNANSWERED  /* parsed, not answered yet */
 } hx_expr_function_kind;
 

@@ -113,7 +113,7 @@ int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
 {
     const hx_model *m = d->m;
     double *ydot = malloc(sizeof(double) * ((size_t)d->n + 6 * (size_t)m->njoints +
-                                            6 * (size_t)m->nbodies));
+                                            6 * (size_t)m->nbodies + 12 * (size_t)m->nloads));
     if (ydot == NULL || hx_dynamics_rhs(d, dd, t, y, ydot) != 0) {
         free(ydot);
         return -1;
@@ -122,7 +122,13 @@ int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
     double *reactions = ydot + d->n, *accelerations = reactions + 6 * m->njoints;
     hx_reactions_all(d, dd, ydot, reactions);
     hx_accelerations_bodies(d, dd, ydot, accelerations);
-    const hx_expr_outputs s = {reactions, accelerations};
+    double *loads = accelerations + 6 * m->nbodies;
+    hx_message msg;
+    if (m->nrequests > 0 && hx_requests_loads(d, dd, loads, &msg) != 0) {
+        free(ydot);
+        return hx_dynamics_fail(dd, "%s", msg.text);
+    }
+    const hx_expr_outputs s = {reactions, accelerations, loads};
     const int status = row(f, d, dd, t, y, energy, energy0, &s);
     free(ydot);
     return status;

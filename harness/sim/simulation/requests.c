@@ -13,6 +13,7 @@
 #include "frames/measure_functions.h"
 #include "host/state_inputs.h"
 #include "host/variable_values.h"
+#include "sim/dynamics/loads.h"
 #include "sim/simulation/requests.h"
 
 /* One measure of the frames named, in the order of its arguments. */
@@ -106,6 +107,27 @@ int hx_requests_values(const hx_frames *fr, int k, const double *variables,
             char element[48];
             snprintf(element, sizeof element, "%s %s%d", q->label, q->adams ? "F" : "expr", j + 1);
             return hx_expr_fail(msg, q->f[j], &fault, element);
+        }
+    }
+    return 0;
+}
+
+int hx_requests_loads(const hx_dynamics *d, const hx_dynamics_data *dd, double *out,
+                      hx_message *msg)
+{
+    const hx_model *m = d->m;
+    for (int k = 0; k < m->nloads; ++k) {
+        double *at = out + 12 * k;
+        for (int j = 0; j < 12; ++j)
+            at[j] = 0.0;
+        if (d->load_off[k])
+            continue; /* switched off: it puts nothing on the bodies */
+        hx_load_share share;
+        if (hx_load_share_at(m, &dd->frames, k, &share, msg) != 0)
+            return -1;
+        for (int s = 0; s < share.count; ++s) {
+            for (int j = 0; j < 3; ++j)
+                at[6 * s + j] = share.F[s][j], at[6 * s + 3 + j] = share.T[s][j];
         }
     }
     return 0;

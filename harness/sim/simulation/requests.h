@@ -11,6 +11,7 @@
 #include "base/message.h"
 #include "expr/evaluate.h"
 #include "frames/frames.h"
+#include "sim/dynamics/dynamics.h"
 
 /* The eight values of request k of fr's model at fr (current for the
  * request's markers: tracked ones updated, the others computed here).
@@ -21,6 +22,13 @@
  * accelerations). */
 int hx_requests_values(const hx_frames *fr, int k, const double *variables,
                        const hx_expr_outputs *s, double out[8], hx_message *msg);
+
+/* The loads' forces at dd's frames (at an output time), twelve a load of
+ * d's model (expr/evaluate.h's hx_expr_outputs.loads): on I at I's origin,
+ * then on J where the load puts its reaction (zeros for an action-only or a
+ * switched-off load). 0, or -1 with an expression's fault in msg. */
+int hx_requests_loads(const hx_dynamics *d, const hx_dynamics_data *dd, double *out,
+                      hx_message *msg);
 
 /* ",request5.1,...,request5.8" for each request, in the order read. */
 void hx_requests_csv_header(FILE *f, const hx_model *m);
