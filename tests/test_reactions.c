@@ -65,7 +65,8 @@ static double output(const evaluated *e, const char *text)
     hx_expr_program *p = hx_expr_parse(text, strlen(text), NULL, &msg);
     if (p == NULL || hx_expr_link_output(p, e->m.session.model, &msg) != 0)
         fail_msg("%s: %s", text, msg.text);
-    const hx_expr_context c = {&e->m.data.frames, NULL, e->r};
+    const hx_expr_outputs outputs = {e->r, NULL, NULL};
+    const hx_expr_context c = {&e->m.data.frames, NULL, &outputs};
     double value;
     hx_expr_fault fault;
     assert_int_equal(hx_expr_eval(p, &c, &value, &fault), 0);
@@ -461,7 +462,8 @@ static void dataset_request_and_force(void **state)
     evaluate_text(&e, "request.adm", text);
     double out[8];
     hx_message msg;
-    assert_int_equal(hx_requests_values(&e.m.data.frames, 0, NULL, e.r, out, &msg), 0);
+    const hx_expr_outputs given = {e.r, NULL, NULL};
+    assert_int_equal(hx_requests_values(&e.m.data.frames, 0, NULL, &given, out, &msg), 0);
     assert_close(out[1], 0.0, 0, TOL);
     assert_close(out[2], 31.62, 0, TOL);
     assert_close(out[3], -31.62, 0, TOL);

@@ -15,15 +15,30 @@
 #include "frames/frames.h"
 #include "model/expr/expr.h"
 
+/* What an output time knows beyond the frames, from the right-hand side
+ * evaluated at its state (a request's: docs/interface.md §7.13); a pointer
+ * NULL where not known (what reads it then faults). */
+typedef struct hx_expr_outputs {
+    const double *reactions;     /* the joints' reactions by index (model->joints), six each:
+                                  * the force and torque on I's body at I's origin, world axes
+                                  * (sim/dynamics/reactions.h); JOINT and JPRIM read them */
+    const double *accelerations; /* the bodies' by index (model->bodies), six each: the body
+                                  * frame origin's linear and the angular one, world axes
+                                  * (sim/dynamics/accelerations.h); ACCX .. WDTM read them */
+    const double *loads;         /* the loads' by index (model->loads), twelve each: the force
+                                  * and torque on I at I's origin, then on J at the point the
+                                  * load puts its reaction (sim/dynamics/loads.h), world axes;
+                                  * SFORCE reads them */
+} hx_expr_outputs;
+
 typedef struct hx_expr_context {
     const hx_frames *frames;   /* of the model the program is linked against */
     const double *variables;   /* the variables' current values by index (model->variables),
                                 * which the caller keeps: VARVAL and ARYVAL of a U array read
                                 * them; may be NULL when the program reads none */
-    const double *reactions;   /* the joints' reactions by index (model->joints), six each:
-                                * the force and torque on I's body at I's origin, world axes
-                                * (sim/dynamics/reactions.h); JOINT and JPRIM read them; NULL
-                                * but where the accelerations are known (a request's output) */
+    const hx_expr_outputs *outputs; /* NULL but at an output time, after the accelerations:
+                                * the forces and variables evaluated within the right-hand
+                                * side cannot know them */
 } hx_expr_context;
 
 /* The value at c. Returns 0, or -1 with the fault (kind, function, what, the

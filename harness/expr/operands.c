@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "base/vecmath.h"
+#include "frames/acceleration_measures.h"
 #include "frames/measure_functions.h"
 #include "model/curve.h"
 #include "model/expr/functions.h"
@@ -43,6 +44,35 @@ static int variable(const hx_expr_context *c, const hx_expr_input *in, double *v
     return 0;
 }
 
+/* comp 1..8 of a force F and torque T: FM, FX, FY, FZ, TM, TX, TY, TZ, the
+ * components in rm's axes. */
+static double component(const hx_expr_context *c, int comp, int rm, const double F[3],
+                        const double T[3])
+{
+    const int torque = comp > 4;
+    const double *v = torque ? T : F;
+    if (comp == 1 || comp == 5)
+        return v3_norm(v);
+    hx_frame scratch;
+    double in_rm[3];
+    m3_tapply(in_rm, hx_frames_marker(c->frames, rm, &scratch)->R, v);
+    return in_rm[comp - (torque ? 6 : 2)];
+}
+
+/* SFORCE(id, jflag, comp, rm) (docs/interface.md §8.3): jflag 0 on I at I,
+ * 1 on J where the load puts it. */
+static int load(const hx_expr_context *c, const hx_expr_input *in, double *value,
+                hx_expr_fault *fault)
+{
+    const char *name = hx_expr_function_at(in->function)->name;
+    if (c->outputs == NULL || c->outputs->loads == NULL)
+        return fault_of(fault, HX_EXPR_FAULT_INPUT, name, "no loads were given to read it from"
+                        " (they are known at output times only)", 0, 0.0);
+    const double *at = c->outputs->loads + 12 * in->index[0] + 6 * (in->ids[1] == 1);
+    *value = component(c, in->ids[2], in->index[3], at, at + 3);
+    return 0;
+}
+
 /* JOINT(id, jflag, comp, rm), JPRIM(...) (docs/interface.md §7.14): jflag 0 the
  * reaction on I at I, 1 the one on J at J (-F, and -(T + (x_I - x_J) x F));
  * comp 1..8 FM, FX, FY, FZ, TM, TX, TY, TZ, the components in rm's axes. */
@@ -50,10 +80,10 @@ static int reaction(const hx_expr_context *c, const hx_expr_input *in, double *v
                     hx_expr_fault *fault)
 {
     const char *name = hx_expr_function_at(in->function)->name;
-    if (c->reactions == NULL)
+    if (c->outputs == NULL || c->outputs->reactions == NULL)
         return fault_of(fault, HX_EXPR_FAULT_INPUT, name, "no joint reactions were given to read"
                         " it from (they are known at output times only)", 0, 0.0);
-    const double *on_i = c->reactions + 6 * in->index[0];
+    const double *on_i = c->outputs->reactions + 6 * in->index[0];
     double F[3], T[3];
     v3_copy(F, on_i), v3_copy(T, on_i + 3);
     if (in->ids[1] == 1) {
@@ -79,6 +109,33 @@ static int reaction(const hx_expr_context *c, const hx_expr_input *in, double *v
     return 0;
 }
 
+/* ACCX .. WDTM (docs/interface.md §8.5): each marker's acceleration from its
+ * body's (the world's, and a marker left out, at rest). */
+static int acceleration(const hx_expr_context *c, const hx_expr_input *in, double *value,
+                        hx_expr_fault *fault)
+{
+    const char *name = hx_expr_function_at(in->function)->name;
+    if (c->outputs == NULL || c->outputs->accelerations == NULL)
+        return fault_of(fault, HX_EXPR_FAULT_INPUT, name, "no accelerations were given to read"
+                        " it from (they are known at output times only)", 0, 0.0);
+    static const double rest[6] = {0, 0, 0, 0, 0, 0};
+    hx_frame scratch[4];
+    const hx_frame *f[4];
+    double acc[4][6];
+    const double *a[4];
+    for (int j = 0; j < 4; ++j) {
+        f[j] = hx_frames_marker(c->frames, in->index[j], &scratch[j]);
+        a[j] = rest;
+        if (in->index[j] < 0)
+            continue;
+        const int b = c->frames->model->markers[in->index[j]].body;
+        hx_point_acceleration(&c->frames->bodies[b], c->outputs->accelerations + 6 * b, f[j]->p, acc[j]);
+        a[j] = acc[j];
+    }
+    *value = hx_acceleration_value((hx_acceleration_measure)in->measure, f, a);
+    return 0;
+}
+
 int hx_expr_operand_input(const hx_expr_program *p, const hx_expr_context *c, int k,
                           double *value, hx_expr_fault *fault)
 {
@@ -100,6 +157,14 @@ int hx_expr_operand_input(const hx_expr_program *p, const hx_expr_context *c, in
         break;
     case HX_EXPR_INPUT_REACTION:
         if (reaction(c, in, value, fault) != 0)
+            return -1;
+        break;
+    case HX_EXPR_INPUT_ACCELERATION:
+        if (acceleration(c, in, value, fault) != 0)
+            return -1;
+        break;
+    case HX_EXPR_INPUT_LOAD:
+        if (load(c, in, value, fault) != 0)
             return -1;
         break;
     case HX_EXPR_INPUT_DIF:

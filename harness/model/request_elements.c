@@ -98,12 +98,11 @@ void hx_build_builtin_request(hx_draft *d, const hx_element_read *e)
     const char *type = hx_attr_text(e, "type");
     if (type == NULL) {
         hx_draft_fail(d, e->line, "%s: attribute type is missing (MARKER_DISPLACEMENT,"
-                      " MARKER_VELOCITY, EXPRESSION, or USERSUB with a user routine)", label);
+                      " MARKER_VELOCITY, MARKER_ACCELERATION, EXPRESSION, or USERSUB with a user"
+                      " routine)", label);
         return;
     }
     static const char *const refused[][2] = {
-        {"MARKER_ACCELERATION", "accelerations of markers are not answered by the harness (its"
-         " measures are displacements and velocities, docs/interface.md §8.5)"},
         {"MARKER_FORCE", "the forces at a marker are not answered by the harness (it keeps no"
          " per-marker sum of the applied forces; a joint's reaction is JOINT() or JPRIM() in"
          " an EXPRESSION request)"},
@@ -117,9 +116,12 @@ void hx_build_builtin_request(hx_draft *d, const hx_element_read *e)
         }
     const int expressions = strcasecmp(type, "EXPRESSION") == 0;
     const int displacement = strcasecmp(type, "MARKER_DISPLACEMENT") == 0;
-    if (!expressions && !displacement && strcasecmp(type, "MARKER_VELOCITY") != 0) {
+    const int acceleration = strcasecmp(type, "MARKER_ACCELERATION") == 0;
+    if (!expressions && !displacement && !acceleration &&
+        strcasecmp(type, "MARKER_VELOCITY") != 0) {
         hx_draft_fail(d, e->line, "%s: type \"%s\": expected MARKER_DISPLACEMENT, MARKER_VELOCITY,"
-                      " EXPRESSION, or USERSUB with a user routine", label, type);
+                      " MARKER_ACCELERATION, EXPRESSION, or USERSUB with a user routine", label,
+                      type);
         return;
     }
     static const char *const markers[3] = {"i_marker_id", "j_marker_id", "ref_marker_id"};
@@ -143,6 +145,7 @@ void hx_build_builtin_request(hx_draft *d, const hx_element_read *e)
     }
     hx_request *q = hx_draft_request(d, e->id, expressions ? HX_REQUEST_EXPRESSIONS
                                      : displacement ? HX_REQUEST_DISPLACEMENT
+                                     : acceleration ? HX_REQUEST_ACCELERATION
                                                     : HX_REQUEST_VELOCITY, ids, e->line, label);
     if (q == NULL || !expressions)
         return;

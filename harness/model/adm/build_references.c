@@ -147,8 +147,8 @@ int hx_adm_build_diff(hx_adm_reader *r, hx_adm_entry *e)
     return hx_adm_element_build(r, e, &el, NULL);
 }
 
-/* A REQUEST the harness answers itself (docs/interface.md §9.6): DISPLACEMENT
- * or VELOCITY of I relative to J in RM's axes, or F1..F8, through the one
+/* A REQUEST the harness answers itself (docs/interface.md §9.6): DISPLACEMENT,
+ * VELOCITY or ACCELERATION of I relative to J in RM's axes, or F1..F8, through the one
  * builder of requests (model/request_elements.h). */
 static int build_builtin_request(hx_adm_reader *r, hx_adm_entry *e)
 {
@@ -160,25 +160,22 @@ static int build_builtin_request(hx_adm_reader *r, hx_adm_entry *e)
         if (hx_adm_has(e, types[k])) {
             if (type >= 0)
                 return hx_adm_fail(r, e, e->line, "%s and %s: give one of DISPLACEMENT, VELOCITY,"
-                                   " F1..F8 or FUNCTION=USER(...)", types[type], types[k]);
+                                   " ACCELERATION, F1..F8 or FUNCTION=USER(...)", types[type],
+                                   types[k]);
             type = k;
         }
     for (int k = 0; k < 8; ++k)
         nf += hx_adm_has(e, fs[k]);
-    if (type == 2)
-        return hx_adm_fail(r, e, e->line, "ACCELERATION: accelerations of markers are not answered"
-                           " by the harness (its measures are displacements and velocities,"
-                           " docs/interface.md §8.5): give DISPLACEMENT, VELOCITY or F1..F8");
     if (type == 3)
         return hx_adm_fail(r, e, e->line, "FORCE: the forces at a marker are not answered by the"
                            " harness (it keeps no per-marker sum of the applied forces; a"
                            " joint's reaction is JOINT() or JPRIM() in F1..F8): give"
-                           " DISPLACEMENT, VELOCITY or F1..F8");
+                           " DISPLACEMENT, VELOCITY, ACCELERATION or F1..F8");
     if (type >= 0 && nf > 0)
         return hx_adm_fail(r, e, e->line, "%s with F1..F8: give one or the other", types[type]);
     if (type < 0 && nf == 0)
-        return hx_adm_fail(r, e, e->line, "nothing to output: give DISPLACEMENT, VELOCITY, F1..F8"
-                           " or FUNCTION=USER(...)");
+        return hx_adm_fail(r, e, e->line, "nothing to output: give DISPLACEMENT, VELOCITY,"
+                           " ACCELERATION, F1..F8 or FUNCTION=USER(...)");
     int ids[3] = {0, 0, 0};
     for (int k = 0; k < 3; ++k) {
         const hx_adm_value *v = hx_adm_get(e, markers[k]);
@@ -198,6 +195,7 @@ static int build_builtin_request(hx_adm_reader *r, hx_adm_entry *e)
     hx_adm_label(e, label, sizeof label);
     hx_request *q = hx_draft_request(r->d, e->id, type == 0   ? HX_REQUEST_DISPLACEMENT
                                                   : type == 1 ? HX_REQUEST_VELOCITY
+                                                  : type == 2 ? HX_REQUEST_ACCELERATION
                                                               : HX_REQUEST_EXPRESSIONS,
                                      ids, e->line, label);
     if (q == NULL)

@@ -107,6 +107,10 @@ static int input(emitter *e, const hx_expr_node *n)
     case HX_FK_DIF1: in.kind = HX_EXPR_INPUT_DIF1; break;
     case HX_FK_ARYVAL: in.kind = HX_EXPR_INPUT_ARYVAL; break;
     case HX_FK_REACTION: in.kind = HX_EXPR_INPUT_REACTION; break;
+    case HX_FK_LOAD: in.kind = HX_EXPR_INPUT_LOAD; break;
+    case HX_FK_ACCELERATION: /* in the order of frames/acceleration_measures.h */
+        in.kind = HX_EXPR_INPUT_ACCELERATION, in.measure = n->function - HX_FN_ACCX;
+        break;
     default: in.kind = HX_EXPR_INPUT_TIME; break;
     }
     if (n->kind != HX_NODE_TIME)

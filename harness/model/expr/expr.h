@@ -23,8 +23,9 @@ typedef struct hx_expr_source {
 
 /* What a program reads (docs/interface.md §8.6): TIME, a measure of markers,
  * a Reference_Variable's value, a Control_Diff's state or rate, a
- * component of a Reference_Array, a joint's reaction (JOINT, JPRIM: output
- * expressions only, hx_expr_link_output). Each distinct one is listed once. */
+ * component of a Reference_Array, a joint's reaction (JOINT, JPRIM) or a
+ * marker's acceleration (ACCX .. WDTM; both in output expressions only,
+ * hx_expr_link_output). Each distinct one is listed once. */
 typedef enum hx_expr_input_kind {
     HX_EXPR_INPUT_TIME,
     HX_EXPR_INPUT_MEASURE,
@@ -32,7 +33,9 @@ typedef enum hx_expr_input_kind {
     HX_EXPR_INPUT_DIF,
     HX_EXPR_INPUT_DIF1,
     HX_EXPR_INPUT_ARYVAL,
-    HX_EXPR_INPUT_REACTION
+    HX_EXPR_INPUT_REACTION,
+    HX_EXPR_INPUT_ACCELERATION,
+    HX_EXPR_INPUT_LOAD
 } hx_expr_input_kind;
 
 typedef struct hx_expr_input {
@@ -43,11 +46,13 @@ typedef struct hx_expr_input {
                        * element's id (and ARYVAL's component) of the others */
     int nids;         /* how many were written */
     /* after hx_expr_link: */
-    int index[4];     /* a measure: the markers' indices (-1: the world's origin and axes);
+    int index[4];     /* a measure, an acceleration: the markers' indices (-1: the world's
+                       * origin and axes);
                        * VARVAL: the variable's index; DIF, DIF1: the Control_Diff's slot;
                        * ARYVAL: the array's index; REACTION: the joint's index (model
                        * order, primitives among them), its I and J markers' and rm's
-                       * (-1: the world's axes) */
+                       * (-1: the world's axes); LOAD: the load's index (model->loads),
+                       * index[3] rm's */
     int variable;     /* the variable it reads (VARVAL, ARYVAL of a U array), else -1 */
     int line, column; /* its first place in the text */
 } hx_expr_input;
@@ -92,8 +97,8 @@ hx_expr_program *hx_expr_parse(const char *text, size_t length, const hx_expr_so
 int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg);
 /* The same for an expression evaluated at output times only, after the
  * accelerations (a request's): it may read the joints' reactions (JOINT,
- * JPRIM), which hx_expr_link refuses (a force or variable reading one would
- * close an algebraic loop). */
+ * JPRIM) and the markers' accelerations (ACCX .. WDTM), which hx_expr_link
+ * refuses (a force or variable reading one would close an algebraic loop). */
 int hx_expr_link_output(hx_expr_program *p, const hx_model *m, hx_message *msg);
 
 void hx_expr_free(hx_expr_program *p);

@@ -4,8 +4,6 @@
 #include <string.h>
 
 #define ALL_IDS 0xFu
-#define ACCELERATION "an acceleration: a force that depends on one closes an algebraic loop," \
-                     " which the harness does not solve"
 #define FORCE "another element's force: the order of evaluation would decide it"
 #define ELEMENT_FORCE(NAME) \
     {NAME, HX_FK_UNANSWERED, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", FORCE}
@@ -80,14 +78,14 @@ static const hx_expr_function table[HX_FN_COUNT] = {
     [HX_FN_DIF] = {"DIF", HX_FK_DIF, 1, 1, ALL_IDS, "(id)", NULL},
     [HX_FN_DIF1] = {"DIF1", HX_FK_DIF1, 1, 1, ALL_IDS, "(id)", NULL},
     [HX_FN_ARYVAL] = {"ARYVAL", HX_FK_ARYVAL, 2, 2, ALL_IDS, "(id, comp)", NULL},
-    [HX_FN_ACCX] = {"ACCX", HX_FK_UNANSWERED, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", ACCELERATION},
-    [HX_FN_ACCY] = {"ACCY", HX_FK_UNANSWERED, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", ACCELERATION},
-    [HX_FN_ACCZ] = {"ACCZ", HX_FK_UNANSWERED, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", ACCELERATION},
-    [HX_FN_ACCM] = {"ACCM", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, L]])", ACCELERATION},
-    [HX_FN_WDTX] = {"WDTX", HX_FK_UNANSWERED, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", ACCELERATION},
-    [HX_FN_WDTY] = {"WDTY", HX_FK_UNANSWERED, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", ACCELERATION},
-    [HX_FN_WDTZ] = {"WDTZ", HX_FK_UNANSWERED, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", ACCELERATION},
-    [HX_FN_WDTM] = {"WDTM", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, L]])", ACCELERATION},
+    [HX_FN_ACCX] = {"ACCX", HX_FK_ACCELERATION, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", NULL},
+    [HX_FN_ACCY] = {"ACCY", HX_FK_ACCELERATION, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", NULL},
+    [HX_FN_ACCZ] = {"ACCZ", HX_FK_ACCELERATION, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", NULL},
+    [HX_FN_ACCM] = {"ACCM", HX_FK_ACCELERATION, 1, 3, ALL_IDS, "(I[, J[, L]])", NULL},
+    [HX_FN_WDTX] = {"WDTX", HX_FK_ACCELERATION, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", NULL},
+    [HX_FN_WDTY] = {"WDTY", HX_FK_ACCELERATION, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", NULL},
+    [HX_FN_WDTZ] = {"WDTZ", HX_FK_ACCELERATION, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", NULL},
+    [HX_FN_WDTM] = {"WDTM", HX_FK_ACCELERATION, 1, 3, ALL_IDS, "(I[, J[, L]])", NULL},
     [HX_FN_FX] = {"FX", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, K]])", FORCE},
     [HX_FN_FY] = {"FY", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, K]])", FORCE},
     [HX_FN_FZ] = {"FZ", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, K]])", FORCE},
@@ -97,7 +95,7 @@ static const hx_expr_function table[HX_FN_COUNT] = {
     [HX_FN_TZ] = {"TZ", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, K]])", FORCE},
     [HX_FN_TM] = {"TM", HX_FK_UNANSWERED, 1, 2, ALL_IDS, "(I[, J])", FORCE},
     [HX_FN_JOINT] = {"JOINT", HX_FK_REACTION, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", NULL},
-    [HX_FN_SFORCE] = ELEMENT_FORCE("SFORCE"),
+    [HX_FN_SFORCE] = {"SFORCE", HX_FK_LOAD, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", NULL},
     [HX_FN_VFORCE] = ELEMENT_FORCE("VFORCE"),
     [HX_FN_VTORQ] = ELEMENT_FORCE("VTORQ"),
     [HX_FN_GFORCE] = ELEMENT_FORCE("GFORCE"),

@@ -2,8 +2,8 @@
  * A program's ids resolved against a model (expr.h): markers, variables,
  * Control_Diffs, arrays, splines and curves by id to their indices, each id
  * the model does not define named with its place in the text; a function
- * the harness does not answer yet is refused here, and so is a joint's
- * reaction anywhere but in an output expression.
+ * the harness does not answer yet is refused here, and so are a joint's
+ * reaction and a marker's acceleration anywhere but in an output expression.
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -53,6 +53,30 @@ static int link_reaction(hx_expr_program *p, hx_expr_input *in, const hx_model *
     return 0;
 }
 
+/* SFORCE(id, jflag, comp, rm): a Force_Scalar_TwoBody by expression (a
+ * dataset's SFORCE), and rm. */
+static int link_load(hx_expr_program *p, hx_expr_input *in, const hx_model *m, const char *text,
+                     int output, hx_message *msg)
+{
+    if (!output)
+        return fail_at(p, msg, in->line, in->column, "%s: another element's force: the order of"
+                       " evaluation would decide it (REQUEST and Post_Request expressions may"
+                       " read it)", text);
+    in->index[0] = -1;
+    for (int k = 0; k < m->nloads && in->index[0] < 0; ++k)
+        if (m->loads[k].id == in->ids[0] && m->loads[k].kind != HX_LOAD_VECTOR)
+            in->index[0] = k;
+    if (in->index[0] < 0)
+        return fail_at(p, msg, in->line, in->column, "%s: no SFORCE (Force_Scalar_TwoBody) %d by"
+                       " an expression in the model (a user routine's SFOSUB force is not read"
+                       " yet)", text, in->ids[0]);
+    in->index[3] = in->ids[3] == 0 ? -1 : hx_model_marker(m, in->ids[3]);
+    if (in->ids[3] != 0 && in->index[3] < 0)
+        return fail_at(p, msg, in->line, in->column, "%s: rm (argument 4): no Reference_Marker"
+                       " %d in the model", text, in->ids[3]);
+    return 0;
+}
+
 static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, int output,
                       hx_message *msg)
 {
@@ -63,6 +87,15 @@ static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, 
     switch (in->kind) {
     case HX_EXPR_INPUT_TIME: return 0;
     case HX_EXPR_INPUT_REACTION: return link_reaction(p, in, m, text, output, msg);
+    case HX_EXPR_INPUT_LOAD: return link_load(p, in, m, text, output, msg);
+    case HX_EXPR_INPUT_ACCELERATION:
+        if (!output)
+            return fail_at(p, msg, in->line, in->column, "%s: an acceleration is known only once"
+                           " the forces are: a force or variable that reads it closes an"
+                           " algebraic loop, which the harness does not solve (REQUEST and"
+                           " Post_Request expressions may read it)", text);
+        /* its markers are linked as a measure's */
+        /* fall through */
     case HX_EXPR_INPUT_MEASURE:
         for (int k = 0; k < 4; ++k) {
             in->index[k] = in->ids[k] == 0 ? -1 : hx_model_marker(m, in->ids[k]);

@@ -281,6 +281,7 @@ static int known_call(parser *p, int code, const hx_expr_token *name)
         memcpy(p->tree->nodes[k].ids, ids + 1, 3 * sizeof(int));
         p->tree->nodes[k].nids = 3;
         return k;
+    case HX_FK_LOAD:
     case HX_FK_REACTION: /* (id, jflag, comp, rm) */
         if (ids[1] > 1)
             return fail_at(p, places[2], places[3], "%s: jflag (argument 2) is %d: 0 (on the I"
@@ -293,6 +294,7 @@ static int known_call(parser *p, int code, const hx_expr_token *name)
         memcpy(p->tree->nodes[k].ids, ids, 4 * sizeof(int));
         p->tree->nodes[k].nids = count;
         return k;
+    case HX_FK_ACCELERATION:
     case HX_FK_MEASURE:
         if (ids[0] == 0)
             return fail_at(p, places[0], places[1], "%s: its I marker is 0: I names a marker"

@@ -1,6 +1,7 @@
 /* The run's CSV: a header and one row per output time (simulation.h). */
 #include <stdlib.h>
 
+#include "sim/dynamics/accelerations.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/reactions.h"
@@ -55,9 +56,10 @@ void hx_csv_header(FILE *f, const hx_dynamics *d)
     fprintf(f, "\n");
 }
 
-/* The row's values after the evaluation at (t, y), the joints' reactions given. */
+/* The row's values after the evaluation at (t, y), the joints' reactions and
+ * the bodies' accelerations given. */
 static int row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
-               const hx_energy *energy, const hx_energy *energy0, const double *reactions)
+               const hx_energy *energy, const hx_energy *energy0, const hx_expr_outputs *s)
 {
     const hx_model *m = d->m;
     double phi, phidot;
@@ -96,12 +98,12 @@ static int row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
     if (hx_routines_csv_row(f, d, dd, y) != 0)
         return -1;
     hx_message msg;
-    if (hx_requests_csv_row(f, &dd->frames, reactions, &msg) != 0)
+    if (hx_requests_csv_row(f, &dd->frames, s, &msg) != 0)
         return hx_dynamics_fail(dd, "%s", msg.text);
     fprintf(f, ",%.15g,%.15g,%.3g,%.3g", energy->total, hx_dissipated(energy, energy0), phi,
             phidot);
     for (int k = 0; k < 6 * m->njoints; ++k)
-        fprintf(f, ",%.15g", reactions[k]);
+        fprintf(f, ",%.15g", s->reactions[k]);
     fprintf(f, "\n");
     return 0;
 }
@@ -110,14 +112,24 @@ int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
                const hx_energy *energy, const hx_energy *energy0)
 {
     const hx_model *m = d->m;
-    double *ydot = malloc(sizeof(double) * ((size_t)d->n + 6 * (size_t)m->njoints));
+    double *ydot = malloc(sizeof(double) * ((size_t)d->n + 6 * (size_t)m->njoints +
+                                            6 * (size_t)m->nbodies + 12 * (size_t)m->nloads));
     if (ydot == NULL || hx_dynamics_rhs(d, dd, t, y, ydot) != 0) {
         free(ydot);
         return -1;
     }
-    double *reactions = ydot + d->n; /* before anything else evaluates on dd */
+    /* at this state, before anything else evaluates on dd */
+    double *reactions = ydot + d->n, *accelerations = reactions + 6 * m->njoints;
     hx_reactions_all(d, dd, ydot, reactions);
-    const int status = row(f, d, dd, t, y, energy, energy0, reactions);
+    hx_accelerations_bodies(d, dd, ydot, accelerations);
+    double *loads = accelerations + 6 * m->nbodies;
+    hx_message msg;
+    if (m->nrequests > 0 && hx_requests_loads(d, dd, loads, &msg) != 0) {
+        free(ydot);
+        return hx_dynamics_fail(dd, "%s", msg.text);
+    }
+    const hx_expr_outputs s = {reactions, accelerations, loads};
+    const int status = row(f, d, dd, t, y, energy, energy0, &s);
     free(ydot);
     return status;
 }

@@ -3,14 +3,17 @@
  * from the harness's own measures (frames/measure_functions.h), the
  * expressions by the evaluator (expr/evaluate.h), the variables they read
  * by the host's own answers (host/state_inputs.h), the joints' reactions
- * (JOINT, JPRIM) from the caller's.
+ * (JOINT, JPRIM) and the bodies' accelerations (ACCX .. WDTM) from the
+ * caller's.
  */
 #include <stdlib.h>
 
 #include "expr/evaluate.h"
+#include "frames/acceleration_measures.h"
 #include "frames/measure_functions.h"
 #include "host/state_inputs.h"
 #include "host/variable_values.h"
+#include "sim/dynamics/loads.h"
 #include "sim/simulation/requests.h"
 
 /* One measure of the frames named, in the order of its arguments. */
@@ -52,15 +55,51 @@ static void marker_values(const hx_frames *fr, const hx_request *q, double out[8
     }
 }
 
+/* ACCELERATION in the same order: ACCM, ACCX .. ACCZ (I, J, RM), WDTM,
+ * WDTX .. WDTZ, the time derivatives in the ground's frame; each marker's
+ * from its body's (the world's at rest). */
+static int acceleration_values(const hx_frames *fr, const hx_request *q, const double *bodies,
+                               double out[8], hx_message *msg)
+{
+    if (bodies == NULL)
+        return hx_fail(msg, "%s:%d: %s: ACCELERATION: no accelerations were given to read it"
+                       " from (they are known at output times only)", fr->model->path,
+                       q->line, q->label);
+    static const double rest[6] = {0, 0, 0, 0, 0, 0};
+    hx_frame scratch[3];
+    const hx_frame *f[4];
+    double acc[2][6];
+    const double *a[4] = {rest, rest, rest, rest};
+    for (int j = 0; j < 3; ++j)
+        f[j] = hx_frames_marker(fr, q->markers[j], &scratch[j]);
+    f[3] = &hx_world_frame;
+    for (int j = 0; j < 2; ++j)
+        if (q->markers[j] >= 0) {
+            const int b = fr->model->markers[q->markers[j]].body;
+            hx_point_acceleration(&fr->bodies[b], bodies + 6 * b, f[j]->p, acc[j]);
+            a[j] = acc[j];
+        }
+    const hx_frame *const in_world[4] = {f[0], f[1], &hx_world_frame, &hx_world_frame};
+    out[0] = hx_acceleration_value(HX_ACC_M, in_world, a);
+    out[4] = hx_acceleration_value(HX_WDT_M, in_world, a);
+    for (int j = 0; j < 3; ++j) {
+        out[1 + j] = hx_acceleration_value((hx_acceleration_measure)(HX_ACC_X + j), f, a);
+        out[5 + j] = hx_acceleration_value((hx_acceleration_measure)(HX_WDT_X + j), f, a);
+    }
+    return 0;
+}
+
 int hx_requests_values(const hx_frames *fr, int k, const double *variables,
-                       const double *reactions, double out[8], hx_message *msg)
+                       const hx_expr_outputs *s, double out[8], hx_message *msg)
 {
     const hx_request *q = &fr->model->requests[k];
+    if (q->kind == HX_REQUEST_ACCELERATION)
+        return acceleration_values(fr, q, s != NULL ? s->accelerations : NULL, out, msg);
     if (q->kind != HX_REQUEST_EXPRESSIONS) {
         marker_values(fr, q, out);
         return 0;
     }
-    const hx_expr_context c = {fr, variables, reactions};
+    const hx_expr_context c = {fr, variables, s};
     for (int j = 0; j < 8; ++j) {
         out[j] = 0.0;
         hx_expr_fault fault;
@@ -73,6 +112,27 @@ int hx_requests_values(const hx_frames *fr, int k, const double *variables,
     return 0;
 }
 
+int hx_requests_loads(const hx_dynamics *d, const hx_dynamics_data *dd, double *out,
+                      hx_message *msg)
+{
+    const hx_model *m = d->m;
+    for (int k = 0; k < m->nloads; ++k) {
+        double *at = out + 12 * k;
+        for (int j = 0; j < 12; ++j)
+            at[j] = 0.0;
+        if (d->load_off[k])
+            continue; /* switched off: it puts nothing on the bodies */
+        hx_load_share share;
+        if (hx_load_share_at(m, &dd->frames, k, &share, msg) != 0)
+            return -1;
+        for (int s = 0; s < share.count; ++s) {
+            for (int j = 0; j < 3; ++j)
+                at[6 * s + j] = share.F[s][j], at[6 * s + 3 + j] = share.T[s][j];
+        }
+    }
+    return 0;
+}
+
 void hx_requests_csv_header(FILE *f, const hx_model *m)
 {
     for (int k = 0; k < m->nrequests; ++k)
@@ -80,7 +140,7 @@ void hx_requests_csv_header(FILE *f, const hx_model *m)
             fprintf(f, ",request%d.%d", m->requests[k].id, j);
 }
 
-int hx_requests_csv_row(FILE *f, const hx_frames *fr, const double *reactions,
+int hx_requests_csv_row(FILE *f, const hx_frames *fr, const hx_expr_outputs *s,
                         hx_message *msg)
 {
     const hx_model *m = fr->model;
@@ -98,7 +158,7 @@ int hx_requests_csv_row(FILE *f, const hx_frames *fr, const double *reactions,
     int status = 0;
     for (int k = 0; k < m->nrequests && status == 0; ++k) {
         double values[8];
-        status = hx_requests_values(fr, k, variables, reactions, values, msg);
+        status = hx_requests_values(fr, k, variables, s, values, msg);
         for (int j = 0; j < 8 && status == 0; ++j)
             fprintf(f, ",%.15g", values[j]);
     }

@@ -9,24 +9,33 @@
 #include <stdio.h>
 
 #include "base/message.h"
+#include "expr/evaluate.h"
 #include "frames/frames.h"
+#include "sim/dynamics/dynamics.h"
 
 /* The eight values of request k of fr's model at fr (current for the
  * request's markers: tracked ones updated, the others computed here).
- * variables holds the model's variables' values (NULL when it has none),
- * reactions the joints' (sim/dynamics/reactions.h; NULL: JOINT and JPRIM
- * fail).
+ * variables holds the model's variables' values (NULL when it has none), s
+ * the reactions and accelerations (expr/evaluate.h; NULL: neither known).
  * 0, or -1 with "file:line:column: REQUEST/5 F2: what at t = ..." in msg
- * (a fault of an expression). */
+ * (a fault of an expression, or an ACCELERATION request without s's
+ * accelerations). */
 int hx_requests_values(const hx_frames *fr, int k, const double *variables,
-                       const double *reactions, double out[8], hx_message *msg);
+                       const hx_expr_outputs *s, double out[8], hx_message *msg);
+
+/* The loads' forces at dd's frames (at an output time), twelve a load of
+ * d's model (expr/evaluate.h's hx_expr_outputs.loads): on I at I's origin,
+ * then on J where the load puts its reaction (zeros for an action-only or a
+ * switched-off load). 0, or -1 with an expression's fault in msg. */
+int hx_requests_loads(const hx_dynamics *d, const hx_dynamics_data *dd, double *out,
+                      hx_message *msg);
 
 /* ",request5.1,...,request5.8" for each request, in the order read. */
 void hx_requests_csv_header(FILE *f, const hx_model *m);
 
 /* Their values at fr, each with 15 significant digits; 0, or -1 with msg
  * (nothing written for the request at fault and after it). */
-int hx_requests_csv_row(FILE *f, const hx_frames *fr, const double *reactions,
+int hx_requests_csv_row(FILE *f, const hx_frames *fr, const hx_expr_outputs *s,
                         hx_message *msg);
 
 #endif
