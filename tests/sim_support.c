@@ -375,3 +375,24 @@ void sim_expect_parse_error(const char *name, const char *text, const char *cons
     }
     assert_contains_impl(msg.text, needles, __FILE__, __LINE__);
 }
+
+void sim_open_text(sim_opened *o, const char *name, const char *text)
+{
+    memset(o, 0, sizeof *o);
+    hx_message msg;
+    if (hx_session_open(&o->s, test_write_file(name, text), stderr, &msg) != 0 ||
+        hx_dynamics_init(&o->d, &o->s, &msg) != 0 || hx_dynamics_data_init(&o->dd, &o->d, &msg) != 0)
+        fail_msg("%s", msg.text);
+}
+
+void sim_close_opened(sim_opened *o)
+{
+    hx_dynamics_data_free(&o->dd);
+    hx_dynamics_free(&o->d);
+    hx_session_close(&o->s);
+}
+
+double sim_uniform(void)
+{
+    return 2.0 * rand() / (double)RAND_MAX - 1.0;
+}

@@ -46,6 +46,19 @@ int sim_joint_u(const sim *s, int joint_id);
 double jacobian_against_differences(const hx_dynamics *d, double t, const double *y,
                                     const char *what, long *outside);
 
+/* A model read from text with its dynamics and one evaluator's data. */
+typedef struct sim_opened {
+    hx_session s;
+    hx_dynamics d;
+    hx_dynamics_data dd;
+} sim_opened;
+/* Writes text as name in the temporary folder and opens it; fails the test on
+ * an error. */
+void sim_open_text(sim_opened *o, const char *name, const char *text);
+void sim_close_opened(sim_opened *o);
+/* Uniform in [-1, 1] (rand()). */
+double sim_uniform(void);
+
 /* Parses text as a model named name; fails the test with the reader's message
  * if it does not read. */
 hx_model *sim_parse(const char *name, const char *text);

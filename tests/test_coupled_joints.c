@@ -23,33 +23,6 @@
 #include "sim_support.h"
 #include "test_support.h"
 
-static double uniform(void)
-{
-    return 2.0 * rand() / (double)RAND_MAX - 1.0;
-}
-
-typedef struct opened {
-    hx_session s;
-    hx_dynamics d;
-    hx_dynamics_data dd;
-} opened;
-
-static void open_text(opened *o, const char *name, const char *text)
-{
-    memset(o, 0, sizeof *o);
-    hx_message msg;
-    if (hx_session_open(&o->s, test_write_file(name, text), stderr, &msg) != 0 ||
-        hx_dynamics_init(&o->d, &o->s, &msg) != 0 || hx_dynamics_data_init(&o->dd, &o->d, &msg) != 0)
-        fail_msg("%s", msg.text);
-}
-
-static void close_opened(opened *o)
-{
-    hx_dynamics_data_free(&o->dd);
-    hx_dynamics_free(&o->d);
-    hx_session_close(&o->s);
-}
-
 /* A cylindrical joint (1) between bodies 2 and 3 with markers at odd places
  * and in odd axes; `where`: 0 between the bodies, 1 I on ground, 2 J on
  * ground; `more`: elements added. */
@@ -85,13 +58,13 @@ static void random_state(const hx_dynamics *d, double *y)
             continue;
         double *q = y + dof->q, *u = y + d->nq + dof->u, n = 0.0;
         for (int c = 0; c < 3; ++c)
-            q[c] = 0.3 * uniform();
+            q[c] = 0.3 * sim_uniform();
         for (int c = 3; c < 7; ++c)
-            q[c] = uniform(), n += q[c] * q[c];
+            q[c] = sim_uniform(), n += q[c] * q[c];
         for (int c = 3; c < 7; ++c)
             q[c] /= sqrt(n);
         for (int c = 0; c < 6; ++c)
-            u[c] = 1.5 * uniform();
+            u[c] = 1.5 * sim_uniform();
     }
 }
 
@@ -128,8 +101,8 @@ static void coordinate_rows_against_differences(void **state)
     srand(7);
     const char freedoms[2] = {'R', 'T'};
     for (int where = 0; where < 3; ++where) {
-        opened o;
-        open_text(&o, "cylinder.xml", cylinder_model(where, ""));
+        sim_opened o;
+        sim_open_text(&o, "cylinder.xml", cylinder_model(where, ""));
         const hx_dynamics *d = &o.d;
         assert_true(d->n <= 64);
         for (int f = 0; f < 2; ++f)
@@ -155,7 +128,7 @@ static void coordinate_rows_against_differences(void **state)
                 assert_close(conv, (plus - 2 * value + minus) / (h2 * h2), 0, 2e-5);
                 assert_true(fabs(conv) > 1e-3); /* the term is there to be checked */
             }
-        close_opened(&o);
+        sim_close_opened(&o);
     }
 }
 
@@ -166,8 +139,8 @@ static void coordinate_rows_against_differences(void **state)
 static void cylinder_coordinate_by_freedom(void **state)
 {
     (void)state;
-    opened o;
-    open_text(&o, "turned.xml",
+    sim_opened o;
+    sim_open_text(&o, "turned.xml",
               "<MotionSolve><Model>\n<Body_Ground id=\"1\"/>\n"
               "<Reference_Marker id=\"11\" body_id=\"1\"/>\n"
               "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"1\" inertia_xx=\"1\" inertia_yy=\"1\""
@@ -179,7 +152,7 @@ static void cylinder_coordinate_by_freedom(void **state)
     assert_close(hx_joint_coordinate(&o.s.frames, 0, 'R'), 0.3, 0, 1e-14);
     assert_close(hx_joint_coordinate(&o.s.frames, 0, 'T'), 0.5, 0, 1e-14);
     assert_close(hx_joint_coordinate(&o.s.frames, 0, 0), 0.5, 0, 1e-14);
-    close_opened(&o);
+    sim_close_opened(&o);
 }
 
 /* A coupler of the cylinder's rotation and a revolute (3) from body 3 to
@@ -198,8 +171,8 @@ static void coupler_row_against_differences(void **state)
         "<Constraint_Coupler id=\"1\" joint1_id=\"1\" freedom_1=\"R\" joint2_id=\"3\""
         " coefficients=\"1, 2\"/>\n";
     for (int where = 0; where < 3; ++where) {
-        opened o;
-        open_text(&o, "cylinder_coupler.xml", cylinder_model(where, more));
+        sim_opened o;
+        sim_open_text(&o, "cylinder_coupler.xml", cylinder_model(where, more));
         const hx_dynamics *d = &o.d;
         assert_int_equal(d->row_values, 36);
         assert_int_equal(d->rows[0].nblocks, where == 1 ? 1 : 2); /* body 3, and body 2 */
@@ -216,13 +189,13 @@ static void coupler_row_against_differences(void **state)
                     continue;
                 double n = 0.0;
                 for (int c = 0; c < 7; ++c)
-                    y[dof->q + c] += 0.2 * uniform();
+                    y[dof->q + c] += 0.2 * sim_uniform();
                 for (int c = 3; c < 7; ++c)
                     n += y[dof->q + c] * y[dof->q + c];
                 for (int c = 3; c < 7; ++c)
                     y[dof->q + c] /= sqrt(n);
                 for (int c = 0; c < 6; ++c)
-                    y[d->nq + dof->u + c] = 1.5 * uniform();
+                    y[d->nq + dof->u + c] = 1.5 * sim_uniform();
             }
             assert_int_equal(hx_constraints_rows(d, &o.dd, 0.0, y, phi, G, gamma), 0);
             const double h = 1e-6;
@@ -259,7 +232,7 @@ static void coupler_row_against_differences(void **state)
             assert_close(-gamma[0], (plus[0] - 2 * mid[0] + minus[0]) / (h2 * h2), 0, 2e-5);
         }
         free(G);
-        close_opened(&o);
+        sim_close_opened(&o);
     }
 }
 

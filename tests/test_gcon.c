@@ -19,33 +19,6 @@
 #include "sim_support.h"
 #include "test_support.h"
 
-static double uniform(void)
-{
-    return 2.0 * rand() / (double)RAND_MAX - 1.0;
-}
-
-typedef struct opened {
-    hx_session s;
-    hx_dynamics d;
-    hx_dynamics_data dd;
-} opened;
-
-static void open_text(opened *o, const char *name, const char *text)
-{
-    memset(o, 0, sizeof *o);
-    hx_message msg;
-    if (hx_session_open(&o->s, test_write_file(name, text), stderr, &msg) != 0 ||
-        hx_dynamics_init(&o->d, &o->s, &msg) != 0 || hx_dynamics_data_init(&o->dd, &o->d, &msg) != 0)
-        fail_msg("%s", msg.text);
-}
-
-static void close_opened(opened *o)
-{
-    hx_dynamics_data_free(&o->dd);
-    hx_dynamics_free(&o->d);
-    hx_session_close(&o->s);
-}
-
 /* Two free bodies, no joint, markers at odd places and in odd axes; `more`:
  * the general constraints. */
 static const char *two_bodies(const char *gravity, const char *more)
@@ -84,19 +57,19 @@ static void random_state(const hx_dynamics *d, double *y)
             continue;
         double *q = y + dof->q, *u = y + d->nq + dof->u, n = 0.0;
         for (int c = 0; c < 3; ++c)
-            q[c] = 0.5 * uniform() + (b == 2 ? 1.0 : 0.0);
+            q[c] = 0.5 * sim_uniform() + (b == 2 ? 1.0 : 0.0);
         for (int c = 3; c < 7; ++c)
-            q[c] = uniform(), n += q[c] * q[c];
+            q[c] = sim_uniform(), n += q[c] * q[c];
         for (int c = 3; c < 7; ++c)
             q[c] /= sqrt(n);
         for (int c = 0; c < 6; ++c)
-            u[c] = 1.5 * uniform();
+            u[c] = 1.5 * sim_uniform();
     }
 }
 
 /* phi of every row at time t, the positions moved by h along velocities u
  * (held: a free body's centre straight, its quaternion by the exact increment). */
-static void phi_along(opened *o, double t, const double *y, const double *u, double h,
+static void phi_along(sim_opened *o, double t, const double *y, const double *u, double h,
                       double *phi, double *G)
 {
     const hx_dynamics *d = &o->d;
@@ -123,8 +96,8 @@ static void rows_against_differences(void **state)
 {
     (void)state;
     srand(11);
-    opened o;
-    open_text(&o, "gcon_mixed.xml", two_bodies("0", MIXED_GCONS));
+    sim_opened o;
+    sim_open_text(&o, "gcon_mixed.xml", two_bodies("0", MIXED_GCONS));
     const hx_dynamics *d = &o.d;
     assert_int_equal(d->nrows, 3);
     assert_int_equal(d->gcon_first, 0);
@@ -133,7 +106,7 @@ static void rows_against_differences(void **state)
     for (int trial = 0; trial < 8; ++trial) {
         double y[64], phi[3], G[3 * 36], gamma[3], plus[3], minus[3], zero[3], scratch[3 * 36];
         random_state(d, y);
-        const double t = 2.0 * uniform();
+        const double t = 2.0 * sim_uniform();
         if (hx_constraints_rows(d, &o.dd, t, y, phi, G, gamma) != 0)
             fail_msg("%s", o.dd.message);
         /* G column by column: phi along one velocity, time held */
@@ -185,7 +158,7 @@ static void rows_against_differences(void **state)
     assert_true(worst_rate < 1e-7);
     assert_true(worst_G < 1e-7);
     assert_true(worst_gamma < 1e-5);
-    close_opened(&o);
+    sim_close_opened(&o);
 }
 
 /* The bundled pendulum released from rest at 0.5 rad: back where it started

@@ -28,11 +28,6 @@ static const char *const type_names[NTYPES] = {
     "PARALLEL_AXES", "PERPENDICULAR"};
 static const int type_rows[NTYPES] = {6, 5, 5, 4, 3, 4, 4, 3, 4, 1, 1, 3, 2, 1, 3, 2, 1};
 
-static double uniform(void)
-{
-    return 2.0 * rand() / (double)RAND_MAX - 1.0;
-}
-
 /* Two bodies (2, 3) with markers at odd places and in odd axes; the joint's
  * I and J markers chosen by `where`: 0 between the bodies, 1 I on ground, 2
  * J on ground (with body 3 hung from body 2 by a spherical joint, so that a
@@ -63,28 +58,6 @@ static const char *two_body_model(const char *type, int where)
     return text;
 }
 
-typedef struct opened {
-    hx_session s;
-    hx_dynamics d;
-    hx_dynamics_data dd;
-} opened;
-
-static void open_text(opened *o, const char *name, const char *text)
-{
-    memset(o, 0, sizeof *o);
-    hx_message msg;
-    if (hx_session_open(&o->s, test_write_file(name, text), stderr, &msg) != 0 ||
-        hx_dynamics_init(&o->d, &o->s, &msg) != 0 || hx_dynamics_data_init(&o->dd, &o->d, &msg) != 0)
-        fail_msg("%s", msg.text);
-}
-
-static void close_opened(opened *o)
-{
-    hx_dynamics_data_free(&o->dd);
-    hx_dynamics_free(&o->d);
-    hx_session_close(&o->s);
-}
-
 /* A random state of the free bodies: positions, unit quaternions, velocities. */
 static void random_state(const hx_dynamics *d, double *y)
 {
@@ -95,21 +68,21 @@ static void random_state(const hx_dynamics *d, double *y)
             continue;
         double *q = y + dof->q, *u = y + d->nq + dof->u;
         for (int c = 0; c < 3; ++c)
-            q[c] = uniform();
+            q[c] = sim_uniform();
         double n = 0.0;
         for (int c = 3; c < 7; ++c)
-            q[c] = uniform(), n += q[c] * q[c];
+            q[c] = sim_uniform(), n += q[c] * q[c];
         for (int c = 3; c < 7; ++c)
             q[c] /= sqrt(n);
         for (int c = 0; c < 6; ++c)
-            u[c] = 1.5 * uniform();
+            u[c] = 1.5 * sim_uniform();
     }
 }
 
 /* phi after moving the positions by h along the velocities u (q's rate is
  * N(q) u, quaternions by their exact increment: u is constant on it; a
  * negative h as -u over |h|, the increment taking positive steps only). */
-static void phi_along(opened *o, const double *y, const double *u, double h, double *phi)
+static void phi_along(sim_opened *o, const double *y, const double *u, double h, double *phi)
 {
     const hx_dynamics *d = &o->d;
     double *z = malloc(sizeof(double) * (size_t)d->n), *G = malloc(sizeof(double) * 12 * (size_t)d->nrows);
@@ -128,8 +101,8 @@ static void constraint_rows_against_differences(void **state)
     srand(21);
     for (int k = 0; k < NTYPES; ++k)
         for (int where = 0; where < 3; ++where) {
-            opened o;
-            open_text(&o, "two_bodies.xml", two_body_model(type_names[k], where));
+            sim_opened o;
+            sim_open_text(&o, "two_bodies.xml", two_body_model(type_names[k], where));
             const hx_dynamics *d = &o.d;
             assert_int_equal(d->nrows, type_rows[k] + (where == 2 ? 3 : 0));
             for (int r = 0; r < type_rows[k]; ++r) /* the ground has no columns */
@@ -163,7 +136,7 @@ static void constraint_rows_against_differences(void **state)
                 for (int r = 0; r < d->nrows; ++r)
                     assert_close(-gamma[r], (plus[r] - 2 * mid[r] + minus[r]) / (h2 * h2), 0, 2e-5);
             }
-            close_opened(&o);
+            sim_close_opened(&o);
         }
 }
 
@@ -445,8 +418,8 @@ static void joints_the_harness_refuses(void **state)
     }
     /* joints that cannot be met (two ball joints 1 apart on the body, 3 on
      * ground): the initial state's projection says so, naming the time */
-    opened o;
-    open_text(&o, "apart.xml",
+    sim_opened o;
+    sim_open_text(&o, "apart.xml",
               "<MotionSolve><Model>\n<Body_Ground id=\"1\"/>\n"
               "<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
               "<Reference_Marker id=\"11\" body_id=\"1\" pos_x=\"3\"/>\n"
@@ -469,7 +442,7 @@ static void joints_the_harness_refuses(void **state)
     assert_contains(msg.text, "a redundant constraint is not consistent at t = 0",
                     "JOINT/2 SPHERICAL: equation 1 (x_I - x_J along x)", "the model locks");
     free(y);
-    close_opened(&o);
+    sim_close_opened(&o);
 }
 
 int main(void)
