@@ -83,6 +83,20 @@ static const struct {
     {"COUPLER/3, JOINTS=1, 2, FUNCTION=2*TIME\nJOINT/1, REVOLUTE, I=20, J=10\n"
      "PART/3, MASS=1, CM=30, IP=1,1,1\nMARKER/30, PART=3\nJOINT/2, REVOLUTE, I=30, J=10",
      {"errors.adm:7:", "COUPLER/3:", "FUNCTION=2*TIME: expected USER(...)", ""}},
+    /* a ROUTINE beside a FUNCTION that is not USER(...): named at its line */
+    {"SFORCE/3, TRANSLATION, I=21, J=10, FUNCTION=1,\n, ROUTINE=lib::SFOSUB",
+     {"errors.adm:8:", "SFORCE/3:", "ROUTINE without FUNCTION=USER(...)", ""}},
+    {"VARIABLE/3, FUNCTION=TIME,\n, ROUTINE=lib::VARSUB",
+     {"errors.adm:8:", "VARIABLE/3:", "ROUTINE without FUNCTION=USER(...)", ""}},
+    {"DIFF/3, IC=0, FUNCTION=TIME,\n, ROUTINE=lib::DIFSUB",
+     {"errors.adm:8:", "DIFF/3:", "ROUTINE without FUNCTION=USER(...)", ""}},
+    {"GCON/3, I=20, FUNCTION=DX(20),\n, ROUTINE=lib::GCOSUB",
+     {"errors.adm:8:", "GCON/3:", "ROUTINE without FUNCTION=USER(...)", ""}},
+    {"JOINT/1, REVOLUTE, I=20, J=10\nMOTION/3, JOINT=1, FUNCTION=TIME,\n, ROUTINE=lib::MOTSUB",
+     {"errors.adm:9:", "MOTION/3:", "ROUTINE without FUNCTION=USER(...)", ""}},
+    {"REQUEST/3, DISPLACEMENT, I=20, J=10,\n, ROUTINE=lib::REQSUB",
+     {"errors.adm:8:", "REQUEST/3:", "ROUTINE without FUNCTION=USER(...)", ""}},
+    /* last: read (every_bad_statement) */
     {"VARIABLE/3, FUNCTION=USER(1), ROUTINE=lib::A\\", {"errors.adm:", "", "", ""}},
 };
 

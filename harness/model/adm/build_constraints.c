@@ -138,9 +138,8 @@ int hx_adm_build_motion(hx_adm_reader *r, hx_adm_entry *e)
     hx_adm_element el;
     hx_adm_element_init(&el, "Motion_Joint");
     const int user = hx_adm_is_user(hx_adm_text(e, "FUNCTION"));
-    if (!user && hx_adm_has(e, "ROUTINE"))
-        return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
-                           " FUNCTION=USER(...)");
+    if (!user && hx_adm_no_routine(r, e) != 0)
+        return -1;
     hx_adm_element_text(&el, "type", user ? "USERSUB" : "EXPRESSION");
     hx_adm_element_number(&el, "joint_id", hx_adm_ref(e, "JOINT"));
     if (hx_adm_has(e, "TRANSLATION") && hx_adm_has(e, "ROTATION"))
@@ -177,9 +176,8 @@ int hx_adm_build_gcon(hx_adm_reader *r, hx_adm_entry *e)
         if (hx_adm_element_user(r, e, &el, NULL) != 0)
             return -1;
     } else {
-        if (hx_adm_has(e, "ROUTINE"))
-            return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
-                               " FUNCTION=USER(...)");
+        if (hx_adm_no_routine(r, e) != 0)
+            return -1;
         hx_adm_element_expression(&el, "expr", e, "FUNCTION");
     }
     return hx_adm_element_build(r, e, &el, NULL);

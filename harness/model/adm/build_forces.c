@@ -86,9 +86,8 @@ int hx_adm_build_sforce(hx_adm_reader *r, hx_adm_entry *e)
         if (hx_adm_element_user(r, e, &el, NULL) != 0)
             return -1;
     } else {
-        if (hx_adm_has(e, "ROUTINE"))
-            return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
-                               " FUNCTION=USER(...)");
+        if (hx_adm_no_routine(r, e) != 0)
+            return -1;
         hx_adm_element_expression(&el, "val_expression", e, "FUNCTION");
     }
     return hx_adm_element_build(r, e, &el, NULL);

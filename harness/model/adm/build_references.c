@@ -39,9 +39,8 @@ int hx_adm_build_variable(hx_adm_reader *r, hx_adm_entry *e)
         if (hx_adm_element_user(r, e, &el, NULL) != 0)
             return -1;
     } else {
-        if (hx_adm_has(e, "ROUTINE"))
-            return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
-                               " FUNCTION=USER(...)");
+        if (hx_adm_no_routine(r, e) != 0)
+            return -1;
         hx_adm_element_text(&el, "type", "EXPRESSION");
         hx_adm_element_expression(&el, "expr", e, "FUNCTION");
     }
@@ -123,9 +122,8 @@ int hx_adm_build_diff(hx_adm_reader *r, hx_adm_entry *e)
     hx_adm_element el;
     hx_adm_element_init(&el, "Control_Diff");
     const int user = hx_adm_is_user(hx_adm_text(e, "FUNCTION"));
-    if (!user && hx_adm_has(e, "ROUTINE"))
-        return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
-                           " FUNCTION=USER(...)");
+    if (!user && hx_adm_no_routine(r, e) != 0)
+        return -1;
     if (!user && hx_adm_has(e, "IMPLICIT"))
         return hx_adm_fail(r, e, hx_adm_get(e, "IMPLICIT")->line, "IMPLICIT: the harness"
                            " integrates explicit DIFF statements only (FUNCTION is the state's"
@@ -219,9 +217,8 @@ int hx_adm_build_request(hx_adm_reader *r, hx_adm_entry *e)
 {
     const char *function = hx_adm_text(e, "FUNCTION");
     if (function == NULL) {
-        if (hx_adm_has(e, "ROUTINE"))
-            return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
-                               " FUNCTION=USER(...)");
+        if (hx_adm_no_routine(r, e) != 0)
+            return -1;
         return build_builtin_request(r, e);
     }
     if (!hx_adm_is_user(function))

@@ -158,3 +158,11 @@ int hx_adm_element_build(hx_adm_reader *r, const hx_adm_entry *e, hx_adm_element
         spec->text(r->d, e->line, data);
     return r->d->failed ? -1 : 0;
 }
+
+int hx_adm_no_routine(hx_adm_reader *r, const hx_adm_entry *e)
+{
+    if (!hx_adm_has(e, "ROUTINE"))
+        return 0;
+    return hx_adm_fail(r, e, hx_adm_get(e, "ROUTINE")->line, "ROUTINE without"
+                       " FUNCTION=USER(...)");
+}

@@ -33,6 +33,9 @@ void hx_adm_element_number(hx_adm_element *el, const char *attr, double x);
  * routines' names into der_attrs[0..] (NULL-terminated); 0 or -1 (failed). */
 int hx_adm_element_user(hx_adm_reader *r, const hx_adm_entry *e, hx_adm_element *el,
                         const char *const *der_attrs);
+/* An entry not calling a user routine (no FUNCTION=USER(...)) must not name
+ * one: a ROUTINE= is an error at its line; 0, or -1 (failed). */
+int hx_adm_no_routine(hx_adm_reader *r, const hx_adm_entry *e);
 /* Builds the element into the draft for the entry (its line and id); 0, or
  * -1 with the draft failed. With data, the element's text between its tags
  * too (Reference_Array's numbers, Reference_Spline's points). */

@@ -41,18 +41,6 @@ static int coupler_joints(const hx_dynamics *d, int k, int body[3])
     return c->njoints;
 }
 
-static void sort_blocks(hx_constraint_row *r)
-{
-    for (int a = 1; a < r->nblocks; ++a)
-        for (int b = a; b > 0 && r->u[b - 1] > r->u[b]; --b) {
-            int t;
-            t = r->u[b], r->u[b] = r->u[b - 1], r->u[b - 1] = t;
-            t = r->width[b], r->width[b] = r->width[b - 1], r->width[b - 1] = t;
-            t = r->slot[b], r->slot[b] = r->slot[b - 1], r->slot[b - 1] = t;
-            t = r->body[b], r->body[b] = r->body[b - 1], r->body[b - 1] = t;
-        }
-}
-
 static void add_block(hx_constraint_row *r, const hx_dynamics *d, int body, int slot)
 {
     const hx_body_dof *dof = &d->dof[body];
@@ -163,7 +151,7 @@ int hx_constraints_init(hx_dynamics *d, hx_message *msg)
             for (int i = 0; i < nj; ++i)
                 add_block(&d->rows[k], d, body[i], i);
         }
-        sort_blocks(&d->rows[k]);
+        hx_constraint_row_sort(&d->rows[k]);
     }
     const double L = length_scale(m);
     for (int k = 0; k < m->njoints; ++k) {
@@ -175,7 +163,7 @@ int hx_constraints_init(hx_dynamics *d, hx_message *msg)
             hx_constraint_row *r = &d->rows[d->joint_row[k] + e];
             add_block(r, d, m->markers[j->i_marker].body, 0);
             add_block(r, d, m->markers[j->j_marker].body, 6);
-            sort_blocks(r);
+            hx_constraint_row_sort(r);
             r->scale = 1.0;
         }
         for (int e = 0; e < count; ++e) /* the rows of positions (joint_equations.h) */
@@ -188,7 +176,7 @@ int hx_constraints_init(hx_dynamics *d, hx_message *msg)
         hx_constraint_row *r = &d->rows[d->motion_first + k];
         add_block(r, d, m->markers[j->i_marker].body, 0);
         add_block(r, d, m->markers[j->j_marker].body, 6);
-        sort_blocks(r);
+        hx_constraint_row_sort(r);
         r->scale = rt->motion_type == 'T' ? L : 1.0;
     }
     return hx_expression_rows_init(d, L, msg);

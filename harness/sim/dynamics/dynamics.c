@@ -227,3 +227,15 @@ int hx_dynamics_initial_y(const hx_dynamics *d, double *y, hx_message *msg)
     hx_dynamics_data_free(&dd);
     return status;
 }
+
+void hx_constraint_row_sort(hx_constraint_row *r)
+{
+    for (int a = 1; a < r->nblocks; ++a)
+        for (int b = a; b > 0 && r->u[b - 1] > r->u[b]; --b) {
+            int t;
+            t = r->u[b], r->u[b] = r->u[b - 1], r->u[b - 1] = t;
+            t = r->width[b], r->width[b] = r->width[b - 1], r->width[b - 1] = t;
+            t = r->slot[b], r->slot[b] = r->slot[b - 1], r->slot[b - 1] = t;
+            t = r->body[b], r->body[b] = r->body[b - 1], r->body[b - 1] = t;
+        }
+}

@@ -61,6 +61,9 @@ typedef struct hx_constraint_row {
     double scale; /* phi's size for the projection's tolerance: 1, or the model's length */
 } hx_constraint_row;
 
+/* Puts a row's blocks in ascending u (the order G's consumers read them in). */
+void hx_constraint_row_sort(hx_constraint_row *r);
+
 /* The dynamics' model: set up once, read only afterwards. */
 typedef struct hx_dynamics {
     hx_session *s;

@@ -85,14 +85,7 @@ int hx_expression_rows_init(hx_dynamics *d, double length, hx_message *msg)
         if (r->nblocks == 0)
             return hx_fail(msg, "Constraint_General %d (line %d): its markers are all on ground,"
                            " so it holds no moving body", g->id, g->line);
-        for (int a = 1; a < r->nblocks; ++a) /* ascending u, as every row */
-            for (int b = a; b > 0 && r->u[b - 1] > r->u[b]; --b) {
-                int t;
-                t = r->u[b], r->u[b] = r->u[b - 1], r->u[b - 1] = t;
-                t = r->width[b], r->width[b] = r->width[b - 1], r->width[b - 1] = t;
-                t = r->slot[b], r->slot[b] = r->slot[b - 1], r->slot[b - 1] = t;
-                t = r->body[b], r->body[b] = r->body[b - 1], r->body[b - 1] = t;
-            }
+        hx_constraint_row_sort(r);
         if (next > 12)
             d->row_values = 6 * HX_CONSTRAINT_ROW_BLOCKS;
         r->scale = displacement ? length : 1.0;
