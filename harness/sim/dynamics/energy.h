@@ -6,7 +6,8 @@
 
 /* In force * length units. */
 typedef struct hx_energy {
-    double total;     /* kinetic + gravity potential + elastic - work of the loads */
+    double total;     /* kinetic + gravity potential + elastic - work of the loads and
+                       * of the time-dependent constraints (motions, GCONs of TIME) */
     double kinetic;
     double elastic;   /* the force elements' potential at their deformation */
     double balance;   /* kinetic + gravity potential - work of loads and elements:
