@@ -327,7 +327,7 @@ static void transpose_apply(const hx_dynamics *d, const double *G, const double 
     }
 }
 
-/* The power lambda r of the rows held at G u = r(t) (docs/architecture.md, the energy). */
+/* The power lambda r of the rows held at G u = r(t) (docs/architecture.md, the energy balance). */
 static int driven_power(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
                         double *power)
 {

@@ -10,7 +10,7 @@ typedef struct hx_energy {
                        * of the time-dependent constraints (motions, GCONs of TIME) */
     double kinetic;
     double elastic;   /* the force elements' potential at their deformation */
-    double balance;   /* kinetic + gravity potential - work of loads and elements:
+    double balance;   /* kinetic + gravity potential - work of loads, drives, elements:
                        * constant whatever the elements do (damping included),
                        * so its drift is the integrator's alone */
 } hx_energy;

@@ -185,7 +185,7 @@ int hx_routines_apply(const hx_dynamics *d, hx_dynamics_data *dd, const double *
             return -1;
         /* the drive's power: the generalized force that turns the loads' udot into the
          * motion's, m (udot - udot_free) / ucf, times the joint rate (docs/architecture.md,
-         * the energy) */
+         * the energy balance) */
         ydot[d->load_work] += d->dof[body].mass * (*udot - free_udot) / d->ucf * rate;
     }
     return 0;
