@@ -161,7 +161,8 @@ static void a_driven_row_s_work_is_in_the_balance(void **state)
 /* A general constraint driving a free body along DX = 0.1 SIN(TIME) against gravity along
  * -x, and one turning a hinged body (a reduced revolute to ground: the row's block is its
  * one coordinate) through AZ = 0.5 SIN(2 TIME) against gravity along -x: each row's power
- * is -lambda df/dt. A GCON that does not read TIME (DZ = 0) puts no power in. */
+ * is -lambda df/dt (DZ = 0, which reads no TIME, is left out of the sum). Without the
+ * rows' power the run reported a change of 13.6 (relative), with its sign flipped 27.1. */
 static void a_general_constraint_of_time_s_work_is_in_the_balance(void **state)
 {
     (void)state;
