@@ -1,17 +1,14 @@
 /*
- * The constraint system (constraints.h): the couplers' rows (COUSUB/COUXX for
- * the constraint and its Jacobian, COUXX2 for the velocity-squared term) and
- * the joints' equations (joint_equations.c) in one G, the multipliers from
- * G M^-1 G^T lambda = rhs, and after a step positions then velocities
- * projected back onto phi = 0 and G u = 0 (docs/architecture.md, the
- * constraint system). Each row of G touches a few blocks of velocities (a
- * coupler's joints, a joint's two free bodies): it keeps their values, 12 a
- * row (36 when a coupler spans joints between bodies: its joints' I and J
- * bodies, up to 6), and M is block-diagonal per body, so M^-1 G^T has the
- * same blocks. The order of every sum is that of the dense products over u
- * it replaces, so the couplers' runs are unchanged; a coupler of reduced
- * joints alone keeps its former arithmetic (one value a joint, no
- * convective term).
+ * The constraint system (constraints.h): the couplers' rows (COUSUB/COUXX for the
+ * constraint and its Jacobian, COUXX2 for the velocity-squared term) and the joints'
+ * equations (joint_equations.c) in one G, the multipliers from G M^-1 G^T lambda = rhs,
+ * and after a step positions then velocities projected back onto phi = 0 and G u = 0
+ * (docs/architecture.md, the constraint system). Each row of G touches a few blocks of
+ * velocities (a coupler's joints, a joint's two free bodies): it keeps their values, 12 a
+ * row (36 when a coupler spans joints between bodies: up to 6 bodies); M is block-diagonal
+ * per body, so M^-1 G^T has the same blocks. Sums run in the order of the dense products
+ * over u they replaced, and a coupler of reduced joints alone keeps its former arithmetic
+ * (a value a joint, no convective term): the couplers' runs are unchanged.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -318,8 +315,25 @@ static void transpose_apply(const hx_dynamics *d, const double *G, const double 
     }
 }
 
+/* The power lambda r of the rows held at G u = r(t) (docs/architecture.md, the energy balance). */
+static int driven_power(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                        double *power)
+{
+    for (int a = 0; a < d->nactive; ++a) {
+        const int i = d->active[a];
+        double r;
+        if (i < d->motion_first ||
+            (i >= d->gcon_first && !hx_expression_rows_timed(d, i - d->gcon_first)))
+            continue;
+        if (row_rate(d, dd, i, t, y, &r) != 0)
+            return -1;
+        *power += dd->lambda[i] * r;
+    }
+    return 0;
+}
+
 int hx_constraints_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
-                         double *udot)
+                         double *udot, double *power)
 {
     const int n = d->nactive;
     if (d->nrows == 0)
@@ -353,7 +367,7 @@ int hx_constraints_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t, c
                     udot[r->u[b] + c] += d->ucf * wi[c] * dd->lambda[i];
         }
     }
-    return 0;
+    return power != NULL && d->motion_first < d->nrows ? driven_power(d, dd, t, y, power) : 0;
 }
 
 /* The largest |phi_i| / scale_i of the active rows, the row in *at. */

@@ -25,9 +25,11 @@ int hx_constraints_rows(const hx_dynamics *d, hx_dynamics_data *dd, double t, co
                         double *phi, double *G, double *gamma);
 
 /* The constraints stage: the couplers' multipliers (dd->lambda, a row each) into the
- * accelerations udot (those of the loads alone on entry). */
+ * accelerations udot (those of the loads alone on entry); the power the
+ * time-dependent rows (motions, general constraints of TIME) put in added to
+ * *power (force * length / time; may be NULL: not wanted). */
 int hx_constraints_apply(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
-                         double *udot);
+                         double *udot, double *power);
 
 /* The velocities (indices into u) the rows join, each once (a free body's six); returns
  * their count (at most nu). */

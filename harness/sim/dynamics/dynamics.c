@@ -186,7 +186,7 @@ int hx_dynamics_evaluate(const hx_dynamics *d, hx_dynamics_data *dd, double t, c
     hx_bodies_accelerations(d, dd, y, ydot);
     if (d->nrows > 0) {
         memcpy(dd->free_accelerations, ydot + d->nq, sizeof(double) * (size_t)d->nu);
-        if (hx_constraints_apply(d, dd, t, y, ydot + d->nq) != 0)
+        if (hx_constraints_apply(d, dd, t, y, ydot + d->nq, &ydot[d->load_work]) != 0)
             return -1;
     }
     if (d->m->nroutines > 0 && hx_routines_apply(d, dd, y, ydot) != 0)

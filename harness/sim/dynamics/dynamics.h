@@ -27,7 +27,8 @@
  *
  * State layout y: [positions (nq) | velocities (nu) | the Force_StateEqn
  * elements' states (nstates, element by element in the model's order) | the
- * Control_Diff states (ndiffs, routines.h) | work done by the loads | work
+ * Control_Diff states (ndiffs, routines.h) | work done by the loads and the
+ * time-dependent constraints (the motions, the general constraints of TIME) | work
  * done by the force elements, Force_StateEqn ones included]. Units follow the
  * model; mass * acceleration = ucf * force, as in a solver with an
  * inconsistent unit set (mm, kg, s, N has ucf = 1000).
@@ -74,7 +75,8 @@ typedef struct hx_dynamics {
     int stateeqn_offset, nstates; /* y offset and count of the Force_StateEqn states */
     int diff_offset, ndiffs;      /* y offset and count of the Control_Diff states */
     int diffs_read_variables;     /* a Control_Diff's expression reads a variable */
-    int load_work, element_work;  /* y indices of the work done by loads and by elements */
+    int load_work, element_work;  /* y indices of the work done by loads and the drives
+                                   * (motions, GCONs of TIME), and by elements */
     hx_binding **coupler_binding; /* per coupler; NULL for the built-in form */
     int nrows;                    /* constraint rows: the couplers', the joints', then the
                                    * motions' on joints between bodies, the general

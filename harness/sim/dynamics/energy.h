@@ -6,10 +6,11 @@
 
 /* In force * length units. */
 typedef struct hx_energy {
-    double total;     /* kinetic + gravity potential + elastic - work of the loads */
+    double total;     /* kinetic + gravity potential + elastic - work of the loads and
+                       * of the time-dependent constraints (motions, GCONs of TIME) */
     double kinetic;
     double elastic;   /* the force elements' potential at their deformation */
-    double balance;   /* kinetic + gravity potential - work of loads and elements:
+    double balance;   /* kinetic + gravity potential - work of loads, drives, elements:
                        * constant whatever the elements do (damping included),
                        * so its drift is the integrator's alone */
 } hx_energy;

@@ -93,6 +93,16 @@ int hx_expression_rows_init(hx_dynamics *d, double length, hx_message *msg)
     return 0;
 }
 
+int hx_expression_rows_timed(const hx_dynamics *d, int k)
+{
+    const hx_expr_program *p = d->m->gcons[k].program;
+    const hx_expr_input *in = hx_expr_inputs(p);
+    for (int j = 0; j < hx_expr_input_count(p); ++j)
+        if (in[j].kind == HX_EXPR_INPUT_TIME)
+            return 1;
+    return 0;
+}
+
 size_t hx_expression_rows_work_size(const hx_dynamics *d)
 {
     size_t most = 0;

@@ -26,6 +26,9 @@ int hx_expression_rows_eval(const hx_dynamics *d, hx_dynamics_data *dd, int k, d
                             const double *y, double *work, double *phi, double *G,
                             double *gamma);
 
+/* Constraint k reads TIME: G u is held to a -df/dt that may not be 0. */
+int hx_expression_rows_timed(const hx_dynamics *d, int k);
+
 /* What G u of constraint k must equal: -df/dt at (t, y). 0, or -1. */
 int hx_expression_rows_rate(const hx_dynamics *d, hx_dynamics_data *dd, int k, double t,
                             const double *y, double *work, double *rate);

@@ -175,13 +175,18 @@ int hx_routines_apply(const hx_dynamics *d, hx_dynamics_data *dd, const double *
             continue;
         const char val_type = m->routines[k].val_type;
         double *qdot = &ydot[d->dof[body].q], *udot = &ydot[d->nq + d->dof[body].u];
-        *qdot = y[d->nq + d->dof[body].u];
+        const double rate = y[d->nq + d->dof[body].u], free_udot = *udot;
+        *qdot = rate;
         if ((val_type == 'D' &&
              (hx_routines_motion(d, dd, k, 1, qdot) != 0 || hx_routines_motion(d, dd, k, 2, udot) != 0)) ||
             (val_type == 'V' &&
              (hx_routines_motion(d, dd, k, 0, qdot) != 0 || hx_routines_motion(d, dd, k, 1, udot) != 0)) ||
             (val_type == 'A' && hx_routines_motion(d, dd, k, 0, udot) != 0))
             return -1;
+        /* the drive's power: the generalized force that turns the loads' udot into the
+         * motion's, m (udot - udot_free) / ucf, times the joint rate (docs/architecture.md,
+         * the energy balance) */
+        ydot[d->load_work] += d->dof[body].mass * (*udot - free_udot) / d->ucf * rate;
     }
     return 0;
 }

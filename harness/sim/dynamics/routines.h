@@ -39,7 +39,7 @@ int hx_routines_initial(const hx_dynamics *d, hx_dynamics_data *dd, double *y);
 
 /* The routines stage, at dd->frames: the Control_Diff rates into ydot (and
  * dd->frames's DIF1), the driven joints' rates and accelerations over the
- * bodies'. 0 or -1. */
+ * bodies', and the drives' power added to ydot[d->load_work]. 0 or -1. */
 int hx_routines_apply(const hx_dynamics *d, hx_dynamics_data *dd, const double *y, double *ydot);
 
 /* The rate of the Control_Diff by expression routine k at dd->frames (its

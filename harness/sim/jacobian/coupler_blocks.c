@@ -187,7 +187,7 @@ static int stage(hx_jacobian *jac, double t, const double *y, double *accel, dou
     const hx_dynamics *d = jac->d;
     hx_dynamics_data *dd = &jac->dd;
     memcpy(accel, dd->free_accelerations, sizeof(double) * (size_t)d->nu);
-    if (hx_constraints_apply(d, dd, t, y, accel) != 0)
+    if (hx_constraints_apply(d, dd, t, y, accel, NULL) != 0)
         return -1;
     for (int i = 0; i < jac->ncoupled; ++i)
         out[i] = accel[jac->coupled[i]];
