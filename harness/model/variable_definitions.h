@@ -35,6 +35,12 @@ int hx_variable_definitions_copy(hx_variable_definitions *to, const hx_variable_
 int hx_variable_definitions_redefine(hx_variable_definitions *v, const hx_model *m, int k,
                                      hx_expr_program *p, const char *file, int line,
                                      hx_message *msg);
+/* The order of v's variables into order (v->n of them), each after those it
+ * reads (the model reader's and a run's alike); 0, or -1 with why in msg (a
+ * cycle of VARVALs, each variable of it with its file:line) and the index of
+ * the cycle's first named variable in *first (-1 if out of memory first). */
+int hx_variable_definitions_order(const hx_variable_definitions *v, const hx_model *m, int *order,
+                                  int *first, hx_message *msg);
 /* Puts v in force in m (its variables' programs and order): between a run's
  * segments only, when nothing evaluates. */
 void hx_variable_definitions_apply(const hx_variable_definitions *v, const hx_model *m);
