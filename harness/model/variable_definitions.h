@@ -30,8 +30,8 @@ int hx_variable_definitions_copy(hx_variable_definitions *to, const hx_variable_
 /* Variable index k defined by p (linked against m; not taken over), written
  * at file:line; the order found again. 0, or -1 with why in msg: p reads a
  * rate (DIF1), or a cycle of VARVALs, each variable of it with its file:line
- * ("run.acf:4: VARIABLE/1 reads VARVAL(2), m.adm:7: VARIABLE/2 reads
- * VARVAL(1)"); v then keeps its order before. */
+ * ("run.acf:4: Reference_Variable 1 reads VARVAL(2), m.adm:7:
+ * Reference_Variable 2 reads VARVAL(1)"); v then keeps its order before. */
 int hx_variable_definitions_redefine(hx_variable_definitions *v, const hx_model *m, int k,
                                      hx_expr_program *p, const char *file, int line,
                                      hx_message *msg);
