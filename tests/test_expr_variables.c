@@ -223,7 +223,9 @@ static void bad_variables_are_named(void **state)
                  "ADAMS/View model\nPART/1, GROUND\nMARKER/10, PART=1\n"
                  "VARIABLE/5, FUNCTION=1 + VARVAL(5)\nEND\n",
                  (const char *const[]){"self.adm:4: Reference_Variable 5 reads VARVAL(5)",
-                                       "algebraic loop", NULL});
+                                       "algebraic loop",
+                                       /* the whole error at the loop's first variable */
+                                       "self.adm:4: VARIABLE/5: a cycle of variables", NULL});
     sim_expect_parse_error("unknown.adm",
                  "ADAMS/View model\nPART/1, GROUND\nMARKER/10, PART=1\n"
                  "VARIABLE/5, FUNCTION=1 + VARVAL(9)\nEND\n",

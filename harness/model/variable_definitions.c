@@ -59,14 +59,16 @@ static int count_inputs(const hx_variable_definitions *v, int k)
     return v->program[k] == NULL ? 0 : hx_expr_input_count(v->program[k]);
 }
 
-/* A cycle among the variables not ordered: walk from one until a variable
- * repeats, and name that loop into msg; -1. */
+/* A cycle among the variables not ordered (each of which reads one not
+ * ordered): walk from one until a variable repeats, and name that loop into
+ * msg, its first variable's index into *first; -1. */
 static int refuse_cycle(const hx_variable_definitions *v, const hx_model *m,
-                        const unsigned char *ordered, int *next, hx_message *msg)
+                        const unsigned char *ordered, int *next, int *first, hx_message *msg)
 {
     int k = 0;
     while (ordered[k])
         ++k;
+    *first = k;
     unsigned char *seen = calloc((size_t)v->n + 1, 1);
     if (seen == NULL)
         return hx_fail(msg, "out of memory");
@@ -84,24 +86,24 @@ static int refuse_cycle(const hx_variable_definitions *v, const hx_model *m,
     free(seen);
     char text[HX_MESSAGE_MAX] = "";
     size_t used = 0;
-    const int first = k;
+    *first = k;
     do {
         used += (size_t)snprintf(text + used, used < sizeof text ? sizeof text - used : 0,
                                  "%s%s:%d: Reference_Variable %d reads VARVAL(%d)",
-                                 k == first ? "" : ", ", v->file[k], v->line[k],
+                                 k == *first ? "" : ", ", v->file[k], v->line[k],
                                  m->variables[k].id, m->variables[next[k]].id);
         k = next[k];
-    } while (k != first && used < sizeof text);
+    } while (k != *first && used < sizeof text);
     return hx_fail(msg, "a cycle of variables (an algebraic loop, which the harness does not"
                    " solve): %s", text);
 }
 
-/* The order of v's variables into order, each after those it reads; 0, or -1
- * with the cycle named. Passes over the unordered until none joins (the
- * variables are few; this runs before a run). */
-static int find_order(const hx_variable_definitions *v, const hx_model *m, int *order,
-                      hx_message *msg)
+/* Passes over the unordered until none joins: a variable joins once all it
+ * reads have (the variables are few; this runs before a run). */
+int hx_variable_definitions_order(const hx_variable_definitions *v, const hx_model *m, int *order,
+                                  int *first, hx_message *msg)
 {
+    *first = -1;
     unsigned char *ordered = calloc((size_t)v->n + 1, 1);
     int *next = calloc((size_t)v->n + 1, sizeof(int));
     if (ordered == NULL || next == NULL) {
@@ -126,7 +128,7 @@ static int find_order(const hx_variable_definitions *v, const hx_model *m, int *
             }
         }
     }
-    const int status = count < v->n ? refuse_cycle(v, m, ordered, next, msg) : 0;
+    const int status = count < v->n ? refuse_cycle(v, m, ordered, next, first, msg) : 0;
     free(ordered), free(next);
     return status;
 }
@@ -153,7 +155,8 @@ int hx_variable_definitions_redefine(hx_variable_definitions *v, const hx_model 
     v->program[k] = p;
     v->file[k] = file;
     v->line[k] = line;
-    if (find_order(v, m, order, msg) != 0) {
+    int first;
+    if (hx_variable_definitions_order(v, m, order, &first, msg) != 0) {
         v->program[k] = before;
         v->file[k] = before_file;
         v->line[k] = before_line;

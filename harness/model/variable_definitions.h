@@ -30,11 +30,17 @@ int hx_variable_definitions_copy(hx_variable_definitions *to, const hx_variable_
 /* Variable index k defined by p (linked against m; not taken over), written
  * at file:line; the order found again. 0, or -1 with why in msg: p reads a
  * rate (DIF1), or a cycle of VARVALs, each variable of it with its file:line
- * ("run.acf:4: VARIABLE/1 reads VARVAL(2), m.adm:7: VARIABLE/2 reads
- * VARVAL(1)"); v then keeps its order before. */
+ * ("run.acf:4: Reference_Variable 1 reads VARVAL(2), m.adm:7:
+ * Reference_Variable 2 reads VARVAL(1)"); v then keeps its order before. */
 int hx_variable_definitions_redefine(hx_variable_definitions *v, const hx_model *m, int k,
                                      hx_expr_program *p, const char *file, int line,
                                      hx_message *msg);
+/* The order of v's variables into order (v->n of them), each after those it
+ * reads (the model reader's and a run's alike); 0, or -1 with why in msg (a
+ * cycle of VARVALs, each variable of it with its file:line) and the index of
+ * the cycle's first named variable in *first (-1 if out of memory first). */
+int hx_variable_definitions_order(const hx_variable_definitions *v, const hx_model *m, int *order,
+                                  int *first, hx_message *msg);
 /* Puts v in force in m (its variables' programs and order): between a run's
  * segments only, when nothing evaluates. */
 void hx_variable_definitions_apply(const hx_variable_definitions *v, const hx_model *m);

@@ -12,19 +12,7 @@
 #include "model/draft.h"
 #include "model/expr/expr.h"
 #include "model/load_elements.h"
-
-/* The variable index program k reads through input j, or -1. */
-static int read_variable(const hx_model *m, int k, int j)
-{
-    const hx_expr_program *p = m->variables[k].program;
-    return p == NULL ? -1 : hx_expr_inputs(p)[j].variable;
-}
-
-static int count_inputs(const hx_model *m, int k)
-{
-    const hx_expr_program *p = m->variables[k].program;
-    return p == NULL ? 0 : hx_expr_input_count(p);
-}
+#include "model/variable_definitions.h"
 
 static int link_one(hx_draft *d, hx_variable *v)
 {
@@ -56,47 +44,28 @@ static int link_one(hx_draft *d, hx_variable *v)
     return 0;
 }
 
-/* A cycle among the variables not ordered (each of which reads one not
- * ordered): walk from one until a variable repeats, and name that loop. */
-static void refuse_cycle(hx_draft *d, const unsigned char *ordered)
+/* The order the variables are computed in (model.h's variable_order),
+ * found as a run finds a redefined set's (variable_definitions.c), a cycle
+ * refused naming each variable of it at the model's path as given. */
+static int find_order(hx_draft *d)
 {
-    const hx_model *m = d->m;
-    int start = 0;
-    while (ordered[start])
-        ++start;
-    int *next = malloc(sizeof(int) * (size_t)m->nvariables);
-    int *seen = calloc((size_t)m->nvariables, sizeof(int));
-    if (next == NULL || seen == NULL) {
-        free(next), free(seen);
-        hx_draft_fail(d, m->variables[start].line, "out of memory");
-        return;
+    hx_model *m = d->m;
+    hx_variable_definitions defs;
+    hx_message why;
+    if (hx_variable_definitions_of(&defs, m, &why) != 0) {
+        hx_draft_fail(d, 0, "%s", why.text);
+        return -1;
     }
-    int k = start, step = 0;
-    while (!seen[k]) {
-        seen[k] = ++step;
-        for (int j = 0; j < count_inputs(m, k); ++j) {
-            const int r = read_variable(m, k, j);
-            if (r >= 0 && !ordered[r]) {
-                next[k] = r;
-                break;
-            }
-        }
-        k = next[k];
-    }
-    char text[HX_MESSAGE_MAX] = "";
-    size_t used = 0;
-    const int first = k;
-    do {
-        const hx_variable *v = &m->variables[k];
-        used += (size_t)snprintf(text + used, used < sizeof text ? sizeof text - used : 0,
-                                 "%s%s:%d: Reference_Variable %d reads VARVAL(%d)",
-                                 k == first ? "" : ", ", d->path, v->line, v->id,
-                                 m->variables[next[k]].id);
-        k = next[k];
-    } while (k != first && used < sizeof text);
-    hx_draft_fail(d, m->variables[first].line, "a cycle of variables (an algebraic loop, which"
-                  " the harness does not solve): %s", text);
-    free(next), free(seen);
+    for (int k = 0; k < m->nvariables; ++k)
+        defs.file[k] = d->path;
+    m->variable_order = malloc(sizeof(int) * (size_t)(m->nvariables + 1));
+    int first = -1;
+    if (m->variable_order == NULL)
+        hx_draft_fail(d, 0, "out of memory");
+    else if (hx_variable_definitions_order(&defs, m, m->variable_order, &first, &why) != 0)
+        hx_draft_fail(d, first >= 0 ? m->variables[first].line : 0, "%s", why.text);
+    hx_variable_definitions_free(&defs);
+    return d->failed ? -1 : 0;
 }
 
 int hx_draft_link_variables(hx_draft *d)
@@ -105,41 +74,15 @@ int hx_draft_link_variables(hx_draft *d)
     for (int k = 0; k < m->nvariables; ++k)
         if (m->variables[k].program != NULL && link_one(d, &m->variables[k]) != 0)
             return -1;
-    m->variable_order = malloc(sizeof(int) * (size_t)(m->nvariables + 1));
-    unsigned char *ordered = calloc((size_t)m->nvariables + 1, 1);
-    if (m->variable_order == NULL || ordered == NULL) {
-        free(ordered);
-        hx_draft_fail(d, 0, "out of memory");
+    if (find_order(d) != 0)
         return -1;
+    /* in that order, a variable reads a state (DIF) if one it reads does */
+    for (int i = 0; i < m->nvariables; ++i) {
+        hx_variable *v = &m->variables[m->variable_order[i]];
+        const hx_expr_input *in = v->program != NULL ? hx_expr_inputs(v->program) : NULL;
+        for (int j = 0; in != NULL && j < hx_expr_input_count(v->program); ++j)
+            if (in[j].variable >= 0 && m->variables[in[j].variable].reads_diff)
+                v->reads_diff = 1;
     }
-    /* passes over the unordered until none is added: a variable joins once all it
-     * reads have (the models' variables are few; this runs once) */
-    int count = 0;
-    for (int added = 1; added && count < m->nvariables;) {
-        added = 0;
-        for (int k = 0; k < m->nvariables; ++k) {
-            if (ordered[k])
-                continue;
-            int ready = 1;
-            for (int j = 0; j < count_inputs(m, k) && ready; ++j) {
-                const int r = read_variable(m, k, j);
-                ready = r < 0 || ordered[r];
-            }
-            if (!ready)
-                continue;
-            hx_variable *v = &m->variables[k];
-            for (int j = 0; j < count_inputs(m, k); ++j) {
-                const int r = read_variable(m, k, j);
-                if (r >= 0 && m->variables[r].reads_diff)
-                    v->reads_diff = 1;
-            }
-            ordered[k] = 1;
-            m->variable_order[count++] = k;
-            added = 1;
-        }
-    }
-    if (count < m->nvariables)
-        refuse_cycle(d, ordered);
-    free(ordered);
-    return d->failed ? -1 : 0;
+    return 0;
 }
