@@ -136,6 +136,43 @@ static void time_derivatives_against_closed_forms(void **state)
     hx_model_free(m);
 }
 
+/* At the run's start (0 <= t < 2h) f'' reads no time before 0: TIME**2.5 is
+ * not defined there. f' = 2.5 t^1.5, f'' = 3.75 sqrt(t): at t = 1, 3.75; at
+ * t = 0 the forward difference over f' at 0 .. 4h gives 2.5 sqrt(h) (48 - 36
+ * 2^1.5 + 16 3^1.5 - 3 4^1.5) / 12 = 0.0111 (the third derivative is not
+ * bounded at 0); a smooth 0.1 sin(2 pi t) near 0 within the forward formula's
+ * rounding, 128/12 DBL_EPSILON |f'| / h = 1.5e-11. */
+static void time_derivatives_at_the_start(void **state)
+{
+    (void)state;
+    hx_model *m = clock_model();
+    hx_expr_program *p = program_of("TIME**2.5", m);
+    hx_frames fr;
+    assert_int_equal(hx_frames_init(&fr, m), 0);
+    double value;
+    hx_expr_fault fault;
+    fr.time = 0.0;
+    assert_int_equal(hx_time_derivative_eval(p, &fr, 2, &value, &fault), 0);
+    assert_close(value, 0.0111, 0.01, 0);
+    fr.time = 1e-4;
+    assert_int_equal(hx_time_derivative_eval(p, &fr, 2, &value, &fault), 0);
+    assert_close(value, 3.75e-2, 0.02, 0);
+    fr.time = 1.0;
+    assert_int_equal(hx_time_derivative_eval(p, &fr, 2, &value, &fault), 0);
+    assert_close(value, 3.75, 0, 1e-9);
+    hx_expr_free(p);
+    p = program_of("0.1*SIN(2*PI*TIME)", m);
+    const double w = 2.0 * M_PI, times[3] = {0.0, 5e-5, 1.5e-4};
+    for (int k = 0; k < 3; ++k) {
+        fr.time = times[k];
+        assert_int_equal(hx_time_derivative_eval(p, &fr, 2, &value, &fault), 0);
+        assert_close(value, -0.1 * w * w * sin(w * times[k]), 0, 5e-11);
+    }
+    hx_expr_free(p);
+    hx_frames_free(&fr);
+    hx_model_free(m);
+}
+
 /* The link's revolute to ground (joint 1, its body's one joint: reduced)
  * driven by 10D*TIME against the torque and gravity: its coordinate is
  * 10 deg/s times t, to rounding (the rate 10D is integrated exactly by any
@@ -436,6 +473,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(time_derivatives_against_closed_forms),
+        cmocka_unit_test(time_derivatives_at_the_start),
         cmocka_unit_test(revolute_to_ground_by_expression),
         cmocka_unit_test(translational_between_moving_bodies_by_expression),
         cmocka_unit_test(expression_against_motsub),

@@ -8,6 +8,8 @@
  * whose truncation is h^4 |f^(6)| / 30 and whose rounding about
  * 2 DBL_EPSILON |f'| / h (0.1 sin(2 pi t): 2e-14 and 3e-12; 6.6e-12 measured in
  * tests/test_expr_motions.c). The same steps as check's test of a MOTSUB.
+ * Within 2h of t = 0 no time before 0 is read: the forward difference of the
+ * same order (h^4 |f^(6)| / 5) over f' at t .. t + 4h.
  */
 #ifndef HX_EXPR_TIME_DERIVATIVE_H
 #define HX_EXPR_TIME_DERIVATIVE_H
