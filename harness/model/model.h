@@ -151,7 +151,6 @@ typedef struct hx_variable {
     double sign;        /* -1 for a leading minus */
     double number;      /* the value of a plain number */
     hx_expr_program *program; /* an expression beyond one measure, linked; NULL: the above */
-    int reads_diff;     /* it reads a Control_Diff's state, itself or through VARVAL */
     int line;
 } hx_variable;
 

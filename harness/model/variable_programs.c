@@ -34,8 +34,6 @@ static int link_one(hx_draft *d, hx_variable *v)
             hx_draft_fail_expression(d, "Reference_Variable", v->id, "expr", what);
             return -1;
         }
-        if (in[k].kind == HX_EXPR_INPUT_DIF)
-            v->reads_diff = 1;
         if (in[k].kind == HX_EXPR_INPUT_MEASURE)
             for (int i = 0; i < in[k].nids && i < 4; ++i)
                 if (in[k].index[i] >= 0)
@@ -74,15 +72,5 @@ int hx_draft_link_variables(hx_draft *d)
     for (int k = 0; k < m->nvariables; ++k)
         if (m->variables[k].program != NULL && link_one(d, &m->variables[k]) != 0)
             return -1;
-    if (find_order(d) != 0)
-        return -1;
-    /* in that order, a variable reads a state (DIF) if one it reads does */
-    for (int i = 0; i < m->nvariables; ++i) {
-        hx_variable *v = &m->variables[m->variable_order[i]];
-        const hx_expr_input *in = v->program != NULL ? hx_expr_inputs(v->program) : NULL;
-        for (int j = 0; in != NULL && j < hx_expr_input_count(v->program); ++j)
-            if (in[j].variable >= 0 && m->variables[in[j].variable].reads_diff)
-                v->reads_diff = 1;
-    }
-    return 0;
+    return find_order(d);
 }
