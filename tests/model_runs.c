@@ -154,7 +154,12 @@ double *bdf_on(const char *path, double rtol, double t_end, hx_simulation_result
 
 void evaluate_text(evaluated *e, const char *name, const char *text)
 {
-    open_model(&e->m, test_write_file(name, text));
+    evaluate_path(e, test_write_file(name, text));
+}
+
+void evaluate_path(evaluated *e, const char *path)
+{
+    open_model(&e->m, path);
     e->y = model_state(&e->m);
     e->ydot = model_state(&e->m);
     model_initial_state(&e->m, e->y);

@@ -67,6 +67,8 @@ typedef struct evaluated {
 /* The model text written as name, opened and evaluated; fails the test on an
  * error. */
 void evaluate_text(evaluated *e, const char *name, const char *text);
+/* The same of the model at path. */
+void evaluate_path(evaluated *e, const char *path);
 void release(evaluated *e);
 /* An output expression's value at e's state; fails the test on an error. */
 double output(const evaluated *e, const char *text);
