@@ -6,7 +6,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "model/expr/expr.h"
+#include "sim/dynamics/accelerations.h"
+#include "sim/dynamics/reactions.h"
 #include "sim/jacobian/jacobian.h"
+#include "sim/simulation/requests.h"
 #include "test_support.h"
 
 void open_model(model *m, const char *path)
@@ -147,3 +151,56 @@ double *bdf_on(const char *path, double rtol, double t_end, hx_simulation_result
     return y;
 }
 
+
+void evaluate_text(evaluated *e, const char *name, const char *text)
+{
+    evaluate_path(e, test_write_file(name, text));
+}
+
+void evaluate_path(evaluated *e, const char *path)
+{
+    open_model(&e->m, path);
+    e->y = model_state(&e->m);
+    e->ydot = model_state(&e->m);
+    model_initial_state(&e->m, e->y);
+    if (hx_dynamics_rhs(&e->m.d, &e->m.data, 0.0, e->y, e->ydot) != 0)
+        fail_msg("%s", e->m.data.message);
+    const hx_model *m = e->m.session.model;
+    e->r = calloc(6 * (size_t)m->njoints + 1, sizeof(double));
+    e->a = calloc(6 * (size_t)m->nbodies, sizeof(double));
+    e->loads = calloc(12 * (size_t)m->nloads + 1, sizeof(double));
+    e->forces = calloc(12 * (size_t)m->nforces + 1, sizeof(double));
+    assert_non_null(e->r);
+    assert_non_null(e->a);
+    assert_non_null(e->loads);
+    assert_non_null(e->forces);
+    hx_reactions_all(&e->m.d, &e->m.data, e->ydot, e->r);
+    hx_accelerations_bodies(&e->m.d, &e->m.data, e->ydot, e->a);
+    hx_message msg;
+    if (hx_requests_loads(&e->m.d, &e->m.data, e->loads, &msg) != 0)
+        fail_msg("%s", msg.text);
+    hx_requests_forces(&e->m.d, &e->m.data, e->forces);
+    e->outputs.reactions = e->r, e->outputs.accelerations = e->a;
+    e->outputs.loads = e->loads, e->outputs.forces = e->forces;
+}
+
+void release(evaluated *e)
+{
+    free(e->y), free(e->ydot), free(e->r), free(e->a), free(e->loads), free(e->forces);
+    close_model(&e->m);
+}
+
+double output(const evaluated *e, const char *text)
+{
+    hx_message msg;
+    hx_expr_program *p = hx_expr_parse(text, strlen(text), NULL, &msg);
+    if (p == NULL || hx_expr_link_output(p, e->m.session.model, &msg) != 0)
+        fail_msg("%s: %s", text, msg.text);
+    const hx_expr_context c = {&e->m.data.frames, NULL, &e->outputs};
+    double value;
+    hx_expr_fault fault;
+    if (hx_expr_eval(p, &c, &value, &fault) != 0)
+        fail_msg("%s: fault %s %s", text, fault.function, fault.what);
+    hx_expr_free(p);
+    return value;
+}

@@ -9,6 +9,7 @@
 
 #include <dirent.h>
 
+#include "expr/evaluate.h"
 #include "sim/jacobian/jacobian.h"
 #include "sim/simulation/simulation.h"
 
@@ -54,5 +55,29 @@ const char *scaled_field_model(const char *name, const char *element);
  * 1024 characters) the run's account of its Jacobian. */
 double *bdf_on(const char *path, double rtol, double t_end, hx_simulation_result *r,
                hx_partials_source *source, char *description);
+
+/* A model evaluated at its initial state, with what an output time knows
+ * there: its reactions, accelerations, loads and force elements' forces. */
+typedef struct evaluated {
+    model m;
+    double *y, *ydot, *r, *a, *loads, *forces;
+    hx_expr_outputs outputs;
+} evaluated;
+
+/* The model text written as name, opened and evaluated; fails the test on an
+ * error. */
+void evaluate_text(evaluated *e, const char *name, const char *text);
+/* The same of the model at path. */
+void evaluate_path(evaluated *e, const char *path);
+void release(evaluated *e);
+/* An output expression's value at e's state; fails the test on an error. */
+double output(const evaluated *e, const char *text);
+
+#define EXPECT(e, text, want, tol)                                                              \
+    do {                                                                                        \
+        const double got_ = output(e, text);                                                    \
+        if (!(fabs(got_ - (want)) <= (tol)))                                                    \
+            fail_msg("%s = %.15g, expected %.15g", text, got_, (double)(want));                 \
+    } while (0)
 
 #endif

@@ -315,9 +315,12 @@ static void link_errors_name_the_id(void **state)
                         "m.xml:10:5: AKISPL: no Reference_Spline 999 in the model");
     assert_string_equal(expr_link_error(&fixture, "CURVE(0, 0, 1, 5)", &msg),
                         "m.xml:10:5: CURVE: no curve 5 in the model");
+    assert_contains(expr_link_error(&fixture, "1 + COUPLER(1, 0, 2, 0)", &msg),
+                    "m.xml:10:9: COUPLER is not answered by the harness yet: the harness does"
+                    " not split");
     assert_contains(expr_link_error(&fixture, "1 + VFORCE(1, 0, 2, 0)", &msg),
-                    "m.xml:10:9: VFORCE is not answered by the harness yet: another element's"
-                    " force");
+                    "m.xml:10:9: VFORCE(1,0,2,0): another element's force: the order of"
+                    " evaluation would decide it");
     assert_contains(expr_link_error(&fixture, "1 + SFORCE(1, 0, 2, 0)", &msg),
                     "m.xml:10:9: SFORCE(1,0,2,0): another element's force: the order of"
                     " evaluation would decide it");

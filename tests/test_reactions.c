@@ -24,31 +24,6 @@
 #define G 9.81
 #define TOL 1e-9
 
-/* A model evaluated at its initial state, with its joints' reactions. */
-typedef struct evaluated {
-    model m;
-    double *y, *ydot, *r;
-} evaluated;
-
-static void evaluate_text(evaluated *e, const char *name, const char *xml)
-{
-    open_model(&e->m, test_write_file(name, xml));
-    e->y = model_state(&e->m);
-    e->ydot = model_state(&e->m);
-    model_initial_state(&e->m, e->y);
-    if (hx_dynamics_rhs(&e->m.d, &e->m.data, 0.0, e->y, e->ydot) != 0)
-        fail_msg("%s", e->m.data.message);
-    e->r = calloc(6 * (size_t)e->m.session.model->njoints + 1, sizeof(double));
-    assert_non_null(e->r);
-    hx_reactions_all(&e->m.d, &e->m.data, e->ydot, e->r);
-}
-
-static void release(evaluated *e)
-{
-    free(e->y), free(e->ydot), free(e->r);
-    close_model(&e->m);
-}
-
 /* The six reactions of a Constraint_Joint (or, primitive, a Constraint_Jprim) by id. */
 static const double *of(const evaluated *e, int id, int primitive)
 {
@@ -58,21 +33,6 @@ static const double *of(const evaluated *e, int id, int primitive)
     return e->r + 6 * k;
 }
 
-/* An output expression's value at e's state (JOINT, JPRIM read e->r). */
-static double output(const evaluated *e, const char *text)
-{
-    hx_message msg;
-    hx_expr_program *p = hx_expr_parse(text, strlen(text), NULL, &msg);
-    if (p == NULL || hx_expr_link_output(p, e->m.session.model, &msg) != 0)
-        fail_msg("%s: %s", text, msg.text);
-    const hx_expr_outputs outputs = {e->r, NULL, NULL};
-    const hx_expr_context c = {&e->m.data.frames, NULL, &outputs};
-    double value;
-    hx_expr_fault fault;
-    assert_int_equal(hx_expr_eval(p, &c, &value, &fault), 0);
-    hx_expr_free(p);
-    return value;
-}
 
 static void expect_six(const double *got, double fx, double fy, double fz, double tx, double ty,
                        double tz, double tol)
@@ -462,7 +422,7 @@ static void dataset_request_and_force(void **state)
     evaluate_text(&e, "request.adm", text);
     double out[8];
     hx_message msg;
-    const hx_expr_outputs given = {e.r, NULL, NULL};
+    const hx_expr_outputs given = {e.r, NULL, NULL, NULL};
     assert_int_equal(hx_requests_values(&e.m.data.frames, 0, NULL, &given, out, &msg), 0);
     assert_close(out[1], 0.0, 0, TOL);
     assert_close(out[2], 31.62, 0, TOL);
@@ -479,20 +439,6 @@ static void dataset_request_and_force(void **state)
                  "JOINT(1,0,3,0)", "algebraic loop", NULL});
 }
 
-/* A bundled example evaluated at its initial state. */
-static void evaluate_example(evaluated *e, const char *path)
-{
-    open_model(&e->m, path);
-    e->y = model_state(&e->m);
-    e->ydot = model_state(&e->m);
-    model_initial_state(&e->m, e->y);
-    if (hx_dynamics_rhs(&e->m.d, &e->m.data, 0.0, e->y, e->ydot) != 0)
-        fail_msg("%s", e->m.data.message);
-    e->r = calloc(6 * (size_t)e->m.session.model->njoints + 1, sizeof(double));
-    assert_non_null(e->r);
-    hx_reactions_all(&e->m.d, &e->m.data, e->ydot, e->r);
-}
-
 /* Bevel gears (the bundled example, mm and N: ucf 1000): two reduced revolutes
  * coupled, a torque on the first. Each gear's centre is on its axis, its axes
  * principal, its spin along one of them, so the joint holds the weight alone,
@@ -506,12 +452,12 @@ static void coupled_gears_hold_their_weight_only(void **state)
 {
     (void)state;
     evaluated e;
-    evaluate_example(&e, EXAMPLES_DIR "/rack_pinion.xml");
+    evaluate_path(&e, EXAMPLES_DIR "/rack_pinion.xml");
     assert_true(fabs(e.m.data.lambda[0]) > 1e-6);
     expect_six(of(&e, 51, 0), 0, 0, 19.62, 0, 0, 0, 1e-12);
     expect_six(of(&e, 41, 0), 0, 0, 4.905, 0, 0, 0, 1e-12);
     release(&e);
-    evaluate_example(&e, EXAMPLES_DIR "/bevel_gears.xml");
+    evaluate_path(&e, EXAMPLES_DIR "/bevel_gears.xml");
     assert_true(fabs(e.m.data.lambda[0]) > 1e-6); /* the coupler pushes */
     expect_six(of(&e, 1, 0), 0, 0, 0.120663, 0, 0, 0, 1e-12);
     expect_six(of(&e, 2, 0), 0, 0, 0.2722275, 0, 0, 0, 1e-12);

@@ -225,7 +225,7 @@ static const struct {
 } bad[] = {
     {"REQUEST/3, ACCELERATION, J=10", {"bad.adm:7:", "REQUEST/3:", "ACCELERATION needs I="}},
     {"REQUEST/3, ACCELERATION, F2=1", {"bad.adm:7:", "REQUEST/3:", "ACCELERATION with F1..F8"}},
-    {"REQUEST/3, FORCE, I=20, J=10", {"bad.adm:7:", "REQUEST/3: FORCE:", "not answered"}},
+    {"REQUEST/3, FORCE, J=10", {"bad.adm:7:", "REQUEST/3:", "FORCE needs I="}},
     {"REQUEST/3, DISPLACEMENT, I=99", {"bad.adm:7:", "REQUEST/3:", "I=99 (column 28) names no MARKER"}},
     {"REQUEST/3, VELOCITY, I=20, RM=98", {"bad.adm:7:", "REQUEST/3:", "RM=98 (column 31) names no"}},
     {"REQUEST/3, DISPLACEMENT, J=10", {"bad.adm:7:", "REQUEST/3:", "DISPLACEMENT needs I="}},
@@ -263,8 +263,8 @@ static const struct {
 } bad_xml[] = {
     {"<Post_Request id=\"5\" type=\"MARKER_ACCELERATION\" j_marker_id=\"20\"/>",
      {"bad.xml:5:", "Post_Request 5:", "i_marker_id is missing"}},
-    {"<Post_Request id=\"5\" type=\"MARKER_FORCE\" i_marker_id=\"20\"/>",
-     {"bad.xml:5:", "Post_Request 5: type \"MARKER_FORCE\"", "not answered"}},
+    {"<Post_Request id=\"5\" type=\"MARKER_FORCE\" j_marker_id=\"20\"/>",
+     {"bad.xml:5:", "Post_Request 5:", "i_marker_id is missing"}},
     {"<Post_Request id=\"5\" type=\"ELEMENTAL_FORCE\" elem_type=\"SFORCE\" jflag=\"0\"/>",
      {"bad.xml:5:", "Post_Request 5: type \"ELEMENTAL_FORCE\"", "not answered"}},
     {"<Post_Request id=\"5\" type=\"MARKER_DISPLACEMENT\"/>",

@@ -28,7 +28,12 @@ typedef struct hx_expr_outputs {
     const double *loads;         /* the loads' by index (model->loads), twelve each: the force
                                   * and torque on I at I's origin, then on J at the point the
                                   * load puts its reaction (sim/dynamics/loads.h), world axes;
-                                  * SFORCE reads them */
+                                  * SFORCE, VFORCE, VTORQ, GFORCE read them */
+    const double *forces;        /* the user force elements' by index (model->forces), twelve
+                                  * each, the values the forces stage applied: on I at I's
+                                  * origin, then on J at its origin (at I's for a
+                                  * Force_Vector's floating J), world axes; zeros on J for a
+                                  * Force_Vector_OneBody; SFORCE, VFORCE, ..., FIELD read them */
 } hx_expr_outputs;
 
 typedef struct hx_expr_context {

@@ -5,6 +5,7 @@
 
 #include "base/vecmath.h"
 #include "frames/acceleration_measures.h"
+#include "expr/marker_forces.h"
 #include "frames/measure_functions.h"
 #include "model/curve.h"
 #include "model/expr/functions.h"
@@ -59,16 +60,21 @@ static double component(const hx_expr_context *c, int comp, int rm, const double
     return in_rm[comp - (torque ? 6 : 2)];
 }
 
-/* SFORCE(id, jflag, comp, rm) (docs/interface.md §8.3): jflag 0 on I at I,
- * 1 on J where the load puts it. */
+/* SFORCE, VFORCE, VTORQ, GFORCE, FIELD (id, jflag, comp, rm; docs/interface.md
+ * §8.3): jflag 0 on I at I, 1 on J where the element puts it; from the
+ * loads' values (an element by expressions) or the force elements' (by a
+ * user routine). */
 static int load(const hx_expr_context *c, const hx_expr_input *in, double *value,
                 hx_expr_fault *fault)
 {
     const char *name = hx_expr_function_at(in->function)->name;
-    if (c->outputs == NULL || c->outputs->loads == NULL)
-        return fault_of(fault, HX_EXPR_FAULT_INPUT, name, "no loads were given to read it from"
-                        " (they are known at output times only)", 0, 0.0);
-    const double *at = c->outputs->loads + 12 * in->index[0] + 6 * (in->ids[1] == 1);
+    const int force = in->index[1] == 1;
+    const double *all = c->outputs == NULL ? NULL : force ? c->outputs->forces
+                                                          : c->outputs->loads;
+    if (all == NULL)
+        return fault_of(fault, HX_EXPR_FAULT_INPUT, name, "no element forces were given to read"
+                        " it from (they are known at output times only)", 0, 0.0);
+    const double *at = all + 12 * in->index[0] + 6 * (in->ids[1] == 1);
     *value = component(c, in->ids[2], in->index[3], at, at + 3);
     return 0;
 }
@@ -84,28 +90,29 @@ static int reaction(const hx_expr_context *c, const hx_expr_input *in, double *v
         return fault_of(fault, HX_EXPR_FAULT_INPUT, name, "no joint reactions were given to read"
                         " it from (they are known at output times only)", 0, 0.0);
     const double *on_i = c->outputs->reactions + 6 * in->index[0];
+    double on_j[6];
+    if (in->ids[1] == 1)
+        hx_marker_forces_joint_on_j(c->frames, in->index[0], on_i, on_j);
+    const double *at = in->ids[1] == 1 ? on_j : on_i;
+    *value = component(c, in->ids[2], in->index[3], at, at + 3);
+    return 0;
+}
+
+/* FX .. TM (I[, J[, K]]; docs/interface.md §8.3): the net force or torque at
+ * I from the elements between I and J, in K's axes. */
+static int marker_force(const hx_expr_context *c, const hx_expr_input *in, double *value,
+                        hx_expr_fault *fault)
+{
+    /* FX FY FZ FM TX TY TZ TM as the element functions' comp */
+    static const int comp[8] = {2, 3, 4, 1, 6, 7, 8, 5};
     double F[3], T[3];
-    v3_copy(F, on_i), v3_copy(T, on_i + 3);
-    if (in->ids[1] == 1) {
-        hx_frame scratch[2];
-        const hx_frame *i = hx_frames_marker(c->frames, in->index[1], &scratch[0]);
-        const hx_frame *j = hx_frames_marker(c->frames, in->index[2], &scratch[1]);
-        double d[3], dxF[3];
-        v3_sub(d, i->p, j->p);
-        v3_cross(dxF, d, F);
-        v3_add(T, T, dxF);
-        v3_scale(F, F, -1.0), v3_scale(T, T, -1.0);
+    if (hx_marker_forces_sum(c->frames, c->outputs, in->index[0], in->index[1], 0, F, T,
+                             fault) != 0) {
+        fault->function = hx_expr_function_at(in->function)->name;
+        return -1;
     }
-    const int comp = in->ids[2], torque = comp > 4;
-    const double *v = torque ? T : F;
-    if (comp == 1 || comp == 5) {
-        *value = v3_norm(v);
-        return 0;
-    }
-    hx_frame scratch;
-    double in_rm[3];
-    m3_tapply(in_rm, hx_frames_marker(c->frames, in->index[3], &scratch)->R, v);
-    *value = in_rm[comp - (torque ? 6 : 2)];
+    const int k = in->function - HX_FN_FX;
+    *value = component(c, comp[k], k == 3 || k == 7 ? -1 : in->index[2], F, T);
     return 0;
 }
 
@@ -165,6 +172,10 @@ int hx_expr_operand_input(const hx_expr_program *p, const hx_expr_context *c, in
         break;
     case HX_EXPR_INPUT_LOAD:
         if (load(c, in, value, fault) != 0)
+            return -1;
+        break;
+    case HX_EXPR_INPUT_MARKER_FORCE:
+        if (marker_force(c, in, value, fault) != 0)
             return -1;
         break;
     case HX_EXPR_INPUT_DIF:

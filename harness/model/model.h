@@ -261,10 +261,12 @@ typedef struct hx_plant_port {
 /* A request the harness answers itself (docs/interface.md §7.13): eight
  * values at each output time, the CSV's requestID.1 .. requestID.8 in
  * Adams' order. DISPLACEMENT, VELOCITY and ACCELERATION of marker I relative to J in RM's
- * axes (-1: the ground's origin, the world's axes), or eight expressions
- * (F1..F8, expr1..expr8; NULL: 0). A REQSUB request is a routine. */
+ * axes (-1: the ground's origin, the world's axes), FORCE at I from the
+ * elements between I and J (J -1: the action-only forces at I), or eight
+ * expressions (F1..F8, expr1..expr8; NULL: 0). A REQSUB request is a routine. */
 enum hx_request_kind {
-    HX_REQUEST_DISPLACEMENT, HX_REQUEST_VELOCITY, HX_REQUEST_EXPRESSIONS, HX_REQUEST_ACCELERATION
+    HX_REQUEST_DISPLACEMENT, HX_REQUEST_VELOCITY, HX_REQUEST_EXPRESSIONS, HX_REQUEST_ACCELERATION,
+    HX_REQUEST_FORCE
 };
 
 typedef struct hx_request {

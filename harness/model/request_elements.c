@@ -9,6 +9,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "model/marker_elements.h"
 #include "model/request_elements.h"
 
 hx_request *hx_draft_request(hx_draft *d, int id, enum hx_request_kind kind,
@@ -103,9 +104,6 @@ void hx_build_builtin_request(hx_draft *d, const hx_element_read *e)
         return;
     }
     static const char *const refused[][2] = {
-        {"MARKER_FORCE", "the forces at a marker are not answered by the harness (it keeps no"
-         " per-marker sum of the applied forces; a joint's reaction is JOINT() or JPRIM() in"
-         " an EXPRESSION request)"},
         {"ELEMENTAL_FORCE", "the forces of an element by its type are not answered by the harness"
          " (a force element's loads are the CSV's forceID columns)"},
     };
@@ -117,11 +115,12 @@ void hx_build_builtin_request(hx_draft *d, const hx_element_read *e)
     const int expressions = strcasecmp(type, "EXPRESSION") == 0;
     const int displacement = strcasecmp(type, "MARKER_DISPLACEMENT") == 0;
     const int acceleration = strcasecmp(type, "MARKER_ACCELERATION") == 0;
-    if (!expressions && !displacement && !acceleration &&
+    const int force = strcasecmp(type, "MARKER_FORCE") == 0;
+    if (!expressions && !displacement && !acceleration && !force &&
         strcasecmp(type, "MARKER_VELOCITY") != 0) {
         hx_draft_fail(d, e->line, "%s: type \"%s\": expected MARKER_DISPLACEMENT, MARKER_VELOCITY,"
-                      " MARKER_ACCELERATION, EXPRESSION, or USERSUB with a user routine", label,
-                      type);
+                      " MARKER_ACCELERATION, MARKER_FORCE, EXPRESSION, or USERSUB with a user"
+                      " routine", label, type);
         return;
     }
     static const char *const markers[3] = {"i_marker_id", "j_marker_id", "ref_marker_id"};
@@ -146,6 +145,7 @@ void hx_build_builtin_request(hx_draft *d, const hx_element_read *e)
     hx_request *q = hx_draft_request(d, e->id, expressions ? HX_REQUEST_EXPRESSIONS
                                      : displacement ? HX_REQUEST_DISPLACEMENT
                                      : acceleration ? HX_REQUEST_ACCELERATION
+                                     : force        ? HX_REQUEST_FORCE
                                                     : HX_REQUEST_VELOCITY, ids, e->line, label);
     if (q == NULL || !expressions)
         return;
@@ -179,6 +179,14 @@ int hx_draft_resolve_requests(hx_draft *d)
                               q->adams ? "MARKER" : "Reference_Marker", id);
                 return -1;
             }
+        }
+        char what[128];
+        if (q->kind == HX_REQUEST_FORCE && q->markers[1] >= 0 &&
+            hx_marker_unsummed(m, q->markers[0], q->markers[1], what, sizeof what)) {
+            hx_draft_fail(d, q->line, "%s: FORCE: %s acts between I=%d and J=%d, and the harness"
+                          " does not sum its force at a marker yet", q->label, what,
+                          q->marker_ids[0], q->marker_ids[1]);
+            return -1;
         }
         for (int j = 0; j < 8; ++j) {
             hx_message why;

@@ -146,8 +146,9 @@ int hx_adm_build_diff(hx_adm_reader *r, hx_adm_entry *e)
 }
 
 /* A REQUEST the harness answers itself (docs/interface.md §9.6): DISPLACEMENT,
- * VELOCITY or ACCELERATION of I relative to J in RM's axes, or F1..F8, through the one
- * builder of requests (model/request_elements.h). */
+ * VELOCITY or ACCELERATION of I relative to J in RM's axes, FORCE at I from the
+ * elements between I and J, or F1..F8, through the one builder of requests
+ * (model/request_elements.h). */
 static int build_builtin_request(hx_adm_reader *r, hx_adm_entry *e)
 {
     static const char *const types[4] = {"DISPLACEMENT", "VELOCITY", "ACCELERATION", "FORCE"};
@@ -158,22 +159,17 @@ static int build_builtin_request(hx_adm_reader *r, hx_adm_entry *e)
         if (hx_adm_has(e, types[k])) {
             if (type >= 0)
                 return hx_adm_fail(r, e, e->line, "%s and %s: give one of DISPLACEMENT, VELOCITY,"
-                                   " ACCELERATION, F1..F8 or FUNCTION=USER(...)", types[type],
-                                   types[k]);
+                                   " ACCELERATION, FORCE, F1..F8 or FUNCTION=USER(...)",
+                                   types[type], types[k]);
             type = k;
         }
     for (int k = 0; k < 8; ++k)
         nf += hx_adm_has(e, fs[k]);
-    if (type == 3)
-        return hx_adm_fail(r, e, e->line, "FORCE: the forces at a marker are not answered by the"
-                           " harness (it keeps no per-marker sum of the applied forces; a"
-                           " joint's reaction is JOINT() or JPRIM() in F1..F8): give"
-                           " DISPLACEMENT, VELOCITY, ACCELERATION or F1..F8");
     if (type >= 0 && nf > 0)
         return hx_adm_fail(r, e, e->line, "%s with F1..F8: give one or the other", types[type]);
     if (type < 0 && nf == 0)
         return hx_adm_fail(r, e, e->line, "nothing to output: give DISPLACEMENT, VELOCITY,"
-                           " ACCELERATION, F1..F8 or FUNCTION=USER(...)");
+                           " ACCELERATION, FORCE, F1..F8 or FUNCTION=USER(...)");
     int ids[3] = {0, 0, 0};
     for (int k = 0; k < 3; ++k) {
         const hx_adm_value *v = hx_adm_get(e, markers[k]);
@@ -194,6 +190,7 @@ static int build_builtin_request(hx_adm_reader *r, hx_adm_entry *e)
     hx_request *q = hx_draft_request(r->d, e->id, type == 0   ? HX_REQUEST_DISPLACEMENT
                                                   : type == 1 ? HX_REQUEST_VELOCITY
                                                   : type == 2 ? HX_REQUEST_ACCELERATION
+                                                  : type == 3 ? HX_REQUEST_FORCE
                                                               : HX_REQUEST_EXPRESSIONS,
                                      ids, e->line, label);
     if (q == NULL)

@@ -108,6 +108,7 @@ static int input(emitter *e, const hx_expr_node *n)
     case HX_FK_ARYVAL: in.kind = HX_EXPR_INPUT_ARYVAL; break;
     case HX_FK_REACTION: in.kind = HX_EXPR_INPUT_REACTION; break;
     case HX_FK_LOAD: in.kind = HX_EXPR_INPUT_LOAD; break;
+    case HX_FK_MARKER_FORCE: in.kind = HX_EXPR_INPUT_MARKER_FORCE; break;
     case HX_FK_ACCELERATION: /* in the order of frames/acceleration_measures.h */
         in.kind = HX_EXPR_INPUT_ACCELERATION, in.measure = n->function - HX_FN_ACCX;
         break;

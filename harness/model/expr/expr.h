@@ -23,9 +23,11 @@ typedef struct hx_expr_source {
 
 /* What a program reads (docs/interface.md §8.6): TIME, a measure of markers,
  * a Reference_Variable's value, a Control_Diff's state or rate, a
- * component of a Reference_Array, a joint's reaction (JOINT, JPRIM) or a
- * marker's acceleration (ACCX .. WDTM; both in output expressions only,
- * hx_expr_link_output). Each distinct one is listed once. */
+ * component of a Reference_Array, a joint's reaction (JOINT, JPRIM), a
+ * marker's acceleration (ACCX .. WDTM), a force element's force (SFORCE,
+ * VFORCE, VTORQ, GFORCE, FIELD) or the net force at a marker (FX .. TM; these
+ * in output expressions only, hx_expr_link_output). Each distinct one is
+ * listed once. */
 typedef enum hx_expr_input_kind {
     HX_EXPR_INPUT_TIME,
     HX_EXPR_INPUT_MEASURE,
@@ -35,7 +37,8 @@ typedef enum hx_expr_input_kind {
     HX_EXPR_INPUT_ARYVAL,
     HX_EXPR_INPUT_REACTION,
     HX_EXPR_INPUT_ACCELERATION,
-    HX_EXPR_INPUT_LOAD
+    HX_EXPR_INPUT_LOAD,
+    HX_EXPR_INPUT_MARKER_FORCE
 } hx_expr_input_kind;
 
 typedef struct hx_expr_input {
@@ -51,8 +54,10 @@ typedef struct hx_expr_input {
                        * VARVAL: the variable's index; DIF, DIF1: the Control_Diff's slot;
                        * ARYVAL: the array's index; REACTION: the joint's index (model
                        * order, primitives among them), its I and J markers' and rm's
-                       * (-1: the world's axes); LOAD: the load's index (model->loads),
-                       * index[3] rm's */
+                       * (-1: the world's axes); LOAD: the element's index, in
+                       * model->loads (index[1] 0) or model->forces (index[1] 1),
+                       * index[3] rm's; MARKER_FORCE: I's, J's (-1: left out or 0,
+                       * every element acting at I) and K's (-1: the world's axes) */
     int variable;     /* the variable it reads (VARVAL, ARYVAL of a U array), else -1 */
     int line, column; /* its first place in the text */
 } hx_expr_input;
@@ -97,8 +102,10 @@ hx_expr_program *hx_expr_parse(const char *text, size_t length, const hx_expr_so
 int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg);
 /* The same for an expression evaluated at output times only, after the
  * accelerations (a request's): it may read the joints' reactions (JOINT,
- * JPRIM) and the markers' accelerations (ACCX .. WDTM), which hx_expr_link
- * refuses (a force or variable reading one would close an algebraic loop). */
+ * JPRIM), the markers' accelerations (ACCX .. WDTM), the force elements'
+ * forces (SFORCE, VFORCE, ...) and the net forces at markers (FX .. TM),
+ * which hx_expr_link refuses (a force or variable reading one would close an
+ * algebraic loop, or depend on the order of evaluation). */
 int hx_expr_link_output(hx_expr_program *p, const hx_model *m, hx_message *msg);
 
 void hx_expr_free(hx_expr_program *p);

@@ -4,9 +4,18 @@
 #include <string.h>
 
 #define ALL_IDS 0xFu
-#define FORCE "another element's force: the order of evaluation would decide it"
+#define CONSTRAINT_WHY \
+    "the harness does not split the constraint system's multipliers into this element's" \
+    " force yet (a joint's reaction is JOINT() or JPRIM())"
+#define MOTION_WHY \
+    "the harness does not take a motion's force out of its joint's balance or rows yet" \
+    " (the joint's reaction is JOINT())"
 #define ELEMENT_FORCE(NAME) \
-    {NAME, HX_FK_UNANSWERED, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", FORCE}
+    {NAME, HX_FK_LOAD, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", NULL}
+#define CONSTRAINT_FORCE(NAME, WHY) \
+    {NAME, HX_FK_UNANSWERED, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", WHY}
+#define MARKER_FORCE(NAME, MOST, ARGUMENTS) \
+    {NAME, HX_FK_MARKER_FORCE, 1, MOST, ALL_IDS, ARGUMENTS, NULL}
 
 static const hx_expr_function table[HX_FN_COUNT] = {
     [HX_FN_NEG] = {"-", HX_FK_OPERATOR, 1, 1, 0, "", NULL},
@@ -86,25 +95,25 @@ static const hx_expr_function table[HX_FN_COUNT] = {
     [HX_FN_WDTY] = {"WDTY", HX_FK_ACCELERATION, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", NULL},
     [HX_FN_WDTZ] = {"WDTZ", HX_FK_ACCELERATION, 1, 4, ALL_IDS, "(I[, J[, K[, L]]])", NULL},
     [HX_FN_WDTM] = {"WDTM", HX_FK_ACCELERATION, 1, 3, ALL_IDS, "(I[, J[, L]])", NULL},
-    [HX_FN_FX] = {"FX", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, K]])", FORCE},
-    [HX_FN_FY] = {"FY", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, K]])", FORCE},
-    [HX_FN_FZ] = {"FZ", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, K]])", FORCE},
-    [HX_FN_FM] = {"FM", HX_FK_UNANSWERED, 1, 2, ALL_IDS, "(I[, J])", FORCE},
-    [HX_FN_TX] = {"TX", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, K]])", FORCE},
-    [HX_FN_TY] = {"TY", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, K]])", FORCE},
-    [HX_FN_TZ] = {"TZ", HX_FK_UNANSWERED, 1, 3, ALL_IDS, "(I[, J[, K]])", FORCE},
-    [HX_FN_TM] = {"TM", HX_FK_UNANSWERED, 1, 2, ALL_IDS, "(I[, J])", FORCE},
+    [HX_FN_FX] = MARKER_FORCE("FX", 3, "(I[, J[, K]])"),
+    [HX_FN_FY] = MARKER_FORCE("FY", 3, "(I[, J[, K]])"),
+    [HX_FN_FZ] = MARKER_FORCE("FZ", 3, "(I[, J[, K]])"),
+    [HX_FN_FM] = MARKER_FORCE("FM", 2, "(I[, J])"),
+    [HX_FN_TX] = MARKER_FORCE("TX", 3, "(I[, J[, K]])"),
+    [HX_FN_TY] = MARKER_FORCE("TY", 3, "(I[, J[, K]])"),
+    [HX_FN_TZ] = MARKER_FORCE("TZ", 3, "(I[, J[, K]])"),
+    [HX_FN_TM] = MARKER_FORCE("TM", 2, "(I[, J])"),
     [HX_FN_JOINT] = {"JOINT", HX_FK_REACTION, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", NULL},
-    [HX_FN_SFORCE] = {"SFORCE", HX_FK_LOAD, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", NULL},
+    [HX_FN_SFORCE] = ELEMENT_FORCE("SFORCE"),
     [HX_FN_VFORCE] = ELEMENT_FORCE("VFORCE"),
     [HX_FN_VTORQ] = ELEMENT_FORCE("VTORQ"),
     [HX_FN_GFORCE] = ELEMENT_FORCE("GFORCE"),
-    [HX_FN_MOTION] = ELEMENT_FORCE("MOTION"),
+    [HX_FN_MOTION] = CONSTRAINT_FORCE("MOTION", MOTION_WHY),
     [HX_FN_BUSHING] = ELEMENT_FORCE("BUSHING"),
     [HX_FN_FIELD] = ELEMENT_FORCE("FIELD"),
-    [HX_FN_COUPLER] = ELEMENT_FORCE("COUPLER"),
+    [HX_FN_COUPLER] = CONSTRAINT_FORCE("COUPLER", CONSTRAINT_WHY),
     [HX_FN_JPRIM] = {"JPRIM", HX_FK_REACTION, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", NULL},
-    [HX_FN_GCON] = ELEMENT_FORCE("GCON"),
+    [HX_FN_GCON] = CONSTRAINT_FORCE("GCON", CONSTRAINT_WHY),
     [HX_FN_ORIENT] = {"ORIENT", HX_FK_UNANSWERED, 3, 4, ALL_IDS, "(system, component, I[, J])",
                       "the page that defines it could be read only up to its eleventh orientation"
                       " system; the harness answers it once the whole table is known"},

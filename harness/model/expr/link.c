@@ -3,13 +3,15 @@
  * Control_Diffs, arrays, splines and curves by id to their indices, each id
  * the model does not define named with its place in the text; a function
  * the harness does not answer yet is refused here, and so are a joint's
- * reaction and a marker's acceleration anywhere but in an output expression.
+ * reaction, a marker's acceleration, a force element's force and the forces
+ * at a marker anywhere but in an output expression.
  */
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "model/curve.h"
+#include "model/marker_elements.h"
 #include "model/expr/functions.h"
 #include "model/expr/program.h"
 
@@ -53,8 +55,8 @@ static int link_reaction(hx_expr_program *p, hx_expr_input *in, const hx_model *
     return 0;
 }
 
-/* SFORCE(id, jflag, comp, rm): a Force_Scalar_TwoBody by expression (a
- * dataset's SFORCE), and rm. */
+/* SFORCE, VFORCE, VTORQ, GFORCE, BUSHING, FIELD (id, jflag, comp, rm): the
+ * force element (model/marker_elements.h) and rm. */
 static int link_load(hx_expr_program *p, hx_expr_input *in, const hx_model *m, const char *text,
                      int output, hx_message *msg)
 {
@@ -62,18 +64,39 @@ static int link_load(hx_expr_program *p, hx_expr_input *in, const hx_model *m, c
         return fail_at(p, msg, in->line, in->column, "%s: another element's force: the order of"
                        " evaluation would decide it (REQUEST and Post_Request expressions may"
                        " read it)", text);
-    in->index[0] = -1;
-    for (int k = 0; k < m->nloads && in->index[0] < 0; ++k)
-        if (m->loads[k].id == in->ids[0] && m->loads[k].kind != HX_LOAD_VECTOR)
-            in->index[0] = k;
-    if (in->index[0] < 0)
-        return fail_at(p, msg, in->line, in->column, "%s: no SFORCE (Force_Scalar_TwoBody) %d by"
-                       " an expression in the model (a user routine's SFOSUB force is not read"
-                       " yet)", text, in->ids[0]);
+    char what[256];
+    if (hx_marker_element_find(m, in->function, in->ids[0], &in->index[1], &in->index[0], what,
+                               sizeof what) != 0)
+        return fail_at(p, msg, in->line, in->column, "%s: no %s", text, what);
     in->index[3] = in->ids[3] == 0 ? -1 : hx_model_marker(m, in->ids[3]);
     if (in->ids[3] != 0 && in->index[3] < 0)
         return fail_at(p, msg, in->line, in->column, "%s: rm (argument 4): no Reference_Marker"
                        " %d in the model", text, in->ids[3]);
+    return 0;
+}
+
+/* FX .. TM (I[, J[, K]]): the markers, and no element acting between I and J
+ * whose force the harness does not sum. */
+static int link_marker_force(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
+                             const char *text, int output, hx_message *msg)
+{
+    if (!output)
+        return fail_at(p, msg, in->line, in->column, "%s: the forces at a marker are known only"
+                       " once the accelerations are, after the forces and variables: a force or"
+                       " variable that reads them closes an algebraic loop, which the harness"
+                       " does not solve (REQUEST and Post_Request expressions may read them)",
+                       text);
+    for (int k = 0; k < 3; ++k) {
+        in->index[k] = in->ids[k] == 0 ? -1 : hx_model_marker(m, in->ids[k]);
+        if (in->ids[k] != 0 && in->index[k] < 0)
+            return fail_at(p, msg, in->line, in->column, "%s: no Reference_Marker %d in the"
+                           " model", text, in->ids[k]);
+    }
+    char what[128];
+    if (hx_marker_unsummed(m, in->index[0], in->index[1], what, sizeof what))
+        return fail_at(p, msg, in->line, in->column, "%s: %s acts at marker %d%s, and the harness"
+                       " does not sum its force at a marker yet", text, what, in->ids[0],
+                       in->index[1] >= 0 ? " (between it and J)" : "");
     return 0;
 }
 
@@ -88,6 +111,7 @@ static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, 
     case HX_EXPR_INPUT_TIME: return 0;
     case HX_EXPR_INPUT_REACTION: return link_reaction(p, in, m, text, output, msg);
     case HX_EXPR_INPUT_LOAD: return link_load(p, in, m, text, output, msg);
+    case HX_EXPR_INPUT_MARKER_FORCE: return link_marker_force(p, in, m, text, output, msg);
     case HX_EXPR_INPUT_ACCELERATION:
         if (!output)
             return fail_at(p, msg, in->line, in->column, "%s: an acceleration is known only once"

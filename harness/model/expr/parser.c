@@ -295,6 +295,7 @@ static int known_call(parser *p, int code, const hx_expr_token *name)
         p->tree->nodes[k].nids = count;
         return k;
     case HX_FK_ACCELERATION:
+    case HX_FK_MARKER_FORCE:
     case HX_FK_MEASURE:
         if (ids[0] == 0)
             return fail_at(p, places[0], places[1], "%s: its I marker is 0: I names a marker"

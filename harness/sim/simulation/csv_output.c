@@ -113,7 +113,8 @@ int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
 {
     const hx_model *m = d->m;
     double *ydot = malloc(sizeof(double) * ((size_t)d->n + 6 * (size_t)m->njoints +
-                                            6 * (size_t)m->nbodies + 12 * (size_t)m->nloads));
+                                            6 * (size_t)m->nbodies + 12 * (size_t)m->nloads +
+                                            12 * (size_t)m->nforces));
     if (ydot == NULL || hx_dynamics_rhs(d, dd, t, y, ydot) != 0) {
         free(ydot);
         return -1;
@@ -128,7 +129,9 @@ int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
         free(ydot);
         return hx_dynamics_fail(dd, "%s", msg.text);
     }
-    const hx_expr_outputs s = {reactions, accelerations, loads};
+    double *forces = loads + 12 * m->nloads;
+    hx_requests_forces(d, dd, forces);
+    const hx_expr_outputs s = {reactions, accelerations, loads, forces};
     const int status = row(f, d, dd, t, y, energy, energy0, &s);
     free(ydot);
     return status;

@@ -3,12 +3,14 @@
  * from the harness's own measures (frames/measure_functions.h), the
  * expressions by the evaluator (expr/evaluate.h), the variables they read
  * by the host's own answers (host/state_inputs.h), the joints' reactions
- * (JOINT, JPRIM) and the bodies' accelerations (ACCX .. WDTM) from the
- * caller's.
+ * (JOINT, JPRIM), the bodies' accelerations (ACCX .. WDTM) and the elements'
+ * forces (SFORCE .. FIELD, FX .. TM, FORCE) from the caller's.
  */
 #include <stdlib.h>
 
+#include "base/vecmath.h"
 #include "expr/evaluate.h"
+#include "expr/marker_forces.h"
 #include "frames/acceleration_measures.h"
 #include "frames/measure_functions.h"
 #include "host/state_inputs.h"
@@ -89,10 +91,32 @@ static int acceleration_values(const hx_frames *fr, const hx_request *q, const d
     return 0;
 }
 
+/* FORCE in the same order: FM, FX .. FZ in RM's axes, TM, TX .. TZ, at I from
+ * the elements between I and J (J left out: the action-only forces at I). */
+static int force_values(const hx_frames *fr, const hx_request *q, const hx_expr_outputs *s,
+                        double out[8], hx_message *msg)
+{
+    double F[3], T[3], rm_F[3], rm_T[3];
+    hx_expr_fault fault;
+    if (hx_marker_forces_sum(fr, s, q->markers[0], q->markers[1], q->markers[1] < 0, F, T,
+                             &fault) != 0)
+        return hx_fail(msg, "%s:%d: %s: FORCE: %s", fr->model->path, q->line, q->label,
+                       fault.what);
+    hx_frame scratch;
+    const hx_frame *rm = hx_frames_marker(fr, q->markers[2], &scratch);
+    m3_tapply(rm_F, rm->R, F), m3_tapply(rm_T, rm->R, T);
+    out[0] = v3_norm(F), out[4] = v3_norm(T);
+    for (int j = 0; j < 3; ++j)
+        out[1 + j] = rm_F[j], out[5 + j] = rm_T[j];
+    return 0;
+}
+
 int hx_requests_values(const hx_frames *fr, int k, const double *variables,
                        const hx_expr_outputs *s, double out[8], hx_message *msg)
 {
     const hx_request *q = &fr->model->requests[k];
+    if (q->kind == HX_REQUEST_FORCE)
+        return force_values(fr, q, s, out, msg);
     if (q->kind == HX_REQUEST_ACCELERATION)
         return acceleration_values(fr, q, s != NULL ? s->accelerations : NULL, out, msg);
     if (q->kind != HX_REQUEST_EXPRESSIONS) {
@@ -131,6 +155,34 @@ int hx_requests_loads(const hx_dynamics *d, const hx_dynamics_data *dd, double *
         }
     }
     return 0;
+}
+
+void hx_requests_forces(const hx_dynamics *d, const hx_dynamics_data *dd, double *out)
+{
+    const hx_model *m = d->m;
+    for (int k = 0; k < m->nforces; ++k) {
+        const hx_force *f = &m->forces[k];
+        const double *on_i = dd->element_load + 6 * k;
+        double *at = out + 12 * k;
+        for (int j = 0; j < 6; ++j)
+            at[j] = on_i[j], at[6 + j] = 0.0;
+        if (f->one_body)
+            continue; /* the ground takes it: no J side (a Force_Vector_OneBody) */
+        /* the forces stage puts -F, -T on J's body at I's origin (element_forces.c):
+         * a floating J is there; a Force_Field's or Force_Scalar's J has it moved to J */
+        v3_scale(at + 6, on_i, -1.0), v3_scale(at + 9, on_i + 3, -1.0);
+        const int floating = f->interface == HX_FORCE_GFOSUB &&
+                             f->part != HX_OUTPUT_SCALAR_FORCE && f->part != HX_OUTPUT_SCALAR_TORQUE;
+        if (floating)
+            continue;
+        hx_frame scratch[2];
+        const hx_frame *i = hx_frames_marker(&dd->frames, f->i_marker, &scratch[0]);
+        const hx_frame *j = hx_frames_marker(&dd->frames, f->j_marker, &scratch[1]);
+        double r[3], rxF[3];
+        v3_sub(r, i->p, j->p);
+        v3_cross(rxF, r, at + 6); /* the torque of -F at I about J's origin */
+        v3_add(at + 9, at + 9, rxF);
+    }
 }
 
 void hx_requests_csv_header(FILE *f, const hx_model *m)

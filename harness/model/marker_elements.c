@@ -1,0 +1,101 @@
+/* The elements that act at a marker (marker_elements.h). */
+#include "model/marker_elements.h"
+
+#include <stdio.h>
+
+#include "model/expr/functions.h"
+
+int hx_marker_between(int a, int b, int i, int j)
+{
+    return (a == i && (j < 0 || b == j)) || (b == i && (j < 0 || a == j));
+}
+
+/* What each function reads (docs/interface.md §8.3): a Force_Scalar_TwoBody
+ * (SFORCE), any Force_Vector element (VFORCE, VTORQ and GFORCE alike, as
+ * MotionSolve's pages define them), a Force_Field (FIELD); BUSHING names an
+ * element the harness does not simulate. */
+static int reads_load(int function, const hx_load *l)
+{
+    if (function == HX_FN_SFORCE)
+        return l->kind != HX_LOAD_VECTOR;
+    return (function == HX_FN_VFORCE || function == HX_FN_VTORQ || function == HX_FN_GFORCE) &&
+           l->kind == HX_LOAD_VECTOR;
+}
+
+static int reads_force(int function, const hx_force *f)
+{
+    const int scalar = f->part == HX_OUTPUT_SCALAR_FORCE || f->part == HX_OUTPUT_SCALAR_TORQUE;
+    if (function == HX_FN_SFORCE)
+        return f->interface == HX_FORCE_GFOSUB && scalar;
+    if (function == HX_FN_FIELD)
+        return f->interface == HX_FORCE_FIESUB;
+    return (function == HX_FN_VFORCE || function == HX_FN_VTORQ || function == HX_FN_GFORCE) &&
+           f->interface == HX_FORCE_GFOSUB && !scalar;
+}
+
+int hx_marker_element_find(const hx_model *m, int function, int id, int *force, int *index,
+                           char *what, size_t size)
+{
+    for (int k = 0; k < m->nloads; ++k)
+        if (m->loads[k].id == id && reads_load(function, &m->loads[k])) {
+            *force = 0, *index = k;
+            return 0;
+        }
+    for (int k = 0; k < m->nforces; ++k)
+        if (m->forces[k].id == id && reads_force(function, &m->forces[k])) {
+            *force = 1, *index = k;
+            return 0;
+        }
+    switch (function) {
+    case HX_FN_SFORCE: snprintf(what, size, "Force_Scalar_TwoBody (SFORCE) %d in the model", id); break;
+    case HX_FN_FIELD: snprintf(what, size, "Force_Field (FIELD) %d in the model", id); break;
+    case HX_FN_BUSHING:
+        snprintf(what, size, "BUSHING %d: the harness simulates no built-in bushing (a user"
+                 " bushing is a Force_Vector_TwoBody, read by GFORCE, or a Force_Field, read by"
+                 " FIELD)", id);
+        break;
+    default:
+        snprintf(what, size, "Force_Vector_TwoBody or Force_Vector_OneBody (VFORCE, VTORQUE,"
+                 " GFORCE) %d in the model", id);
+        break;
+    }
+    return -1;
+}
+
+int hx_marker_unsummed(const hx_model *m, int i, int j, char *what, size_t size)
+{
+    for (int k = 0; k < m->nstateeqns; ++k) {
+        const hx_stateeqn *s = &m->stateeqns[k];
+        if (hx_marker_between(s->i_marker, s->j_marker, i, j)) {
+            snprintf(what, size, "Force_StateEqn %d (line %d)", s->id, s->line);
+            return 1;
+        }
+    }
+    for (int k = 0; k < m->ncouplers; ++k) {
+        const hx_coupler *c = &m->couplers[k];
+        for (int n = 0; n < c->njoints; ++n) {
+            const hx_joint *jt = &m->joints[c->joint[n]];
+            if (hx_marker_between(jt->i_marker, jt->j_marker, i, j)) {
+                snprintf(what, size, "Constraint_Coupler %d (line %d)", c->id, c->line);
+                return 1;
+            }
+        }
+    }
+    for (int k = 0; k < m->nroutines; ++k) {
+        const hx_routine *r = &m->routines[k];
+        if (r->kind != HX_ROUTINE_MOTION || r->joint < 0)
+            continue;
+        const hx_joint *jt = &m->joints[r->joint];
+        if (hx_marker_between(jt->i_marker, jt->j_marker, i, j)) {
+            snprintf(what, size, "Motion_Joint %d (line %d)", r->id, r->line);
+            return 1;
+        }
+    }
+    for (int k = 0; k < m->ngcons && j < 0; ++k)
+        if (m->gcons[k].i_marker == i) {
+            snprintf(what, size, "Constraint_General %d (line %d)", m->gcons[k].id,
+                     m->gcons[k].line);
+            return 1;
+        }
+    return 0;
+}
