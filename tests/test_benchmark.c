@@ -297,7 +297,7 @@ static void outputs_land_on_the_end_time(void **state)
     (void)state;
     /* many output intervals whose sum is not exactly the end time */
     for (double rtol = 1e-3; rtol >= 1e-12; rtol /= 10.0) {
-        hx_ode ode = {1, 0, 0, 0, decay, NULL, NULL, NULL, NULL, NULL};
+        hx_ode ode = {1, 0, 0, 0, decay, NULL, NULL, NULL, NULL, NULL, NULL};
         hx_integrator_options o;
         hx_integrator_defaults(&o);
         o.method = HX_METHOD_DOPRI5;

@@ -41,8 +41,8 @@ static double block_rate(const hx_dynamics *d, int body, const double *g, const 
     return s;
 }
 
-static int general_joints(const hx_dynamics *d, hx_dynamics_data *dd, int k, double t,
-                          const double *y, coupled_joints *cj)
+static void general_joints(const hx_dynamics *d, const hx_dynamics_data *dd, int k,
+                           const double *y, coupled_joints *cj)
 {
     const hx_model *m = d->m;
     const hx_coupler *c = &m->couplers[k];
@@ -50,17 +50,13 @@ static int general_joints(const hx_dynamics *d, hx_dynamics_data *dd, int k, dou
         const hx_joint *j = &m->joints[c->joint[i]];
         const int bi = m->markers[j->i_marker].body, bj = m->markers[j->j_marker].body;
         memset(cj->row[i], 0, sizeof cj->row[i]);
-        if (hx_joint_coordinate_at(d, c->joint[i], c->freedom[i], y, &cj->disp[i], cj->row[i],
-                                   &cj->conv[i]) != 0)
-            return hx_dynamics_fail(dd, "Constraint_Coupler %d: joint %d turned more than %g"
-                                    " rad from where the model places it at t = %g (a coupler"
-                                    " unwraps a rotation between two bodies within that)",
-                                    c->id, j->id, HX_JOINT_COORDINATE_TURN, t);
+        /* a rotation unwrapped against the angle dd holds (joint_turns.h) */
+        hx_joint_coordinate_near(d, c->joint[i], c->freedom[i], y, dd->turn[c->joint[i]],
+                                 &cj->disp[i], cj->row[i], &cj->conv[i]);
         cj->rate[i] = block_rate(d, bi, cj->row[i], y);
         if (!j->reduced)
             cj->rate[i] += block_rate(d, bj, cj->row[i] + 6, y);
     }
-    return 0;
 }
 
 /* phi, dphi/dM and the velocity term qdot^T H qdot of coupler k (cj: a
@@ -196,8 +192,8 @@ int hx_coordinate_rows_coupler(const hx_dynamics *d, hx_dynamics_data *dd, int k
         return 0;
     }
     coupled_joints cj;
-    if (general_joints(d, dd, k, t, y, &cj) != 0 ||
-        coupler_terms(d, dd, k, t, y, phi, grad, gamma ? &term : NULL, &cj) < 0)
+    general_joints(d, dd, k, y, &cj);
+    if (coupler_terms(d, dd, k, t, y, phi, grad, gamma ? &term : NULL, &cj) < 0)
         return -1;
     general_row(d, k, grad, &cj, G);
     /* phi_ddot = sum grad_i (G_i udot + c_i) + qdot^T H qdot */
@@ -214,8 +210,9 @@ double hx_coordinate_rows_force(const hx_dynamics *d, hx_dynamics_data *dd, doub
     double phi, grad[3];
     coupled_joints cj;
     const int general = d->coupler_general[coupler];
-    if ((general && general_joints(d, dd, coupler, t, y, &cj) != 0) ||
-        coupler_terms(d, dd, coupler, t, y, &phi, grad, NULL, general ? &cj : NULL) < 0)
+    if (general)
+        general_joints(d, dd, coupler, y, &cj);
+    if (coupler_terms(d, dd, coupler, t, y, &phi, grad, NULL, general ? &cj : NULL) < 0)
         return NAN;
     return grad[joint] * dd->lambda[coupler];
 }

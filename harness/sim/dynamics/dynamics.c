@@ -7,6 +7,7 @@
 #include "sim/dynamics/redundancy.h"
 #include "sim/dynamics/element_forces.h"
 #include "sim/dynamics/failure.h"
+#include "sim/dynamics/joint_turns.h"
 #include "sim/dynamics/loads.h"
 #include "sim/dynamics/routines.h"
 #include "sim/dynamics/stateeqns.h"
@@ -56,7 +57,7 @@ static int init_parts(hx_dynamics *d, hx_session *s, hx_message *msg)
         return hx_fail(msg, "out of memory");
     memcpy(d->gravity, m->gravity, 3 * sizeof(double));
     if (hx_bodies_init(d, msg) != 0 || hx_constraints_init(d, msg) != 0 ||
-        hx_stateeqns_init(d, msg) != 0 ||
+        hx_joint_turns_init(d, msg) != 0 || hx_stateeqns_init(d, msg) != 0 ||
         hx_routines_init(d, msg) != 0)
         return -1;
     d->load_work = d->diff_offset + d->ndiffs;
@@ -108,6 +109,8 @@ void hx_dynamics_free(hx_dynamics *d)
     free(d->world_aligned);
     free(d->load_off);
     free(d->gravity);
+    free(d->turn_joint);
+    free(d->turn_coupler);
     hx_constraints_free(d);
     hx_stateeqns_free(d);
     hx_routines_free(d);
@@ -127,16 +130,20 @@ int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message
     dd->stateeqn_outputs = calloc(6 * (size_t)m->nstateeqns + 1, sizeof(double));
     dd->free_accelerations = calloc(nu + 1, sizeof(double));
     dd->lambda = calloc((size_t)d->nrows + 1, sizeof(double));
+    dd->turn = calloc((size_t)m->njoints + 1, sizeof(double));
+    dd->turn_rate = calloc((size_t)m->njoints + 1, sizeof(double));
     dd->constraint_work = calloc(hx_constraints_work_size(d), sizeof(double));
     dd->stateeqn_work = malloc(sizeof(double) * (size_t)hx_stateeqns_work_size(d));
     if (!dd->force || !dd->torque || !dd->element_outputs || !dd->element_load ||
         !dd->element_partials || !dd->stateeqn_outputs || !dd->free_accelerations ||
-        !dd->lambda || !dd->constraint_work || !dd->stateeqn_work ||
+        !dd->lambda || !dd->turn || !dd->turn_rate || !dd->constraint_work ||
+        !dd->stateeqn_work ||
         hx_frames_clone(&dd->frames, &d->s->frames) != 0 ||
         hx_frames_clone(&dd->moved, &d->s->frames) != 0) {
         hx_dynamics_data_free(dd);
         return hx_fail(msg, "out of memory");
     }
+    hx_joint_turns_placed(d, dd);
     return 0;
 }
 
@@ -150,6 +157,8 @@ void hx_dynamics_data_free(hx_dynamics_data *dd)
     free(dd->stateeqn_outputs);
     free(dd->free_accelerations);
     free(dd->lambda);
+    free(dd->turn);
+    free(dd->turn_rate);
     free(dd->constraint_work);
     free(dd->stateeqn_work);
     hx_frames_free(&dd->frames);

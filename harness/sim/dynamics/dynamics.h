@@ -23,7 +23,9 @@
  * velocity) or hinged/slid to ground by their only joint (the joint coordinate
  * AZ(I,J) or DZ(I,J,J), unwrapped, and its rate). Every other joint and the
  * couplers are rows of one constraint system with a Lagrange multiplier each,
- * with projection onto the constraints after a step (constraints.h).
+ * with projection onto the constraints after a step (constraints.h); the
+ * couplers' rotations between moving bodies are unwrapped against the angles
+ * a data holds, which a run moves at its accepted steps (joint_turns.h).
  *
  * State layout y: [positions (nq) | velocities (nu) | the Force_StateEqn
  * elements' states (nstates, element by element in the model's order) | the
@@ -87,6 +89,9 @@ typedef struct hx_dynamics {
                                    * Constraint_General (expression_rows.h) */
     int row_values;               /* values a row of G keeps (hx_constraint_row) */
     unsigned char *coupler_general; /* per coupler: 1 when a joint of it is not reduced */
+    int nturns;                   /* the rotations couplers take between two moving bodies
+                                   * (joint_turns.h): */
+    int *turn_joint, *turn_coupler; /* per such rotation: its joint, the first coupler on it */
     hx_constraint_row *rows;
     int nactive, *active;         /* the rows the solves take, ascending (all of them but
                                    * the redundant rows found at set-up: redundancy.h) */
@@ -132,6 +137,10 @@ typedef struct hx_dynamics_data {
     double *free_accelerations;   /* nu: the bodies' udot before the couplers act */
     /* constraints */
     double *lambda;               /* per constraint row (the couplers' first) */
+    double *turn, *turn_rate;     /* per joint: the angle its rotation is unwrapped against
+                                   * and its rate there (joint_turns.h): the model's
+                                   * placement, and in a run the last accepted step's */
+    double turn_time;             /* the time of those */
     /* the stages' scratch */
     double *constraint_work;      /* G and M^-1 G^T (12 a row), G M^-1 G^T, vectors */
     double *stateeqn_work;        /* one Force_StateEqn's inputs and its call's copies */

@@ -155,19 +155,21 @@ int hx_joint_coordinate_near(const hx_dynamics *d, int joint, char freedom, cons
     return 0;
 }
 
-int hx_joint_coordinate_at(const hx_dynamics *d, int joint, char freedom, const double *y,
-                           double *value, double G[12], double *c)
+double hx_joint_coordinate_placed(const hx_dynamics *d, int joint)
 {
-    if (raw_coordinate(d, joint, freedom, y, value, G, c) != 0 || freedom != 'R')
-        return 0;
     const hx_model *m = d->m;
     const hx_joint *j = &m->joints[joint];
+    if (j->type != HX_JOINT_REVOLUTE && j->type != HX_JOINT_CYLINDRICAL)
+        return 0.0;
     const hx_marker *mi = &m->markers[j->i_marker], *mj = &m->markers[j->j_marker];
-    /* unwrapped against the angle where the model places the joint */
     double xi[3], xj[3], yj[3];
     column(xi, mi->R0, 0), column(xj, mj->R0, 0), column(yj, mj->R0, 1);
-    const double start = atan2(v3_dot(xi, yj), v3_dot(xi, xj));
-    const double turn = remainder(*value - start, TWO_PI);
-    *value = start + turn;
-    return fabs(turn) > HX_JOINT_COORDINATE_TURN ? -1 : 0;
+    return atan2(v3_dot(xi, yj), v3_dot(xi, xj));
+}
+
+void hx_joint_coordinate_at(const hx_dynamics *d, int joint, char freedom, const double *y,
+                            double *value, double G[12], double *c)
+{
+    hx_joint_coordinate_near(d, joint, freedom, y, hx_joint_coordinate_placed(d, joint), value,
+                             G, c);
 }

@@ -28,21 +28,21 @@ int hx_joint_coordinate_allowed(enum hx_joint_type type, char freedom);
 void hx_joint_coordinate_sides(char freedom, const hx_joint_side *i, const hx_joint_side *j,
                                double *value, double G[12], double *c);
 
-/* How far a rotation taken between bodies may turn from where the model
- * places it (below pi: the angle is unwrapped against its initial value). */
-#define HX_JOINT_COORDINATE_TURN 3.0
+/* The rotation AZ(I,J) of joint `joint` where the model places it (in
+ * (-pi, pi]); 0 for a joint type without a rotation. */
+double hx_joint_coordinate_placed(const hx_dynamics *d, int joint);
 
 /* Joint `joint`'s coordinate at y in freedom: a reduced joint's is y's
  * coordinate (G = {1} on its body's velocity, c = 0); any other's from its
  * markers, G in the bodies' velocities (a free body's omega in body axes:
  * I's at G[0..5], J's at G[6..11], a ground side's zero), a rotation
- * unwrapped against its value in the model's placement. Returns 0, or -1
- * when a rotation turned more than HX_JOINT_COORDINATE_TURN from there. */
-int hx_joint_coordinate_at(const hx_dynamics *d, int joint, char freedom, const double *y,
-                           double *value, double G[12], double *c);
-/* The same with a rotation unwrapped against `near` (a motion's value: the
- * coordinate follows it), without a limit; returns 0. */
+ * unwrapped against `near` (within pi of it: a motion's value, or the angle
+ * an evaluation's data holds for the joint, joint_turns.h); returns 0. */
 int hx_joint_coordinate_near(const hx_dynamics *d, int joint, char freedom, const double *y,
                              double near, double *value, double G[12], double *c);
+/* The same with a rotation unwrapped against where the model places the
+ * joint (hx_joint_coordinate_placed). */
+void hx_joint_coordinate_at(const hx_dynamics *d, int joint, char freedom, const double *y,
+                            double *value, double G[12], double *c);
 
 #endif

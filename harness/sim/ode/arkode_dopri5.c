@@ -18,9 +18,14 @@ static int project_step(double t, N_Vector y, void *user_data)
     return o->project(o->ctx, t, NV_DATA_S(y)) < 0 ? -1 : 0;
 }
 
-static int advance(void *solver, double tout, N_Vector y, double *t, int one_step)
+static int advance(void *solver, double tout, N_Vector y, double *t)
 {
-    return ERKStepEvolve(solver, tout, y, t, one_step ? ARK_ONE_STEP : ARK_NORMAL);
+    return ERKStepEvolve(solver, tout, y, t, ARK_ONE_STEP);
+}
+
+static int interpolate(void *solver, double t, N_Vector y)
+{
+    return ERKStepGetDky(solver, t, 0, y);
 }
 
 static hx_status status_of(int flag)
@@ -65,7 +70,7 @@ hx_status hx_integrate_arkode_dopri5(hx_integration *r, double t0, double *y)
         ok = ERKStepSetPostprocessStepFn(solver, project_step) == ARK_SUCCESS;
     hx_status status = HX_INTEGRATION_FAILED;
     if (ok)
-        status = hx_sundials_drive(&s, solver, advance, status_of, steps_of);
+        status = hx_sundials_drive(&s, solver, advance, interpolate, status_of, steps_of);
     if (solver != NULL) {
         long steps = 0, fails = 0;
         double last = 0.0;

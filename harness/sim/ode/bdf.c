@@ -157,10 +157,14 @@ static int projection(double t, N_Vector ycur, N_Vector corr, double eps, N_Vect
     return hx_sundials_correction(user_data, t, NV_DATA_S(ycur), NV_DATA_S(corr));
 }
 
-static int advance(void *solver, double tout, N_Vector y, double *t, int one_step)
+static int advance(void *solver, double tout, N_Vector y, double *t)
 {
-    const int flag = CVode(solver, tout, y, t, one_step ? CV_ONE_STEP : CV_NORMAL);
-    return flag;
+    return CVode(solver, tout, y, t, CV_ONE_STEP);
+}
+
+static int interpolate(void *solver, double t, N_Vector y)
+{
+    return CVodeGetDky(solver, t, 0, y);
 }
 
 static hx_status status_of(int flag)
@@ -292,7 +296,7 @@ hx_status hx_integrate_bdf(hx_integration *r, double t0, double *y)
              CVodeSetProjErrEst(solver, SUNFALSE) == CV_SUCCESS;
     hx_status status = HX_INTEGRATION_FAILED;
     if (ok)
-        status = hx_sundials_drive(&c.s, solver, advance, status_of, steps_of);
+        status = hx_sundials_drive(&c.s, solver, advance, interpolate, status_of, steps_of);
     if (solver != NULL)
         collect_stats(solver, r->stats);
     hx_integrator_stats *st = r->stats;

@@ -225,6 +225,10 @@ hx_status hx_integrate_dopri5(hx_integration *r, double t0, double *y)
         }
         if (status != HX_INTEGRATION_OK)
             break;
+        if (o->accept != NULL && o->accept(o->ctx, t, y) != 0) {
+            status = HX_INTEGRATION_FAILED;
+            break;
+        }
         if (opt->output != NULL && opt->output_interval <= 0.0)
             stop = opt->output(o->ctx, t, y) != 0;
         if (stop) {

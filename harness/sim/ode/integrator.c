@@ -160,7 +160,8 @@ static hx_status integrate_fixed(hx_integration *r, double t0, double *y)
             break;
         }
         const double t1 = k + 1 == nsteps ? opt->t_end : t0 + (double)(k + 1) * h;
-        if (o->project != NULL && o->project(o->ctx, t1, y) < 0) {
+        if ((o->project != NULL && o->project(o->ctx, t1, y) < 0) ||
+            (o->accept != NULL && o->accept(o->ctx, t1, y) != 0)) {
             status = HX_INTEGRATION_FAILED;
             break;
         }

@@ -9,7 +9,11 @@
  *
  * The state is [positions (nq) | velocities (nu) | other (n - nq - nu)];
  * symplectic Euler needs advance() to move positions with the new velocities.
- * project() (optional) runs after every accepted step.
+ * project() (optional) runs after every accepted step (and on DOPRI5's and
+ * the SUNDIALS integrators' interpolated outputs, and inside CVODE's steps);
+ * accept() (optional) runs after every accepted step alone, on its
+ * projected state: never on a stage, a Newton iterate, a rejected step or an
+ * interpolated output.
  */
 #ifndef HX_SIM_ODE_INTEGRATOR_H
 #define HX_SIM_ODE_INTEGRATOR_H
@@ -19,6 +23,8 @@
 typedef int hx_rhs_fn(void *ctx, double t, const double *y, double *ydot);
 /* Returns 0, 1 when it changed the state (DOPRI5 then re-evaluates f), or -1. */
 typedef int hx_project_fn(void *ctx, double t, double *y);
+/* After an accepted step at t: 0, or -1 (the integration stops, failed). */
+typedef int hx_accept_fn(void *ctx, double t, const double *y);
 typedef void hx_advance_fn(void *ctx, double *y, double h);
 /* The Newton matrix's J = df/dy at (t, y), given fy = f(t, y) as the
  * integrator has it: its values in the order of the ode's sparsity (or,
@@ -39,6 +45,7 @@ typedef struct hx_ode {
     hx_jacobian_fn *jacobian;    /* BDF's analytic Newton matrix (NULL: differences) */
     const hx_sparsity *sparsity; /* J's nonzeros (NULL: dense): KLU, and differences by
                                   * column groups */
+    hx_accept_fn *accept;        /* may be NULL */
 } hx_ode;
 
 typedef enum hx_method {

@@ -70,6 +70,7 @@ void hx_sundials_message(int error_code, const char *module, const char *functio
 }
 
 hx_status hx_sundials_drive(hx_sundials *s, void *solver, hx_sundials_advance_fn *advance,
+                            hx_sundials_interpolate_fn *interpolate,
                             hx_sundials_status_fn *status_of, long (*steps_of)(void *solver))
 {
     hx_integration *r = s->r;
@@ -77,11 +78,11 @@ hx_status hx_sundials_drive(hx_sundials *s, void *solver, hx_sundials_advance_fn
     const hx_integrator_options *opt = r->opt;
     double *y = NV_DATA_S(s->y);
     const int at_intervals = opt->output != NULL && opt->output_interval > 0.0;
-    const int every_step = opt->output != NULL && !at_intervals;
     double t = r->t0;
     while (t < opt->t_end) {
-        const double tout = at_intervals ? hx_integration_next_output(r) : opt->t_end;
-        const int flag = advance(solver, tout, s->y, &t, every_step);
+        /* one step at a time (the solvers stop at the end time): y is the
+         * accepted step's state, the outputs are interpolated from the solver's */
+        const int flag = advance(solver, opt->t_end, s->y, &t);
         r->stats->t_reached = t;
         if (flag < 0)
             return status_of(flag);
@@ -89,16 +90,29 @@ hx_status hx_sundials_drive(hx_sundials *s, void *solver, hx_sundials_advance_fn
             return HX_INTEGRATION_TOO_MANY_STEPS;
         if (!hx_integration_finite_and_bounded(r, y))
             return HX_INTEGRATION_UNSTABLE;
+        if (o->accept != NULL && o->accept(o->ctx, t, y) != 0)
+            return HX_INTEGRATION_FAILED;
         if (opt->output == NULL)
             continue;
-        if (at_intervals)
+        if (!at_intervals) {
+            if (o->project != NULL && o->project(o->ctx, t, y) < 0)
+                return HX_INTEGRATION_FAILED;
+            if (opt->output(o->ctx, t, y) != 0)
+                return HX_INTEGRATION_STOPPED;
+            continue;
+        }
+        double to;
+        while ((to = hx_integration_next_output(r)) <= t) {
+            /* an interpolated state: projected like DOPRI5's dense output (the
+             * solver keeps its own) */
+            if (interpolate(solver, to, s->y) != 0)
+                return HX_INTEGRATION_FAILED;
             r->outputs++;
-        /* an interpolated state: projected like DOPRI5's dense output (the
-         * solver keeps its own) */
-        if (o->project != NULL && o->project(o->ctx, t, y) < 0)
-            return HX_INTEGRATION_FAILED;
-        if (opt->output(o->ctx, t, y) != 0)
-            return HX_INTEGRATION_STOPPED;
+            if (o->project != NULL && o->project(o->ctx, to, y) < 0)
+                return HX_INTEGRATION_FAILED;
+            if (opt->output(o->ctx, to, y) != 0)
+                return HX_INTEGRATION_STOPPED;
+        }
     }
     return HX_INTEGRATION_OK;
 }

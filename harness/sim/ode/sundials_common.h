@@ -37,16 +37,21 @@ int hx_sundials_correction(hx_sundials *s, double t, const double *y, double *co
 void hx_sundials_message(int error_code, const char *module, const char *function, char *msg,
                          void *user_data);
 
-/* Advances the solver to tout (one_step: by one step at most), its state
- * into s->y, the time reached into *t; returns the solver's flag. */
-typedef int hx_sundials_advance_fn(void *solver, double tout, N_Vector y, double *t, int one_step);
+/* Advances the solver by one step towards tout, its state into s->y, the
+ * time reached into *t; returns the solver's flag. */
+typedef int hx_sundials_advance_fn(void *solver, double tout, N_Vector y, double *t);
+/* The solver's interpolated state at t (within its last step) into y; 0 or
+ * the solver's flag. */
+typedef int hx_sundials_interpolate_fn(void *solver, double t, N_Vector y);
 /* The status of a solver flag (negative: a failure). */
 typedef hx_status hx_sundials_status_fn(int flag);
 
-/* Runs the solver to the end time, calling the output at the output times
- * (projected copies of the solver's interpolated states) or after every
- * step; the state at the end is left in the caller's y. */
+/* Runs the solver to the end time one step at a time, calling the ode's
+ * accept after every step and the output at the output times (projected
+ * copies of the solver's interpolated states) or after every step; the
+ * state at the end is left in the caller's y. */
 hx_status hx_sundials_drive(hx_sundials *s, void *solver, hx_sundials_advance_fn *advance,
+                            hx_sundials_interpolate_fn *interpolate,
                             hx_sundials_status_fn *status_of, long (*steps_of)(void *solver));
 
 #endif

@@ -9,6 +9,7 @@
 #include "base/clock.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraints.h"
+#include "sim/dynamics/joint_turns.h"
 #include "sim/jacobian/jacobian.h"
 #include "sim/simulation/equilibrium.h"
 
@@ -35,6 +36,32 @@ static int project(void *ctx, double t, double *y)
     if (hx_constraints_project(rc->d, rc->dd, t, y) != 0)
         return -1;
     return rc->d->nrows > 0 ? 1 : 0;
+}
+
+/* The Jacobian's data follows the run's turns (BDF's Newton matrices are
+ * built at the states the run's steps reach). */
+static void follow_turns(run_context *rc)
+{
+    if (rc->opt->integration.method == HX_METHOD_BDF)
+        hx_joint_turns_copy(rc->d, &rc->jacobian->dd, rc->dd);
+}
+
+/* An accepted step: the rotations between moving bodies counted from it
+ * (joint_turns.h). */
+static int accept(void *ctx, double t, const double *y)
+{
+    run_context *rc = ctx;
+    if (hx_joint_turns_accept(rc->d, rc->dd, t, y) != 0)
+        return -1;
+    follow_turns(rc);
+    return 0;
+}
+
+/* The turns held at (t, y): the run's start, or a static equilibrium's state. */
+static void start_turns(run_context *rc, double t, const double *y)
+{
+    hx_joint_turns_start(rc->d, rc->dd, t, y);
+    follow_turns(rc);
 }
 
 static void advance(void *ctx, double *y, double h)
@@ -134,6 +161,7 @@ static int find_equilibrium(run_context *rc, double t, double *y)
         return -1;
     }
     result->statics++;
+    start_turns(rc, t, y);
     result->energy0 = hx_energy_of(rc->d, rc->dd, t, y);
     return 0;
 }
@@ -151,6 +179,7 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
         result->status = HX_INTEGRATION_FAILED;
         return -1;
     }
+    start_turns(rc, 0.0, y);
     if (nsegments > 0)
         switch_segment(rc, &segments[0]);
     if ((opt->static_start || (nsegments > 0 && segments[0].equilibrium)) &&
@@ -171,7 +200,7 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
     if (opt->observer != NULL)
         opt->observer(opt->observer_ctx, d, dd, 0.0, y);
     hx_ode ode = {d->n, d->nq, d->nu, 2 /* the work accumulators */, rhs, project, advance, rc,
-                  analytic ? jacobian : NULL, bdf ? &rc->jacobian->pattern : NULL};
+                  analytic ? jacobian : NULL, bdf ? &rc->jacobian->pattern : NULL, accept};
     const double start = hx_seconds();
     double t = 0.0;
     for (int k = 0; k < nsegments; ++k) {

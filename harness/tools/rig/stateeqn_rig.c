@@ -127,7 +127,7 @@ static int row(void *ctx, double t, const double *x)
 static int integrate_states(state_rig *sr, double *x)
 {
     hx_rig *r = sr->r;
-    hx_ode ode = {sr->f->nstate, 0, 0, 0, rates, NULL, NULL, sr, rate_jacobian, NULL};
+    hx_ode ode = {sr->f->nstate, 0, 0, 0, rates, NULL, NULL, sr, rate_jacobian, NULL, NULL};
     hx_integrator_options opt;
     hx_integrator_defaults(&opt);
     opt.method = HX_METHOD_BDF;
