@@ -215,13 +215,15 @@ static void measure_slopes_against_differences(void **state)
         }
         const hx_frame *const fp[4] = {&f[0], &f[1], &f[2], &f[3]};
         /* the named measures, then ORIENT's, every system and component */
-        const int last = HX_MEASURE_ORIENT + hx_orientation_code(HX_ORIENTATION_SYSTEMS, 9);
-        for (int k = 0; k <= last; ++k) {
-            if (k >= HX_MEASURE_ORIENT) {
-                const int code = k - HX_MEASURE_ORIENT;
-                if (code % 9 >= hx_orientation_system_at(code / 9 + 1)->components)
-                    continue;
-            }
+        hx_measure measures[HX_MEASURE_COUNT + HX_ORIENTATION_SYSTEMS * HX_ORIENTATION_COMPONENTS];
+        int count = 0;
+        for (int k = 0; k < HX_MEASURE_COUNT; ++k)
+            measures[count++] = (hx_measure)k;
+        for (int system = 1; system <= HX_ORIENTATION_SYSTEMS; ++system)
+            for (int c = 1; c <= hx_orientation_system_at(system)->components; ++c)
+                measures[count++] = hx_measure_orient(system, c);
+        for (int n = 0; n < count; ++n) {
+            const hx_measure k = measures[n];
             const double h = 1e-6;
             hx_frame up[4], down[4];
             for (int a = 0; a < 4; ++a) {
@@ -236,7 +238,7 @@ static void measure_slopes_against_differences(void **state)
             const double error = fabs(slope - difference) / fmax(1.0, fabs(difference));
             if (error > 1e-6)
                 fail_msg("%s (measure %d), trial %d: slope %.12g, differences %.12g",
-                         hx_measure_name((hx_measure)k), k, trial, slope, difference);
+                         hx_measure_name(k), (int)k, trial, slope, difference);
             worst = fmax(worst, error);
         }
     }

@@ -279,6 +279,8 @@ static const struct {
      {"bad.xml:5:", "Post_Request 5 expr2:", ""}},
     {"<Post_Request id=\"5\" type=\"EXPRESSION\" expr3=\"DX(20, 96)\"/>",
      {"bad.xml:5:1: Post_Request 5 expr3:", "no Reference_Marker 96", ""}},
+    {"<Post_Request id=\"5\" type=\"EXPRESSION\" expr2=\"ORIENT(31, 1, 20)\"/>",
+     {"bad.xml:5:8: Post_Request 5 expr2:", "ORIENT: system (argument 1) is 31", ""}},
     {"<Post_Request id=\"5\" type=\"DISPLACEMENT\" i_marker_id=\"20\"/>",
      {"bad.xml:5:", "Post_Request 5: type \"DISPLACEMENT\": expected MARKER_DISPLACEMENT", ""}},
     {"<Post_Request id=\"5\" expr1=\"1\"/>", {"bad.xml:5:", "Post_Request 5:", "type is missing"}},
