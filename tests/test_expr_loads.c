@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/orientation_systems.h"
 #include "base/vecmath.h"
 #include "model_runs.h"
 #include "sim/dynamics/loads.h"
@@ -186,7 +187,8 @@ static void moved_frame(const hx_frame *f, const hx_motion *mo, double s, hx_fra
     v3_axpy(out->w, s, mo->dw);
 }
 
-/* Every measure's slope (measure_slope.h) against central differences of
+/* Every measure's slope (measure_slope.h), ORIENT's in every system and
+ * component among them, against central differences of
  * its value (hx_measure_value) along the same motion, at 40 sets of four
  * frames and motions drawn at random (every position, axis, velocity and
  * angular velocity varies; a frame left still now and then, as the world's
@@ -212,7 +214,16 @@ static void measure_slopes_against_differences(void **state)
             m[a] = (trial + a) % 5 == 4 ? NULL : &mo[a];
         }
         const hx_frame *const fp[4] = {&f[0], &f[1], &f[2], &f[3]};
-        for (int k = 0; k < HX_MEASURE_COUNT; ++k) {
+        /* the named measures, then ORIENT's, every system and component */
+        hx_measure measures[HX_MEASURE_COUNT + HX_ORIENTATION_SYSTEMS * HX_ORIENTATION_COMPONENTS];
+        int count = 0;
+        for (int k = 0; k < HX_MEASURE_COUNT; ++k)
+            measures[count++] = (hx_measure)k;
+        for (int system = 1; system <= HX_ORIENTATION_SYSTEMS; ++system)
+            for (int c = 1; c <= hx_orientation_system_at(system)->components; ++c)
+                measures[count++] = hx_measure_orient(system, c);
+        for (int n = 0; n < count; ++n) {
+            const hx_measure k = measures[n];
             const double h = 1e-6;
             hx_frame up[4], down[4];
             for (int a = 0; a < 4; ++a) {
@@ -226,8 +237,8 @@ static void measure_slopes_against_differences(void **state)
             const double slope = hx_measure_slope((hx_measure)k, fp, m);
             const double error = fabs(slope - difference) / fmax(1.0, fabs(difference));
             if (error > 1e-6)
-                fail_msg("%s, trial %d: slope %.12g, differences %.12g",
-                         hx_measure_name((hx_measure)k), trial, slope, difference);
+                fail_msg("%s (measure %d), trial %d: slope %.12g, differences %.12g",
+                         hx_measure_name(k), (int)k, trial, slope, difference);
             worst = fmax(worst, error);
         }
     }
@@ -277,7 +288,11 @@ static void exact_load_blocks_on_every_measure(void **state)
               " + DIF(1)*DX(20,30,21)\"/>\n"
               "<Force_Scalar_TwoBody id=\"11\" type=\"FORCE\" i_marker_id=\"30\""
               " j_marker_id=\"21\" is_action_only=\"TRUE\""
-              " val_expression=\"-10*(DM(30,21) - 3) - 0.5*VR(30,21)\"/>\n" TAIL,
+              " val_expression=\"-10*(DM(30,21) - 3) - 0.5*VR(30,21)\"/>\n"
+              "<Force_Scalar_TwoBody id=\"12\" type=\"TORQUE\" i_marker_id=\"21\""
+              " j_marker_id=\"31\" val_expression=\"-2*ORIENT(2,1,21,31) + ORIENT(15,3,21,31)"
+              " - 3*ORIENT(27,2,21,31) + ORIENT(28,3,21) - ORIENT(29,6,21,31)"
+              " + ORIENT(9,2,31,21)*ORIENT(26,2,21,31) + ORIENT(25,1,21,31)\"/>\n" TAIL,
               &y, &ydot);
     hx_simulation_result r = simulate(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-10, 0.2, y);
     assert_int_equal(r.status, HX_INTEGRATION_OK);

@@ -327,8 +327,8 @@ static void link_errors_name_the_id(void **state)
     assert_contains(expr_link_error(&fixture, "ACCX(10)", &msg),
                     "m.xml:10:5: ACCX(10): an acceleration is known only once the forces are",
                     "algebraic loop");
-    assert_contains(expr_link_error(&fixture, "ORIENT(1, 1, 10)", &msg),
-                    "m.xml:10:5: ORIENT is not answered by the harness yet");
+    assert_contains(expr_link_error(&fixture, "FM(10)", &msg),
+                    "m.xml:10:5: FM is not answered by the harness yet");
 }
 
 /* Evaluation faults name the op, its place and the time; the value at

@@ -42,11 +42,12 @@ static const char *two_bodies(const char *gravity, const char *more)
 }
 
 /* A displacement between the bodies, one with K on a moving body, ground
- * and time; rotations (AZ analytic, PSI and INCANG by differences of the measure). */
+ * and time; rotations (AZ analytic, PSI, INCANG and ORIENT's Euler parameter
+ * by differences of the measure). */
 #define MIXED_GCONS                                                                          \
     "<Constraint_General id=\"1\" expr=\"DM(21,31) - 0.7\"/>\n"                              \
     "<Constraint_General id=\"2\" expr=\"DX(21,31,30) + 0.3*DY(20,11)**2 - 0.05*SIN(TIME)\"/>\n" \
-    "<Constraint_General id=\"3\" expr=\"0.5*AZ(21,30) + 0.2*PSI(31,20) + 0.1*INCANG(20,31,21) + DZ(20)*COS(2*TIME)\"/>\n"
+    "<Constraint_General id=\"3\" expr=\"0.5*AZ(21,30) + 0.2*PSI(31,20) + 0.1*INCANG(20,31,21) + DZ(20)*COS(2*TIME) + 0.3*ORIENT(27,2,21,30)\"/>\n"
 
 static void random_state(const hx_dynamics *d, double *y)
 {

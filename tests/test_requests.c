@@ -279,6 +279,8 @@ static const struct {
      {"bad.xml:5:", "Post_Request 5 expr2:", ""}},
     {"<Post_Request id=\"5\" type=\"EXPRESSION\" expr3=\"DX(20, 96)\"/>",
      {"bad.xml:5:1: Post_Request 5 expr3:", "no Reference_Marker 96", ""}},
+    {"<Post_Request id=\"5\" type=\"EXPRESSION\" expr2=\"ORIENT(31, 1, 20)\"/>",
+     {"bad.xml:5:8: Post_Request 5 expr2:", "ORIENT: system (argument 1) is 31", ""}},
     {"<Post_Request id=\"5\" type=\"DISPLACEMENT\" i_marker_id=\"20\"/>",
      {"bad.xml:5:", "Post_Request 5: type \"DISPLACEMENT\": expected MARKER_DISPLACEMENT", ""}},
     {"<Post_Request id=\"5\" expr1=\"1\"/>", {"bad.xml:5:", "Post_Request 5:", "type is missing"}},
@@ -287,15 +289,17 @@ static const struct {
      {"bad.xml:6:", "Post_Request 5 is defined twice (line 5)", ""}},
 };
 
-/* A request reading a function the harness does not answer yet (a
- * published dataset's ORIENT) is not written, with a warning naming its
- * place: the model is still read. */
+/* A request reading a function the harness does not answer yet (another
+ * element's force) is not written, with a warning naming its place: the
+ * model is still read. One reading ORIENT, as published datasets' requests
+ * do, is written. */
 static void test_unanswered_function_is_a_warning(void **state)
 {
     (void)state;
     static const char text[] = STATE_DATASET
         "REQUEST/4, DISPLACEMENT, I=20\n"
-        "REQUEST/5, F1=1\\F2=ORIENT(27,1,20,10)\n"
+        "REQUEST/5, F1=1\\F2=FX(20,10)\n"
+        "REQUEST/6, F2=ORIENT(27,1,20,10)\\F3=ORIENT(27,2,20,10)\n"
         "END\n";
     char path[512];
     snprintf(path, sizeof path, "%s/warned.txt", test_temp_dir());
@@ -305,8 +309,9 @@ static void test_unanswered_function_is_a_warning(void **state)
     hx_model *m = hx_model_parse(text, strlen(text), "orient.adm", warnings, &msg);
     if (m == NULL)
         fail_msg("%s", msg.text);
-    assert_int_equal(m->nrequests, 1);
+    assert_int_equal(m->nrequests, 2);
     assert_int_equal(m->requests[0].id, 4);
+    assert_int_equal(m->requests[1].id, 6);
     assert_int_equal(m->nwarnings, 1);
     assert_int_equal(m->nunsimulated, 0);
     char said[2048] = "";
@@ -315,7 +320,7 @@ static void test_unanswered_function_is_a_warning(void **state)
     said[n] = '\0';
     fclose(warnings);
     assert_contains(said, "orient.adm:8: warning: REQUEST/5 is not written: F2:",
-                    "orient.adm:8:20: ORIENT is not answered");
+                    "orient.adm:8:20: FX is not answered");
     hx_model_free(m);
 }
 

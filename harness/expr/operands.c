@@ -156,6 +156,9 @@ int hx_expr_operand_input(const hx_expr_program *p, const hx_expr_context *c, in
         for (int j = 0; j < 4; ++j)
             f[j] = hx_frames_marker(fr, in->index[j], &scratch[j]);
         *value = hx_measure_value((hx_measure)in->measure, f);
+        if (in->function == HX_FN_ORIENT && !isfinite(*value)) /* system 28, a half turn */
+            return fault_of(fault, HX_EXPR_FAULT_DOMAIN, "ORIENT", "I is turned half a turn"
+                            " from J, where the Rodrigues parameters are not defined", 0, 0.0);
         break;
     }
     case HX_EXPR_INPUT_VARVAL:

@@ -4,8 +4,13 @@
 #include <math.h>
 #include <string.h>
 
+#include "base/orientation_systems.h"
 #include "base/vecmath.h"
 #include "frames/measures.h"
+#include "model/expr/functions.h"
+
+/* the expressions' measures are numbered as their functions (model/expr/compile.c) */
+_Static_assert(HX_MEASURE_COUNT == HX_FN_WM + 1 - HX_FN_DX, "the measures follow DX .. WM");
 
 static const struct {
     const char *name;
@@ -25,9 +30,14 @@ static const struct {
     [HX_MEASURE_WM] = {"WM", 1, 2},
 };
 
+hx_measure hx_measure_orient(int system, int component)
+{
+    return (hx_measure)(HX_MEASURE_ORIENT + hx_orientation_code(system, component));
+}
+
 const char *hx_measure_name(hx_measure m)
 {
-    return table[m].name;
+    return m >= HX_MEASURE_ORIENT ? "ORIENT" : table[m].name;
 }
 
 int hx_measure_find(const char *name)
@@ -40,15 +50,43 @@ int hx_measure_find(const char *name)
 
 void hx_measure_markers(hx_measure m, int *least, int *most)
 {
-    *least = table[m].least, *most = table[m].most;
+    if (m >= HX_MEASURE_ORIENT)
+        *least = 1, *most = 2;
+    else
+        *least = table[m].least, *most = table[m].most;
 }
 
-/* The 3-2-1 angles of a rotation matrix, R = Rz(a0) Ry(a1) Rx(a2). */
-static void angles321(const double R[9], double a[3])
+/* ORIENT(system, component, I, J) of the rotation R of I relative to J
+ * (docs/interface.md §8.5). */
+static double orientation(int code, const double R[9])
 {
-    a[0] = atan2(R[3], R[0]);
-    a[1] = atan2(-R[6], sqrt(R[0] * R[0] + R[3] * R[3]));
-    a[2] = atan2(R[7], R[8]);
+    const int system = code / HX_ORIENTATION_COMPONENTS + 1;
+    const int k = code % HX_ORIENTATION_COMPONENTS; /* the component, from 0 */
+    const hx_orientation_system *s = hx_orientation_system_at(system);
+    double e[4];
+    switch (s->kind) {
+    case HX_ORIENTATION_BODY:
+        hx_euler_sequence(s->axes, R, e);
+        return e[k];
+    case HX_ORIENTATION_SPACE: { /* R_c(t3) R_b(t2) R_a(t1): body-fixed c-b-a of t3, t2, t1 */
+        const int reversed[3] = {s->axes[2], s->axes[1], s->axes[0]};
+        hx_euler_sequence(reversed, R, e);
+        return e[2 - k];
+    }
+    case HX_ORIENTATION_PROJECTION:
+        return hx_projection_angle(R, k);
+    case HX_ORIENTATION_YPR: /* as YAW, PITCH, ROLL: the pitch negated */
+        hx_euler321(R, e);
+        return k == 1 ? -e[1] : e[k];
+    case HX_ORIENTATION_PARAMETERS:
+        hx_euler_parameters(R, e);
+        return e[k];
+    case HX_ORIENTATION_RODRIGUES: /* none at a half turn: NaN, which the caller faults */
+        hx_euler_parameters(R, e);
+        return e[0] > 0.0 ? e[k + 1] / e[0] : NAN;
+    default: /* HX_ORIENTATION_COSINES: I's axis k / 3 on J's axis k % 3 */
+        return R[3 * (k % 3) + k / 3];
+    }
 }
 
 /* The velocity of I relative to J differentiated in L, in world axes. */
@@ -61,6 +99,10 @@ double hx_measure_value(hx_measure m, const hx_frame *const f[4])
 {
     const hx_frame *I = f[0], *J = f[1];
     double R[9], v[3], r[3], a[3];
+    if (m >= HX_MEASURE_ORIENT) {
+        hx_relative_rotation(I, J, R);
+        return orientation(m - HX_MEASURE_ORIENT, R);
+    }
     switch (m) {
     case HX_MEASURE_DX:
     case HX_MEASURE_DY:
@@ -84,7 +126,7 @@ double hx_measure_value(hx_measure m, const hx_frame *const f[4])
     case HX_MEASURE_PITCH:
     case HX_MEASURE_ROLL:
         hx_relative_rotation(I, J, R);
-        angles321(R, a);
+        hx_euler321(R, a);
         /* PITCH is the second angle negated, the automotive convention of the
          * vendors' PITCH (docs/interface.md §8.5) */
         return m == HX_MEASURE_PITCH ? -a[1] : a[m - HX_MEASURE_YAW];

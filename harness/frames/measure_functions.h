@@ -20,10 +20,17 @@ typedef enum hx_measure {
     HX_MEASURE_VM, HX_MEASURE_VR,                      /* (I[, J[, L]]) */
     HX_MEASURE_WX, HX_MEASURE_WY, HX_MEASURE_WZ,       /* (I[, J[, K]]) */
     HX_MEASURE_WM,                                     /* (I[, J]) */
-    HX_MEASURE_COUNT
+    HX_MEASURE_COUNT, /* the named measures, those c_sysfnc answers */
+    /* ORIENT(system, component, I[, J]) (base/orientation_systems.h): one
+     * measure per system and component, HX_MEASURE_ORIENT +
+     * hx_orientation_code(system, component), of the frames I and J */
+    HX_MEASURE_ORIENT = HX_MEASURE_COUNT
 } hx_measure;
 
-/* "DX" .. "WM" */
+/* ORIENT's measure for system and component (both checked by the caller). */
+hx_measure hx_measure_orient(int system, int component);
+
+/* "DX" .. "WM", "ORIENT" */
 const char *hx_measure_name(hx_measure m);
 /* The measure named (upper case, exactly), or -1. */
 int hx_measure_find(const char *name);

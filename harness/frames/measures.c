@@ -58,13 +58,67 @@ void hx_euler313(const double R[9], double e[3])
         e[2] = wrap(e[0] - atan2(R[3] + R[1], R[0] - R[4]));
 }
 
+void hx_euler321(const double R[9], double e[3])
+{
+    /* R = [[c_y c_b, ., .], [s_y c_b, ., .], [-s_b, c_b s_r, c_b c_r]]; and
+     *   R01 - R12 = (1 + s_b) sin(r - y),  R11 + R02 = (1 + s_b) cos(r - y),
+     *   R01 + R12 = (s_b - 1) sin(r + y),  R11 - R02 = (1 - s_b) cos(r + y) */
+    const double c = sqrt(R[0] * R[0] + R[3] * R[3]);
+    const int up = R[6] <= 0.0; /* b >= 0 */
+    const double defined = up ? atan2(R[1] - R[5], R[4] + R[2]) /* r - y */
+                              : atan2(-(R[1] + R[5]), R[4] - R[2]); /* r + y */
+    e[1] = atan2(-R[6], c);
+    e[0] = c > 0.0 ? atan2(R[3], R[0]) : wrap(up ? -defined : defined);
+    e[2] = wrap(up ? defined + e[0] : defined - e[0]);
+}
+
+int hx_euler_canonical(const int axes[3], const double R[9], double C[9], double *sign)
+{
+    const int proper = axes[0] == axes[2];
+    int p[3];
+    double s[3] = {1.0, 1.0, 1.0};
+    if (proper) /* Q's rows: b, then the third axis, then a */
+        p[0] = axes[1], p[1] = 3 - axes[0] - axes[1], p[2] = axes[0];
+    else /* c, b, a */
+        p[0] = axes[2], p[1] = axes[1], p[2] = axes[0];
+    /* Q's row i is s[i] e_p[i]: its determinant, the permutation's parity
+     * times the signs, made +1 by the one free sign */
+    const int inversions = (p[0] > p[1]) + (p[0] > p[2]) + (p[1] > p[2]);
+    const double parity = inversions % 2 ? -1.0 : 1.0;
+    s[proper ? 1 : 0] = parity;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            C[3 * i + j] = s[i] * s[j] * R[3 * p[i] + p[j]];
+    *sign = proper ? 1.0 : parity;
+    return proper;
+}
+
+void hx_euler_sequence(const int axes[3], const double R[9], double e[3])
+{
+    double C[9], sign;
+    if (hx_euler_canonical(axes, R, C, &sign)) {
+        hx_euler313(C, e);
+    } else {
+        hx_euler321(C, e);
+        e[2] = wrap(sign * e[2]);
+    }
+}
+
+void hx_euler_parameters(const double R[9], double e[4])
+{
+    quat_from_matrix(e, R);
+    int k = 0; /* the first nonzero of e0, e1, e2, e3 made positive */
+    while (k < 3 && e[k] == 0.0)
+        ++k;
+    if (e[k] < 0.0)
+        for (int i = 0; i < 4; ++i)
+            e[i] = -e[i];
+}
+
 void hx_rotation_vector(const double R[9], double r[3])
 {
     double q[4];
-    quat_from_matrix(q, R);
-    if (q[0] < 0.0) /* the shorter way round: angle in [0, pi] */
-        for (int k = 0; k < 4; ++k)
-            q[k] = -q[k];
+    hx_euler_parameters(R, q); /* the shorter way round: angle in [0, pi] */
     const double s = sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     /* angle / sin(angle / 2), which tends to 2 at rest */
     const double scale = s > 1e-8 ? 2.0 * atan2(s, q[0]) / s : 2.0 / q[0];

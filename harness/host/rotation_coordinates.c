@@ -10,14 +10,16 @@
  *   EULER    = B313 (psi theta phi, the angles DISP returns); BRYANT = B123;
  *   YPR      = B321 (yaw pitch roll);
  *   AXAYAZ   3: space-fixed X, then Y, then Z: A = Rz(az) Ry(ay) Rx(ax).
- * Angles come back in [-pi, pi], the middle one of a proper Euler sequence in
- * [0, pi], of a Tait-Bryan one in [-pi/2, pi/2]. coord2 may be coord1.
+ * Angles come back as the harness's own measures take them (frames/measures.h,
+ * hx_euler_sequence): in (-pi, pi], the middle one of a proper Euler sequence
+ * in [0, pi], of a Tait-Bryan one in [-pi/2, pi/2]. coord2 may be coord1.
  */
 #include <math.h>
 #include <string.h>
 #include <strings.h>
 
 #include "base/vecmath.h"
+#include "frames/measures.h"
 #include "host/utilities.h"
 #include "usrsub/solver_abi.h"
 
@@ -83,35 +85,6 @@ static void sequence_to_matrix(const int axis[3], const double a[3], double *A)
     m3_mul(A, T, R3);
 }
 
-static void matrix_to_sequence(const int axis[3], const double *A, double a[3])
-{
-    const int i = axis[0], j = axis[1], k = axis[2];
-#define R(r, c) A[3 * (r) + (c)]
-    if (i == k) { /* proper Euler: R_i(a) R_j(b) R_i(c); l the third axis */
-        const int l = 3 - i - j;
-        const double e = (j == (i + 1) % 3) ? 1.0 : -1.0;
-        a[1] = atan2(sqrt(R(i, j) * R(i, j) + R(i, l) * R(i, l)), R(i, i));
-        if (sin(a[1]) > 1e-12) {
-            a[0] = atan2(R(j, i), -e * R(l, i));
-            a[2] = atan2(R(i, j), e * R(i, l));
-        } else { /* a and c turn about one axis: all of it to a */
-            a[2] = 0.0;
-            a[0] = atan2(e * R(l, j), R(j, j));
-        }
-    } else { /* Tait-Bryan: R_i(a) R_j(b) R_k(c) */
-        const double e = (j == (i + 1) % 3) ? 1.0 : -1.0;
-        a[1] = atan2(e * R(i, k), sqrt(R(i, i) * R(i, i) + R(i, j) * R(i, j)));
-        if (cos(a[1]) > 1e-12) {
-            a[0] = atan2(-e * R(j, k), R(k, k));
-            a[2] = atan2(-e * R(i, j), R(i, i));
-        } else {
-            a[2] = 0.0;
-            a[0] = atan2(e * R(k, j), R(j, j));
-        }
-    }
-#undef R
-}
-
 static int to_matrix(const system_spec *s, const double *c, double *A)
 {
     double q[4];
@@ -155,10 +128,7 @@ static int from_matrix(const system_spec *s, const double *A, double *c)
         return 0;
     case 1:
     case 2:
-        quat_from_matrix(q, A);
-        if (q[0] < 0.0)
-            for (int k = 0; k < 4; ++k)
-                q[k] = -q[k];
+        hx_euler_parameters(A, q);
         if (s->kind == 1) {
             memcpy(c, q, sizeof q);
             return 0;
@@ -170,7 +140,7 @@ static int from_matrix(const system_spec *s, const double *A, double *c)
         return 0;
     default: {
         double a[3];
-        matrix_to_sequence(s->axis, A, a);
+        hx_euler_sequence(s->axis, A, a);
         c[0] = s->reversed ? a[2] : a[0], c[1] = a[1], c[2] = s->reversed ? a[0] : a[2];
         return 0;
     }

@@ -57,7 +57,7 @@ static const char *refused(const hx_expr_input *in)
     case HX_EXPR_INPUT_TIME:
         return NULL;
     case HX_EXPR_INPUT_MEASURE:
-        return in->function >= HX_FN_VX
+        return in->function >= HX_FN_VX && in->function <= HX_FN_WM
                    ? "a velocity makes the constraint nonholonomic, which the harness does not"
                      " simulate (a general constraint reads the markers' displacements and"
                      " rotations and TIME)"

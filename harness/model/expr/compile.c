@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/orientation_systems.h"
 #include "model/expr/functions.h"
 #include "model/expr/program.h"
 #include "model/expr/tree.h"
@@ -99,8 +100,10 @@ static int input(emitter *e, const hx_expr_node *n)
     memset(&in, 0, sizeof in);
     in.function = n->kind == HX_NODE_TIME ? -1 : n->function;
     switch (n->kind == HX_NODE_TIME ? HX_FK_OPERATOR : hx_expr_function_at(n->function)->kind) {
-    case HX_FK_MEASURE:
+    case HX_FK_MEASURE: /* in the order of frames/measure_functions.h, ORIENT's after */
         in.kind = HX_EXPR_INPUT_MEASURE, in.measure = n->function - HX_FN_DX;
+        if (n->function == HX_FN_ORIENT)
+            in.measure = HX_FN_WM + 1 - HX_FN_DX + hx_orientation_code(n->ids[0], n->ids[1]);
         break;
     case HX_FK_VARVAL: in.kind = HX_EXPR_INPUT_VARVAL; break;
     case HX_FK_DIF: in.kind = HX_EXPR_INPUT_DIF; break;

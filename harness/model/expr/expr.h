@@ -44,13 +44,15 @@ typedef enum hx_expr_input_kind {
 typedef struct hx_expr_input {
     hx_expr_input_kind kind;
     int function;     /* its function (model/expr/functions.h: HX_FN_DX ...), -1 for TIME */
-    int measure;      /* a measure: frames/measure_functions.h's hx_measure */
+    int measure;      /* a measure: frames/measure_functions.h's hx_measure (ORIENT's
+                       * HX_MEASURE_ORIENT + base/orientation_systems.h's code) */
     int ids[4];       /* as written, 0 for those left out: the markers of a measure; the
                        * element's id (and ARYVAL's component) of the others */
     int nids;         /* how many were written */
     /* after hx_expr_link: */
     int index[4];     /* a measure, an acceleration: the markers' indices (-1: the world's
-                       * origin and axes);
+                       * origin and axes; ORIENT's I and J first, its system and
+                       * component in ids[0], ids[1]);
                        * VARVAL: the variable's index; DIF, DIF1: the Control_Diff's slot;
                        * ARYVAL: the array's index; REACTION: the joint's index (model
                        * order, primitives among them), its I and J markers' and rm's

@@ -114,9 +114,8 @@ static const hx_expr_function table[HX_FN_COUNT] = {
     [HX_FN_COUPLER] = CONSTRAINT_FORCE("COUPLER", CONSTRAINT_WHY),
     [HX_FN_JPRIM] = {"JPRIM", HX_FK_REACTION, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", NULL},
     [HX_FN_GCON] = CONSTRAINT_FORCE("GCON", CONSTRAINT_WHY),
-    [HX_FN_ORIENT] = {"ORIENT", HX_FK_UNANSWERED, 3, 4, ALL_IDS, "(system, component, I[, J])",
-                      "the page that defines it could be read only up to its eleventh orientation"
-                      " system; the harness answers it once the whole table is known"},
+    [HX_FN_ORIENT] = {"ORIENT", HX_FK_MEASURE, 3, 4, ALL_IDS, "(system, component, I[, J])",
+                      NULL},
 };
 
 const hx_expr_function *hx_expr_function_at(int code)

@@ -31,7 +31,8 @@ typedef enum hx_expr_function_code {
      * HX_FK_MARKER_FORCE), the joints' reactions (JOINT, JPRIM: HX_FK_REACTION) and
      * the force elements' forces (HX_FK_LOAD), answered in output expressions only;
      * the rest parsed, not answered yet: the other constraints' forces (MOTION,
-     * COUPLER, GCON), and ORIENT */
+     * COUPLER, GCON); but ORIENT, a measure (HX_FK_MEASURE) of its own arguments
+     * (system, component, I[, J]) */
     HX_FN_ACCX, HX_FN_ACCY, HX_FN_ACCZ, HX_FN_ACCM, HX_FN_WDTX, HX_FN_WDTY, HX_FN_WDTZ,
     HX_FN_WDTM, HX_FN_FX, HX_FN_FY, HX_FN_FZ, HX_FN_FM, HX_FN_TX, HX_FN_TY, HX_FN_TZ,
     HX_FN_TM, HX_FN_JOINT, HX_FN_SFORCE, HX_FN_VFORCE, HX_FN_VTORQ, HX_FN_GFORCE,

@@ -120,14 +120,19 @@ static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, 
                            " Post_Request expressions may read it)", text);
         /* its markers are linked as a measure's */
         /* fall through */
-    case HX_EXPR_INPUT_MEASURE:
+    case HX_EXPR_INPUT_MEASURE: {
+        /* ORIENT(system, component, I[, J]): its markers I and J, as the others' */
+        const int *markers = in->function == HX_FN_ORIENT ? in->ids + 2 : in->ids;
+        const int count = in->function == HX_FN_ORIENT ? 2 : 4;
         for (int k = 0; k < 4; ++k) {
-            in->index[k] = in->ids[k] == 0 ? -1 : hx_model_marker(m, in->ids[k]);
-            if (in->ids[k] != 0 && in->index[k] < 0)
+            const int marker = k < count ? markers[k] : 0;
+            in->index[k] = marker == 0 ? -1 : hx_model_marker(m, marker);
+            if (marker != 0 && in->index[k] < 0)
                 return fail_at(p, msg, in->line, in->column, "%s: no Reference_Marker %d in the"
-                               " model", text, in->ids[k]);
+                               " model", text, marker);
         }
         return 0;
+    }
     case HX_EXPR_INPUT_VARVAL:
         if ((in->index[0] = in->variable = hx_model_variable(m, id)) >= 0)
             return 0;

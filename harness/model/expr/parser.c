@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/orientation_systems.h"
 #include "model/expr/apply.h"
 #include "model/expr/functions.h"
 #include "model/expr/lexer.h"
@@ -237,6 +238,25 @@ static int if_call(parser *p, const hx_expr_token *name)
     return k;
 }
 
+/* ORIENT(system, component, I[, J]) (docs/interface.md §8.5): a system of
+ * base/orientation_systems.h, one of its components, and a marker for I. */
+static int orient_arguments(parser *p, const int *ids, const int *places)
+{
+    const hx_orientation_system *s = hx_orientation_system_at(ids[0]);
+    if (s == NULL)
+        return fail_at(p, places[0], places[1], "ORIENT: system (argument 1) is %d: 1 to 12 the"
+                       " body-fixed Euler angles, 13 to 24 the space-fixed ones, 25 AX AY AZ, 26"
+                       " YAW PITCH ROLL, 27 the Euler parameters, 28 the Rodrigues parameters, 29"
+                       " the direction cosines", ids[0]);
+    if (ids[1] < 1 || ids[1] > s->components)
+        return fail_at(p, places[2], places[3], "ORIENT: component (argument 2) is %d: system %d"
+                       " (%s) has components 1 to %d", ids[1], ids[0], s->what, s->components);
+    if (ids[2] == 0)
+        return fail_at(p, places[4], places[5], "ORIENT: its I marker (argument 3) is 0: I names"
+                       " a marker (0 stands for the ground's origin only for J)");
+    return 0;
+}
+
 /* A call of a function the table knows, after its '('. */
 static int known_call(parser *p, int code, const hx_expr_token *name)
 {
@@ -297,7 +317,9 @@ static int known_call(parser *p, int code, const hx_expr_token *name)
     case HX_FK_ACCELERATION:
     case HX_FK_MARKER_FORCE:
     case HX_FK_MEASURE:
-        if (ids[0] == 0)
+        if (code == HX_FN_ORIENT && orient_arguments(p, ids, places) != 0)
+            return -1;
+        if (code != HX_FN_ORIENT && ids[0] == 0)
             return fail_at(p, places[0], places[1], "%s: its I marker is 0: I names a marker"
                            " (0 stands for the ground's origin only in the later places)",
                            f->name);

@@ -5,7 +5,9 @@
 
 #include <math.h>
 
+#include "base/orientation_systems.h"
 #include "base/vecmath.h"
+#include "frames/measures.h"
 
 static const hx_motion still;
 
@@ -86,6 +88,76 @@ static double euler313_slope(const double R[9], const double d[9], int which)
     return psi - atan2_slope(R[3] + R[1], R[0] - R[4], d[3] + d[1], d[0] - d[4]);
 }
 
+/* The 3-2-1 angles' slopes (measures.c, hx_euler321). */
+static double euler321_slope(const double R[9], const double d[9], int which)
+{
+    const double c = sqrt(R[0] * R[0] + R[3] * R[3]);
+    if (which == 1)
+        return atan2_slope(-R[6], c, -d[6], hypot_slope(R[0], R[3], d[0], d[3]));
+    const int up = R[6] <= 0.0;
+    const double defined = up ? atan2_slope(R[1] - R[5], R[4] + R[2], d[1] - d[5], d[4] + d[2])
+                              : atan2_slope(-(R[1] + R[5]), R[4] - R[2], -(d[1] + d[5]),
+                                            d[4] - d[2]);
+    const double yaw = c > 0.0 ? atan2_slope(R[3], R[0], d[3], d[0]) : up ? -defined : defined;
+    if (which == 0)
+        return yaw;
+    return up ? defined + yaw : defined - yaw;
+}
+
+/* The projection angle about J's axis (measures.c, hx_projection_angle). */
+static double projection_slope(const double R[9], const double d[9], int axis)
+{
+    switch (axis) {
+    case 0: return atan2_slope(R[7], R[4], d[7], d[4]);
+    case 1: return atan2_slope(R[2], R[8], d[2], d[8]);
+    default: return atan2_slope(R[3], R[0], d[3], d[0]);
+    }
+}
+
+/* ORIENT's measure `code` (measure_functions.c) of the relative rotation R
+ * changing by dR = [w]x R, w the turn of I relative to J in J's axes. */
+static double orientation_slope(int code, const double R[9], const double dR[9])
+{
+    const int system = code / HX_ORIENTATION_COMPONENTS + 1;
+    const int k = code % HX_ORIENTATION_COMPONENTS;
+    const hx_orientation_system *s = hx_orientation_system_at(system);
+    switch (s->kind) {
+    case HX_ORIENTATION_BODY:
+    case HX_ORIENTATION_SPACE: {
+        const int space = s->kind == HX_ORIENTATION_SPACE;
+        const int axes[3] = {s->axes[space ? 2 : 0], s->axes[1], s->axes[space ? 0 : 2]};
+        const int which = space ? 2 - k : k;
+        double C[9], dC[9], sign;
+        if (hx_euler_canonical(axes, R, C, &sign)) {
+            hx_euler_canonical(axes, dR, dC, &sign);
+            return euler313_slope(C, dC, which);
+        }
+        hx_euler_canonical(axes, dR, dC, &sign);
+        return (which == 2 ? sign : 1.0) * euler321_slope(C, dC, which);
+    }
+    case HX_ORIENTATION_PROJECTION:
+        return projection_slope(R, dR, k);
+    case HX_ORIENTATION_YPR:
+        return (k == 1 ? -1.0 : 1.0) * euler321_slope(R, dR, k);
+    case HX_ORIENTATION_PARAMETERS:
+    case HX_ORIENTATION_RODRIGUES: {
+        /* e' = (0, w) e / 2, w from dR R^T = [w]x */
+        double e[4], W[9], de[4];
+        hx_euler_parameters(R, e);
+        m3_mult(W, dR, R);
+        const double w[4] = {0.0, W[7], W[2], W[3]};
+        quat_mul(de, w, e);
+        for (int i = 0; i < 4; ++i)
+            de[i] *= 0.5;
+        if (s->kind == HX_ORIENTATION_PARAMETERS)
+            return de[k];
+        return e[0] > 0.0 ? (de[k + 1] * e[0] - e[k + 1] * de[0]) / (e[0] * e[0]) : 0.0;
+    }
+    default: /* HX_ORIENTATION_COSINES */
+        return dR[3 * (k % 3) + k / 3];
+    }
+}
+
 double hx_measure_slope(hx_measure m, const hx_frame *const f[4], const hx_motion *const mo[4])
 {
     const hx_motion *const M[4] = {mo[0] ? mo[0] : &still, mo[1] ? mo[1] : &still,
@@ -94,6 +166,10 @@ double hx_measure_slope(hx_measure m, const hx_frame *const f[4], const hx_motio
     double r[3], dr[3], v[3], dv[3], out[3], R[9], dR[9];
     v3_sub(r, I->p, J->p);
     v3_sub(dr, M[0]->dp, M[1]->dp);
+    if (m >= HX_MEASURE_ORIENT) {
+        rotation_slope(I, J, M[0], M[1], R, dR);
+        return orientation_slope(m - HX_MEASURE_ORIENT, R, dR);
+    }
     switch (m) {
     case HX_MEASURE_DX:
     case HX_MEASURE_DY:
@@ -104,24 +180,16 @@ double hx_measure_slope(hx_measure m, const hx_frame *const f[4], const hx_motio
         const double len = v3_norm(r);
         return len > 0.0 ? v3_dot(r, dr) / len : 0.0;
     }
-    case HX_MEASURE_AX: /* atan2(R7, R4), atan2(R2, R8), atan2(R3, R0) */
-        rotation_slope(I, J, M[0], M[1], R, dR);
-        return atan2_slope(R[7], R[4], dR[7], dR[4]);
+    case HX_MEASURE_AX:
     case HX_MEASURE_AY:
-        rotation_slope(I, J, M[0], M[1], R, dR);
-        return atan2_slope(R[2], R[8], dR[2], dR[8]);
     case HX_MEASURE_AZ:
+        rotation_slope(I, J, M[0], M[1], R, dR);
+        return projection_slope(R, dR, m - HX_MEASURE_AX);
     case HX_MEASURE_YAW:
-        rotation_slope(I, J, M[0], M[1], R, dR);
-        return atan2_slope(R[3], R[0], dR[3], dR[0]);
-    case HX_MEASURE_PITCH: { /* -atan2(-R6, hypot(R0, R3)) */
-        rotation_slope(I, J, M[0], M[1], R, dR);
-        const double h = sqrt(R[0] * R[0] + R[3] * R[3]);
-        return -atan2_slope(-R[6], h, -dR[6], hypot_slope(R[0], R[3], dR[0], dR[3]));
-    }
+    case HX_MEASURE_PITCH: /* the second angle negated */
     case HX_MEASURE_ROLL:
         rotation_slope(I, J, M[0], M[1], R, dR);
-        return atan2_slope(R[7], R[8], dR[7], dR[8]);
+        return (m == HX_MEASURE_PITCH ? -1.0 : 1.0) * euler321_slope(R, dR, m - HX_MEASURE_YAW);
     case HX_MEASURE_PSI:
     case HX_MEASURE_THETA:
     case HX_MEASURE_PHI:
