@@ -274,8 +274,9 @@ static int constraint_jacobian(const hx_dynamics *d, hx_dynamics_data *dd, doubl
     return 0;
 }
 
-/* What row i's G u must equal: f'(t) of a motion, -df/dt of a general
- * constraint, else 0. */
+/* What row i's G u must equal: f'(t) of a motion (f of a velocity motion, the
+ * velocity state of an acceleration motion), -df/dt of a general constraint,
+ * else 0. */
 static int row_rate(const hx_dynamics *d, hx_dynamics_data *dd, int i, double t,
                     const double *y, double *rate)
 {
@@ -284,7 +285,7 @@ static int row_rate(const hx_dynamics *d, hx_dynamics_data *dd, int i, double t,
         return hx_expression_rows_rate(d, dd, i - d->gcon_first, t, y, parts(d, dd).expression,
                                        rate);
     if (i >= d->motion_first)
-        return hx_coordinate_rows_rate(d, dd, i, t, rate);
+        return hx_coordinate_rows_rate(d, dd, i, t, y, rate);
     return 0;
 }
 

@@ -59,7 +59,7 @@ static int init_parts(hx_dynamics *d, hx_session *s, hx_message *msg)
         hx_stateeqns_init(d, msg) != 0 ||
         hx_routines_init(d, msg) != 0)
         return -1;
-    d->load_work = d->diff_offset + d->ndiffs;
+    d->load_work = d->motion_state_offset + d->nmotion_states;
     d->element_work = d->load_work + 1;
     d->n = d->element_work + 1;
     for (int k = 0; k < nc; ++k)

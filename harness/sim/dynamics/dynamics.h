@@ -27,7 +27,8 @@
  *
  * State layout y: [positions (nq) | velocities (nu) | the Force_StateEqn
  * elements' states (nstates, element by element in the model's order) | the
- * Control_Diff states (ndiffs, routines.h) | work done by the loads and the
+ * Control_Diff states (ndiffs, routines.h) | an acceleration motion's displacement
+ * and velocity between bodies (2 a motion, routines.h) | work done by the loads and the
  * time-dependent constraints (the motions, the general constraints of TIME) | work
  * done by the force elements, Force_StateEqn ones included]. Units follow the
  * model; mass * acceleration = ucf * force, as in a solver with an
@@ -74,6 +75,8 @@ typedef struct hx_dynamics {
     int nq, nu, n;                /* positions, velocities, the whole of y */
     int stateeqn_offset, nstates; /* y offset and count of the Force_StateEqn states */
     int diff_offset, ndiffs;      /* y offset and count of the Control_Diff states */
+    int motion_state_offset, nmotion_states; /* y offset and count of the acceleration
+                                   * motions' states between bodies (routines.h) */
     int diffs_read_variables;     /* a Control_Diff's expression reads a variable */
     int load_work, element_work;  /* y indices of the work done by loads and the drives
                                    * (motions, GCONs of TIME), and by elements */
@@ -83,6 +86,8 @@ typedef struct hx_dynamics {
                                    * constraints' */
     int motion_first, nmotions;   /* the motions' rows: from motion_first, one a motion */
     int *motion_routine;          /* per motion row: its Motion_Joint routine (model.h) */
+    int *motion_state;            /* per motion row: the y index of an acceleration motion's
+                                   * displacement state (its velocity state the next), or -1 */
     int gcon_first;               /* the general constraints' rows: from gcon_first, one a
                                    * Constraint_General (expression_rows.h) */
     int row_values;               /* values a row of G keeps (hx_constraint_row) */
