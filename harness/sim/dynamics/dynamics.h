@@ -94,8 +94,14 @@ typedef struct hx_dynamics {
     unsigned char *coupler_general; /* per coupler: 1 when a joint of it is not reduced */
     hx_constraint_row *rows;
     int nactive, *active;         /* the rows the solves take, ascending (all of them but
-                                   * the redundant rows found at set-up: redundancy.h) */
+                                   * the redundant rows found at set-up, at the assembled
+                                   * configuration: redundancy.h) */
     int nremoved, *removed;       /* the redundant rows, ascending */
+    int nremoved_placed, *removed_placed; /* the redundant rows at the model's placed
+                                   * configuration, before the set-up's assembly */
+    double *assembled_q;          /* nq: the positions the set-up's assembly reached when
+                                   * it changed the redundant rows (the run's projection
+                                   * starts there), or NULL */
     int *envelope_first;          /* per active row: the first active row it shares a body
                                    * with (G M^-1 G^T's envelope), or NULL: solved dense */
     size_t *envelope_start;       /* per active row: its place in the envelope's values */
