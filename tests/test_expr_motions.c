@@ -218,6 +218,18 @@ static void check_slider(sim *s, double *worst_a)
     }
 }
 
+/* The link's (body 2's) largest rate of turn about z along a run. */
+static double link_turned(const sim *s)
+{
+    double turned = 0.0;
+    for (int row = 0; row < s->path.rows; ++row) {
+        hx_frame link;
+        hx_bodies_frame(&s->dynamics, 1, s->path.y + (size_t)row * (size_t)s->path.n, &link);
+        turned = fmax(turned, fabs(link.w[2]));
+    }
+    return turned;
+}
+
 static void translational_between_moving_bodies_by_expression(void **state)
 {
     (void)state;
@@ -235,14 +247,7 @@ static void translational_between_moving_bodies_by_expression(void **state)
         printf("%s: the slider's coordinate against 0.1 sin(2 pi t): worst %.3g\n",
                k == 0 ? "DOPRI5" : "BDF", worst);
         assert_true(worst < 1e-10);
-        /* the link turned: both bodies move */
-        double turned = 0.0;
-        for (int row = 0; row < s.path.rows; ++row) {
-            hx_frame link;
-            hx_bodies_frame(&s.dynamics, 1, s.path.y + (size_t)row * (size_t)s.path.n, &link);
-            turned = fmax(turned, fabs(link.w[2]));
-        }
-        assert_true(turned > 1.0);
+        assert_true(link_turned(&s) > 1.0); /* both bodies move */
         sim_close(&s);
     }
 }
@@ -443,13 +448,7 @@ static void acceleration_motion_between_moving_bodies(void **state)
         assert_true(worst[0] < runs[k].coordinate);
         assert_true(worst[1] < runs[k].rate);
         assert_true(worst[2] < runs[k].coordinate);
-        double turned = 0.0;
-        for (int row = 0; row < s.path.rows; ++row) {
-            hx_frame link;
-            hx_bodies_frame(&s.dynamics, 1, s.path.y + (size_t)row * (size_t)s.path.n, &link);
-            turned = fmax(turned, fabs(link.w[2]));
-        }
-        assert_true(turned > 1.0);
+        assert_true(link_turned(&s) > 1.0);
         if (runs[k].method == HX_METHOD_BDF) {
             long outside = 0;
             const int last = s.path.rows - 1;

@@ -17,16 +17,22 @@
 
 #define DATA(name) DATA_DIR "/redundant/" name
 
-/* The names of the removed rows, one a line. */
-static void removed_names(const hx_dynamics *d, char *text, size_t size)
+/* The names of the rows in list, one a line. */
+static void list_names(const hx_dynamics *d, const int *list, int n, char *text, size_t size)
 {
     text[0] = '\0';
-    for (int k = 0; k < d->nremoved; ++k) {
+    for (int k = 0; k < n; ++k) {
         char name[160];
-        hx_redundancy_name_row(d, d->removed[k], name, sizeof name);
+        hx_redundancy_name_row(d, list[k], name, sizeof name);
         strncat(text, name, size - strlen(text) - 2);
         strcat(text, "\n");
     }
+}
+
+/* The names of the removed rows, one a line. */
+static void removed_names(const hx_dynamics *d, char *text, size_t size)
+{
+    list_names(d, d->removed, d->nremoved, text, size);
 }
 
 /* The largest |phi| / scale of the removed rows along a run. */
@@ -200,18 +206,6 @@ static void assert_residuals_held(sim *s)
                          0);
         assert_true(phi <= 1e-10);
         assert_true(phidot <= 1e-10);
-    }
-}
-
-/* The names of the rows in list, one a line. */
-static void list_names(const hx_dynamics *d, const int *list, int n, char *text, size_t size)
-{
-    text[0] = '\0';
-    for (int k = 0; k < n; ++k) {
-        char name[160];
-        hx_redundancy_name_row(d, list[k], name, sizeof name);
-        strncat(text, name, size - strlen(text) - 2);
-        strcat(text, "\n");
     }
 }
 
