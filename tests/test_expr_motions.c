@@ -10,7 +10,8 @@
  * an acceleration motion between moving bodies (translational and revolute,
  * by expression and by MOTSUB, DOPRI5 and BDF) against the closed forms
  * integrated by hand, and one to ground as before;
- * the dataset's MOTION FUNCTION= form and a driven slider-crank;
+ * the dataset's MOTION FUNCTION= form (and ACCELERATION, ICVEL on a
+ * four-bar's crank) and a driven slider-crank;
  * the expressions refused, with file:line:column.
  */
 #include <math.h>
@@ -616,6 +617,45 @@ static void dataset_motion_function(void **state)
                     "reads TIME alone");
 }
 
+/* The dataset's form: tests/data/redundant/four_bar_revolutes.adm with
+ * MOTION/1, JOINT = 1, ROTATION, ACCELERATION, ICVEL = 2, FUNCTION =
+ * 0.5*SIN(2*PI*TIME) on the crank's revolute (not reduced: the crank has two
+ * joints): AZ from 0 where the model places it, against 2 t + (0.5 / 2 pi) t -
+ * (0.5 / 4 pi^2) sin 2 pi t, by hand. */
+static void dataset_acceleration_motion(void **state)
+{
+    (void)state;
+    FILE *f = fopen(DATA_DIR "/redundant/four_bar_revolutes.adm", "r");
+    assert_non_null(f);
+    static char text[8192];
+    const size_t n = fread(text, 1, sizeof text - 256, f);
+    fclose(f);
+    text[n] = '\0';
+    char *end = strstr(text, "\nEND");
+    assert_non_null(end);
+    snprintf(end, sizeof text - (size_t)(end - text),
+             "\nMOTION/1, JOINT = 1, ROTATION, ACCELERATION, ICVEL = 2\n"
+             ", FUNCTION = 0.5*SIN(2*PI*TIME)\nEND\n");
+    sim s;
+    sim_run(&s, test_write_file("four_bar_accelerated.adm", text), HX_METHOD_DOPRI5, 1e-10, 1.0,
+            0.05);
+    assert_int_equal(s.session.model->nunsimulated, 0);
+    assert_int_equal(s.dynamics.nmotion_states, 2);
+    double worst = 0.0;
+    for (int row = 0; row < s.path.rows; ++row) {
+        const double t = s.path.t[row], *y = s.path.y + (size_t)row * (size_t)s.path.n;
+        const double closed = 2.0 * t + 0.5 / (2.0 * M_PI) * t -
+                              0.5 / (4.0 * M_PI * M_PI) * sin(2.0 * M_PI * t);
+        double a;
+        hx_joint_coordinate_near(&s.dynamics, 0, 'R', y, closed, &a, NULL, NULL);
+        worst = fmax(worst, fabs(a - closed));
+    }
+    printf("the dataset's acceleration motion on the four-bar's crank: %.3g from the closed"
+           " form\n", worst);
+    assert_true(worst < 1e-10);
+    sim_close(&s);
+}
+
 /* The driven slider-crank (tests/data/driven_slider_crank.xml and its
  * dataset twin, MOTION/1 ... FUNCTION = 10*TIME; not among the bundled
  * examples: its crank's acceleration row is zero, which test_jacobian's
@@ -666,6 +706,7 @@ int main(void)
         cmocka_unit_test(acceleration_motion_to_ground),
         cmocka_unit_test(refused_expressions),
         cmocka_unit_test(dataset_motion_function),
+        cmocka_unit_test(dataset_acceleration_motion),
         cmocka_unit_test(bundled_driven_slider_crank),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
