@@ -467,11 +467,6 @@ static void refused_motions(void **state)
          "<Motion_Joint id=\"6\" type=\"USERSUB\" joint_id=\"2\" usrsub_param_string=\"USER(1, 1)\""
          " usrsub_fnc_name=\"SWING\" usrsub_dll_name=\"libtp_routines.so\"/>\n",
          "joint 2 is cylindrical: motion_type must say"},
-        {"motion_acceleration.xml", "REVOLUTE",
-         "<Motion_Joint id=\"6\" type=\"USERSUB\" val_type=\"A\" joint_id=\"2\""
-         " usrsub_param_string=\"USER(1, 1)\" usrsub_fnc_name=\"SWING\""
-         " usrsub_dll_name=\"libtp_routines.so\"/>\n",
-         "val_type A on joint 2, which is not a body's only joint to ground"},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         char text[4096], rest[4096];

@@ -219,6 +219,40 @@ static void a_reduced_driven_joint_s_work_is_in_the_balance(void **state)
     assert_true(balance < 1e-6);
 }
 
+/* A Motion_Joint in acceleration on a revolute between two moving links (the second
+ * hinged at the first's tip, the first on a revolute to ground): the joint follows the
+ * displacement and velocity states integrated from 3 SIN(2 TIME), and the row's power is
+ * lambda v, v the velocity state G u is held to. */
+static void an_acceleration_row_s_work_is_in_the_balance(void **state)
+{
+    (void)state;
+    const char *path = test_write_file(
+        "accelerated_links.xml",
+        "<MotionSolve><Model>\n"
+        "<Force_Gravity grav_x=\"0\" grav_y=\"-9.81\" grav_z=\"0\"/>\n"
+        "<Body_Ground id=\"1\"/>\n"
+        "<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+        "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"2\" inertia_xx=\"0.1\" inertia_yy=\"0.3\""
+        " inertia_zz=\"0.3\"/>\n"
+        "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"0.4\"/>\n"
+        "<Reference_Marker id=\"21\" body_id=\"2\"/>\n"
+        "<Reference_Marker id=\"22\" body_id=\"2\" pos_x=\"0.8\"/>\n"
+        "<Body_Rigid id=\"3\" cg_id=\"30\" mass=\"0.7\" inertia_xx=\"0.02\" inertia_yy=\"0.03\""
+        " inertia_zz=\"0.04\"/>\n"
+        "<Reference_Marker id=\"30\" body_id=\"3\" pos_x=\"1.1\"/>\n"
+        "<Reference_Marker id=\"31\" body_id=\"3\" pos_x=\"0.8\"/>\n"
+        "<Constraint_Joint id=\"1\" type=\"REVOLUTE\" i_marker_id=\"21\" j_marker_id=\"10\"/>\n"
+        "<Constraint_Joint id=\"2\" type=\"REVOLUTE\" i_marker_id=\"31\" j_marker_id=\"22\"/>\n"
+        "<Motion_Joint id=\"1\" type=\"EXPRESSION\" joint_id=\"2\" val_type=\"A\""
+        " expr=\"3*SIN(2*TIME)\"/>\n"
+        "</Model></MotionSolve>\n");
+    double energy, balance, work;
+    run_balance(path, 2.0, &energy, &balance, &work);
+    assert_true(fabs(work) > 0.1);
+    assert_true(energy < 1e-6);
+    assert_true(balance < 1e-6);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -227,6 +261,7 @@ int main(void)
         cmocka_unit_test(a_driven_row_s_work_is_in_the_balance),
         cmocka_unit_test(a_general_constraint_of_time_s_work_is_in_the_balance),
         cmocka_unit_test(a_reduced_driven_joint_s_work_is_in_the_balance),
+        cmocka_unit_test(an_acceleration_row_s_work_is_in_the_balance),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

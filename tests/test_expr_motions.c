@@ -7,7 +7,11 @@
  * form and the constraint residuals; the same motion by expression and by
  * the bundled MOTSUB (SWING, tests/user_libraries/tp_routines.c); a
  * velocity motion integrated, on a reduced joint and between moving bodies;
- * the dataset's MOTION FUNCTION= form and a driven slider-crank;
+ * an acceleration motion between moving bodies (translational and revolute,
+ * by expression and by MOTSUB, DOPRI5 and BDF) against the closed forms
+ * integrated by hand, and one to ground as before;
+ * the dataset's MOTION FUNCTION= form (and ACCELERATION, ICVEL on a
+ * four-bar's crank) and a driven slider-crank;
  * the expressions refused, with file:line:column.
  */
 #include <math.h>
@@ -215,6 +219,18 @@ static void check_slider(sim *s, double *worst_a)
     }
 }
 
+/* The link's (body 2's) largest rate of turn about z along a run. */
+static double link_turned(const sim *s)
+{
+    double turned = 0.0;
+    for (int row = 0; row < s->path.rows; ++row) {
+        hx_frame link;
+        hx_bodies_frame(&s->dynamics, 1, s->path.y + (size_t)row * (size_t)s->path.n, &link);
+        turned = fmax(turned, fabs(link.w[2]));
+    }
+    return turned;
+}
+
 static void translational_between_moving_bodies_by_expression(void **state)
 {
     (void)state;
@@ -232,14 +248,7 @@ static void translational_between_moving_bodies_by_expression(void **state)
         printf("%s: the slider's coordinate against 0.1 sin(2 pi t): worst %.3g\n",
                k == 0 ? "DOPRI5" : "BDF", worst);
         assert_true(worst < 1e-10);
-        /* the link turned: both bodies move */
-        double turned = 0.0;
-        for (int row = 0; row < s.path.rows; ++row) {
-            hx_frame link;
-            hx_bodies_frame(&s.dynamics, 1, s.path.y + (size_t)row * (size_t)s.path.n, &link);
-            turned = fmax(turned, fabs(link.w[2]));
-        }
-        assert_true(turned > 1.0);
+        assert_true(link_turned(&s) > 1.0); /* both bodies move */
         sim_close(&s);
     }
 }
@@ -358,6 +367,184 @@ static void velocity_motion_between_moving_bodies(void **state)
     }
 }
 
+/* The closed forms of an acceleration motion f = 0.2 sin(2 pi t) from s0 and
+ * v0, integrated by hand: v = v0 + (0.2 / 2 pi) (1 - cos 2 pi t),
+ * s = s0 + (v0 + 0.2 / 2 pi) t - (0.2 / 4 pi^2) sin 2 pi t. */
+static double accel_velocity(double v0, double t)
+{
+    return v0 + 0.2 / (2.0 * M_PI) * (1.0 - cos(2.0 * M_PI * t));
+}
+
+static double accel_displacement(double s0, double v0, double t)
+{
+    return s0 + (v0 + 0.2 / (2.0 * M_PI)) * t - 0.2 / (4.0 * M_PI * M_PI) * sin(2.0 * M_PI * t);
+}
+
+/* Along a run driven in acceleration on joint `joint` (index) in freedom
+ * from s0 and v0: the worst distances of the joint's coordinate and rate,
+ * and of the motion's two states, from the closed forms; every row's
+ * residuals (phi, dphi/dt) after the projection within 1e-10. */
+static void check_accelerated(sim *s, int joint, char freedom, double s0, double v0,
+                              double worst[3])
+{
+    const hx_dynamics *d = &s->dynamics;
+    assert_int_equal(d->nmotions, 1);
+    assert_int_equal(d->nmotion_states, 2);
+    const int at = d->motion_state[0];
+    assert_int_equal(at, d->load_work - 2);
+    worst[0] = worst[1] = worst[2] = 0.0;
+    for (int row = 0; row < s->path.rows; ++row) {
+        const double t = s->path.t[row], *y = s->path.y + (size_t)row * (size_t)s->path.n;
+        const double sc = accel_displacement(s0, v0, t), vc = accel_velocity(v0, t);
+        double a, phi, phidot;
+        hx_joint_coordinate_near(d, joint, freedom, y, sc, &a, NULL, NULL);
+        worst[0] = fmax(worst[0], fabs(a - sc));
+        worst[1] = fmax(worst[1], fabs(hx_coordinate_rows_joint_rate(d, joint, freedom, y) - vc));
+        worst[2] = fmax(worst[2], fmax(fabs(y[at] - sc), fabs(y[at + 1] - vc)));
+        assert_int_equal(hx_constraints_residuals(d, &s->data, t, y, &phi, &phidot), 0);
+        assert_true(phi <= 1e-10);
+        assert_true(phidot <= 1e-10);
+    }
+}
+
+/* An acceleration motion on the translational joint between the two moving
+ * bodies (val_type A: f = 0.2 sin(2 pi t) the slider's acceleration along
+ * the link, from ic_disp = 0.05 and ic_vel = -0.1): by expression with
+ * DOPRI5 and BDF, and by the bundled MOTSUB SWING USER(0.2, 2 pi) (its iord
+ * 0 the acceleration) with DOPRI5. The coordinate and its rate against the
+ * closed forms integrated by hand, the residuals held, the link turned; the
+ * BDF run's Jacobian (the states' row s' = v among it) against differences. */
+static void acceleration_motion_between_moving_bodies(void **state)
+{
+    (void)state;
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    const char *paths[2] = {
+        test_write_file("motion_slider_acceleration.xml",
+                        link_model("<Motion_Joint id=\"2\" type=\"EXPRESSION\" joint_id=\"2\""
+                                   " val_type=\"A\" ic_disp=\"0.05\" ic_vel=\"-0.1\""
+                                   " expr=\"0.2*SIN(2*PI*TIME)\"/>\n")),
+        test_write_file("motion_slider_acceleration_motsub.xml",
+                        link_model("<Motion_Joint id=\"2\" type=\"USERSUB\" joint_id=\"2\""
+                                   " val_type=\"A\" ic_disp=\"0.05\" ic_vel=\"-0.1\""
+                                   " usrsub_param_string=\"USER(0.2, 6.283185307179586)\""
+                                   " usrsub_fnc_name=\"SWING\" usrsub_dll_name=\"libtp_routines.so\"/>\n"))};
+    static const struct {
+        int path;
+        hx_method method;
+        double rtol, coordinate, rate;
+        const char *what;
+    } runs[] = {
+        {0, HX_METHOD_DOPRI5, 1e-10, 1e-10, 1e-10, "DOPRI5, by expression"},
+        {0, HX_METHOD_BDF, 1e-8, 1e-6, 1e-6, "BDF, by expression"},
+        {1, HX_METHOD_DOPRI5, 1e-10, 1e-10, 1e-10, "DOPRI5, by MOTSUB"},
+    };
+    for (size_t k = 0; k < sizeof runs / sizeof runs[0]; ++k) {
+        sim s;
+        sim_run(&s, paths[runs[k].path], runs[k].method, runs[k].rtol, 1.0, 0.05);
+        double worst[3];
+        check_accelerated(&s, 1, 'T', 0.05, -0.1, worst);
+        printf("%s: an acceleration motion between bodies: the coordinate against the closed"
+               " form %.3g, its rate %.3g, the states %.3g\n", runs[k].what, worst[0], worst[1],
+               worst[2]);
+        assert_true(worst[0] < runs[k].coordinate);
+        assert_true(worst[1] < runs[k].rate);
+        assert_true(worst[2] < runs[k].coordinate);
+        assert_true(link_turned(&s) > 1.0);
+        if (runs[k].method == HX_METHOD_BDF) {
+            long outside = 0;
+            const int last = s.path.rows - 1;
+            const double diff = jacobian_against_differences(
+                &s.dynamics, s.path.t[last], s.path.y + (size_t)last * (size_t)s.path.n,
+                "acceleration motion", &outside);
+            assert_true(diff < 1e-5);
+            assert_int_equal(outside, 0);
+        }
+        sim_close(&s);
+    }
+}
+
+/* Two links: the first (body 2) on a revolute to ground (not its only
+ * joint: both bodies are free), the second (body 3) on a revolute (joint 2, between two moving bodies) at the
+ * first's tip, both axes along world z; gravity across and a torque on the
+ * first. */
+static const char *double_link_model(const char *motions)
+{
+    static char text[4096];
+    snprintf(text, sizeof text,
+             "<MotionSolve><Model>\n"
+             "<Body_Ground id=\"1\"/>\n"
+             "<Force_Gravity grav_x=\"0\" grav_y=\"-9.81\" grav_z=\"0\"/>\n"
+             "<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+             "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"2\" inertia_xx=\"0.1\" inertia_yy=\"0.3\" inertia_zz=\"0.3\"/>\n"
+             "<Reference_Marker id=\"20\" body_id=\"2\" pos_x=\"0.4\"/>\n"
+             "<Reference_Marker id=\"21\" body_id=\"2\"/>\n"
+             "<Reference_Marker id=\"22\" body_id=\"2\" pos_x=\"0.8\"/>\n"
+             "<Body_Rigid id=\"3\" cg_id=\"30\" mass=\"0.7\" inertia_xx=\"0.02\" inertia_yy=\"0.03\" inertia_zz=\"0.04\"/>\n"
+             "<Reference_Marker id=\"30\" body_id=\"3\" pos_x=\"1.1\"/>\n"
+             "<Reference_Marker id=\"31\" body_id=\"3\" pos_x=\"0.8\"/>\n"
+             "<Constraint_Joint id=\"1\" type=\"REVOLUTE\" i_marker_id=\"21\" j_marker_id=\"10\"/>\n"
+             "<Constraint_Joint id=\"2\" type=\"REVOLUTE\" i_marker_id=\"31\" j_marker_id=\"22\"/>\n"
+             "<Force_Scalar_TwoBody id=\"1\" type=\"TORQUE\" i_marker_id=\"21\" j_marker_id=\"10\" val=\"3\"/>\n"
+             "%s</Model></MotionSolve>\n",
+             motions);
+    return text;
+}
+
+/* The same acceleration on the revolute between the two links, from
+ * ic_disp = 0.3 rad and ic_vel = 4 rad/s: the joint turns about 8 rad in
+ * 2 s, past pi, so the coordinate is unwrapped against the displacement
+ * state; by DOPRI5 and BDF. */
+static void acceleration_motion_on_a_revolute_between_bodies(void **state)
+{
+    (void)state;
+    const char *path = test_write_file(
+        "motion_hinge_acceleration.xml",
+        double_link_model("<Motion_Joint id=\"2\" type=\"EXPRESSION\" joint_id=\"2\""
+                          " val_type=\"A\" ic_disp=\"0.3\" ic_vel=\"4\""
+                          " expr=\"0.2*SIN(2*PI*TIME)\"/>\n"));
+    const hx_method methods[2] = {HX_METHOD_DOPRI5, HX_METHOD_BDF};
+    for (int k = 0; k < 2; ++k) {
+        sim s;
+        sim_run(&s, path, methods[k], k == 0 ? 1e-10 : 1e-8, 2.0, 0.05);
+        assert_int_equal(s.dynamics.dof[1].kind, HX_DOF_FREE);
+        assert_int_equal(s.dynamics.dof[2].kind, HX_DOF_FREE);
+        double worst[3];
+        check_accelerated(&s, 1, 'R', 0.3, 4.0, worst);
+        printf("%s: an acceleration motion on a revolute between bodies: the angle against"
+               " the closed form %.3g, its rate %.3g, the states %.3g\n",
+               k == 0 ? "DOPRI5" : "BDF", worst[0], worst[1], worst[2]);
+        assert_true(worst[0] < (k == 0 ? 1e-10 : 1e-6));
+        assert_true(worst[1] < (k == 0 ? 1e-10 : 1e-6));
+        assert_true(s.path.t[s.path.rows - 1] > 1.99);
+        assert_true(accel_displacement(0.3, 4.0, 2.0) > 2.0 * M_PI);
+        sim_close(&s);
+    }
+}
+
+/* An acceleration motion on a revolute to ground (a reduced joint) runs as
+ * before: the body's own coordinate and rate integrate f from ic_disp and
+ * ic_vel (no row, no states of the motion's own). */
+static void acceleration_motion_to_ground(void **state)
+{
+    (void)state;
+    const char *path = test_write_file(
+        "motion_pendulum_acceleration.xml",
+        pendulum_model("<Motion_Joint id=\"1\" type=\"EXPRESSION\" joint_id=\"1\" val_type=\"A\""
+                       " ic_disp=\"0.05\" ic_vel=\"-0.1\" expr=\"0.2*SIN(2*PI*TIME)\"/>\n"));
+    sim s;
+    sim_run(&s, path, HX_METHOD_DOPRI5, 1e-10, 1.0, 0.1);
+    assert_int_equal(s.dynamics.nmotions, 0);
+    assert_int_equal(s.dynamics.nmotion_states, 0);
+    assert_int_equal(s.dynamics.driver[1], 0);
+    const int q = sim_joint_q(&s, 1), u = sim_joint_u(&s, 1);
+    for (int row = 0; row < s.path.rows; ++row) {
+        const double t = s.path.t[row];
+        assert_close(sim_state(&s, row, q), accel_displacement(0.05, -0.1, t), 0, 1e-10);
+        assert_close(sim_state(&s, row, u), accel_velocity(-0.1, t), 0, 1e-10);
+    }
+    sim_close(&s);
+}
+
 /* What the readers refuse, each at its file:line (and column for the
  * expression's input). */
 static void refused_expressions(void **state)
@@ -378,10 +565,6 @@ static void refused_expressions(void **state)
          "<Motion_Joint id=\"1\" type=\"EXPRESSION\" joint_id=\"1\" expr=\"TIME\""
          " usrsub_param_string=\"USER(1, 1)\"/>\n",
          {"motion_both.xml:15:", "Motion_Joint 1", "takes no user routine"}},
-        {"motion_slider_acceleration.xml",
-         "<Motion_Joint id=\"1\" type=\"EXPRESSION\" joint_id=\"2\" val_type=\"A\" expr=\"TIME\"/>\n",
-         {"motion_slider_acceleration.xml:15:", "Motion_Joint 1: val_type A on joint 2",
-          "displacement or velocity"}},
         {"motion_slider_icdisp.xml",
          "<Motion_Joint id=\"1\" type=\"EXPRESSION\" joint_id=\"2\" val_type=\"V\" ic_disp=\"0.1\""
          " expr=\"TIME\"/>\n",
@@ -434,6 +617,45 @@ static void dataset_motion_function(void **state)
                     "reads TIME alone");
 }
 
+/* The dataset's form: tests/data/redundant/four_bar_revolutes.adm with
+ * MOTION/1, JOINT = 1, ROTATION, ACCELERATION, ICVEL = 2, FUNCTION =
+ * 0.5*SIN(2*PI*TIME) on the crank's revolute (not reduced: the crank has two
+ * joints): AZ from 0 where the model places it, against 2 t + (0.5 / 2 pi) t -
+ * (0.5 / 4 pi^2) sin 2 pi t, by hand. */
+static void dataset_acceleration_motion(void **state)
+{
+    (void)state;
+    FILE *f = fopen(DATA_DIR "/redundant/four_bar_revolutes.adm", "r");
+    assert_non_null(f);
+    static char text[8192];
+    const size_t n = fread(text, 1, sizeof text - 256, f);
+    fclose(f);
+    text[n] = '\0';
+    char *end = strstr(text, "\nEND");
+    assert_non_null(end);
+    snprintf(end, sizeof text - (size_t)(end - text),
+             "\nMOTION/1, JOINT = 1, ROTATION, ACCELERATION, ICVEL = 2\n"
+             ", FUNCTION = 0.5*SIN(2*PI*TIME)\nEND\n");
+    sim s;
+    sim_run(&s, test_write_file("four_bar_accelerated.adm", text), HX_METHOD_DOPRI5, 1e-10, 1.0,
+            0.05);
+    assert_int_equal(s.session.model->nunsimulated, 0);
+    assert_int_equal(s.dynamics.nmotion_states, 2);
+    double worst = 0.0;
+    for (int row = 0; row < s.path.rows; ++row) {
+        const double t = s.path.t[row], *y = s.path.y + (size_t)row * (size_t)s.path.n;
+        const double closed = 2.0 * t + 0.5 / (2.0 * M_PI) * t -
+                              0.5 / (4.0 * M_PI * M_PI) * sin(2.0 * M_PI * t);
+        double a;
+        hx_joint_coordinate_near(&s.dynamics, 0, 'R', y, closed, &a, NULL, NULL);
+        worst = fmax(worst, fabs(a - closed));
+    }
+    printf("the dataset's acceleration motion on the four-bar's crank: %.3g from the closed"
+           " form\n", worst);
+    assert_true(worst < 1e-10);
+    sim_close(&s);
+}
+
 /* The driven slider-crank (tests/data/driven_slider_crank.xml and its
  * dataset twin, MOTION/1 ... FUNCTION = 10*TIME; not among the bundled
  * examples: its crank's acceleration row is zero, which test_jacobian's
@@ -479,8 +701,12 @@ int main(void)
         cmocka_unit_test(expression_against_motsub),
         cmocka_unit_test(velocity_motion_integrated),
         cmocka_unit_test(velocity_motion_between_moving_bodies),
+        cmocka_unit_test(acceleration_motion_between_moving_bodies),
+        cmocka_unit_test(acceleration_motion_on_a_revolute_between_bodies),
+        cmocka_unit_test(acceleration_motion_to_ground),
         cmocka_unit_test(refused_expressions),
         cmocka_unit_test(dataset_motion_function),
+        cmocka_unit_test(dataset_acceleration_motion),
         cmocka_unit_test(bundled_driven_slider_crank),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -294,7 +294,17 @@ int hx_command_run(int argc, char **argv)
         hx_command_schedule_free(&schedule);
         return 1;
     }
-    /* the redundant constraint rows the set-up removed, each said once */
+    /* the redundant constraint rows the set-up removed, each said once, after how the
+     * assembly changed them */
+    char no_longer[2048], now[2048];
+    if (hx_redundancy_change(&d, no_longer, now, sizeof no_longer) > 0) {
+        if (no_longer[0] != '\0')
+            fprintf(stderr, "run: note: the assembly moved the parts to where %s, redundant"
+                    " where the model places them, is not: kept\n", no_longer);
+        if (now[0] != '\0')
+            fprintf(stderr, "run: note: the assembly moved the parts to where %s, not redundant"
+                    " where the model places them, is: removed\n", now);
+    }
     for (int k = 0; k < d.nremoved; ++k) {
         char name[160];
         fprintf(stderr, "run: note: %s is redundant and removed\n",

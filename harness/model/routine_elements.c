@@ -357,8 +357,8 @@ int hx_draft_resolve_routines(hx_draft *d)
             return -1;
         }
         /* a body's one joint to ground moves the body; any other revolute, translational
-         * or cylindrical joint is a row of the constraint system, driven in displacement
-         * (docs/interface.md §7.14) */
+         * or cylindrical joint is a row of the constraint system, driven in displacement,
+         * velocity or acceleration (docs/interface.md §7.12) */
         const enum hx_joint_type type = m->joints[joint].type;
         if (!m->joints[joint].reduced && type != HX_JOINT_REVOLUTE &&
             type != HX_JOINT_TRANSLATIONAL && type != HX_JOINT_CYLINDRICAL) {
@@ -371,12 +371,6 @@ int hx_draft_resolve_routines(hx_draft *d)
             hx_draft_fail(d, r->line, "Motion_Joint %d: joint %d is cylindrical: motion_type"
                           " must say which of its coordinates is driven (R its rotation, T its"
                           " translation)", r->id, r->joint_id);
-            return -1;
-        }
-        if (!m->joints[joint].reduced && r->val_type == 'A') {
-            hx_draft_fail(d, r->line, "Motion_Joint %d: val_type A on joint %d, which is not a"
-                          " body's only joint to ground: the harness drives such a joint in"
-                          " displacement or velocity (val_type D or V) only", r->id, r->joint_id);
             return -1;
         }
         if (!m->joints[joint].reduced && r->val_type == 'V' && r->ic_given[0]) {

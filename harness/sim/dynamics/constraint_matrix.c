@@ -98,6 +98,21 @@ void hx_constraint_matrix_gram(const hx_dynamics *d, const double *G, double *W,
     }
 }
 
+void hx_constraint_matrix_gram_all(const hx_dynamics *d, const double *G, double *W, double *A)
+{
+    const int n = d->nrows;
+    for (int i = 0; i < n; ++i) {
+        const hx_constraint_row *r = &d->rows[i];
+        for (int b = 0; b < r->nblocks; ++b) {
+            const size_t at = (size_t)d->row_values * (size_t)i + (size_t)r->slot[b];
+            hx_constraint_matrix_inverse_mass(d, r->body[b], G + at, W + at);
+        }
+    }
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+            A[i * n + j] = pair_product(d, G, W, i, j);
+}
+
 /* Forms G M^-1 G^T at G for the solves that follow: dense into A (each
  * solve takes it apart: form it again before the next), or its envelope,
  * factored once (d->envelope_first set: hx_constraints_plan). */

@@ -22,6 +22,10 @@ void hx_constraint_matrix_inverse_mass(const hx_dynamics *d, int body, const dou
  * nactive x nactive row-major in d->active's order. */
 void hx_constraint_matrix_gram(const hx_dynamics *d, const double *G, double *W, double *A);
 
+/* The same over every row, active or not (nrows x nrows): the redundancy
+ * test's (redundancy.h). */
+void hx_constraint_matrix_gram_all(const hx_dynamics *d, const double *G, double *W, double *A);
+
 /* The matrix at G for the solves that follow: dense into A (each solve takes
  * it apart: form it again before the next), or its envelope factored once.
  * 0, or -1 when the envelope's factorization finds it singular. */

@@ -186,6 +186,8 @@ void hx_constraints_free(hx_dynamics *d)
     free(d->u_body);
     free(d->active);
     free(d->removed);
+    free(d->removed_placed);
+    free(d->assembled_q);
     free(d->envelope_first);
     free(d->envelope_start);
     free(d->coupler_general);
@@ -274,8 +276,9 @@ static int constraint_jacobian(const hx_dynamics *d, hx_dynamics_data *dd, doubl
     return 0;
 }
 
-/* What row i's G u must equal: f'(t) of a motion, -df/dt of a general
- * constraint, else 0. */
+/* What row i's G u must equal: f'(t) of a motion (f of a velocity motion, the
+ * velocity state of an acceleration motion), -df/dt of a general constraint,
+ * else 0. */
 static int row_rate(const hx_dynamics *d, hx_dynamics_data *dd, int i, double t,
                     const double *y, double *rate)
 {
@@ -284,7 +287,7 @@ static int row_rate(const hx_dynamics *d, hx_dynamics_data *dd, int i, double t,
         return hx_expression_rows_rate(d, dd, i - d->gcon_first, t, y, parts(d, dd).expression,
                                        rate);
     if (i >= d->motion_first)
-        return hx_coordinate_rows_rate(d, dd, i, t, rate);
+        return hx_coordinate_rows_rate(d, dd, i, t, y, rate);
     return 0;
 }
 
@@ -410,26 +413,27 @@ static void move_positions(const hx_dynamics *d, const double *x, double *y)
     }
 }
 
-int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t, double *y)
+/* Positions: Newton on phi(q) = 0 over the active rows with the mass-weighted
+ * least-change step, quaternions made unit first; the largest scaled residual of
+ * the active rows left in *err, its row in *worst. 0, or -1 (dd->message: a
+ * singular matrix or a failed row). */
+static int newton_positions(const hx_dynamics *d, hx_dynamics_data *dd, double t, double *y,
+                            double *err, int *worst)
 {
     for (int k = 0; k < d->m->nbodies; ++k)
         if (d->dof[k].kind == HX_DOF_FREE)
             quat_normalize(y + d->dof[k].q + 3);
-    const int n = d->nactive;
+    *err = 0.0, *worst = 0;
     if (d->nrows == 0)
         return 0;
+    const int n = d->nactive;
     work w = parts(d, dd);
-    /* positions: Newton on phi(q) = 0 over the active rows with the
-     * mass-weighted least-change step */
-    double err;
-    int worst = 0;
-    char name[160];
     for (int it = 0;; ++it) {
         if (constraint_jacobian(d, dd, t, y, w.G, w.phi, NULL) != 0)
             return -1;
-        err = scaled_error(d, w.phi, &worst);
-        if (err <= PHI_TOLERANCE || it == PROJECTION_ITERATIONS)
-            break;
+        *err = scaled_error(d, w.phi, worst);
+        if (*err <= PHI_TOLERANCE || it == PROJECTION_ITERATIONS)
+            return 0;
         const int formed = hx_constraint_matrix_form(d, w.G, w.W, w.A);
         for (int a = 0; a < n; ++a)
             w.step[a] = w.phi[d->active[a]];
@@ -438,6 +442,28 @@ int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t,
         transpose_apply(d, w.G, w.step, w.x);
         move_positions(d, w.x, y);
     }
+}
+
+int hx_constraints_assemble(const hx_dynamics *d, hx_dynamics_data *dd, double t, double *y)
+{
+    double err;
+    int worst;
+    if (newton_positions(d, dd, t, y, &err, &worst) != 0)
+        return -1;
+    return err > ASSEMBLY_TOLERANCE ? hx_dynamics_fail(dd, "the active rows are not met") : 0;
+}
+
+int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t, double *y)
+{
+    double err;
+    int worst = 0;
+    char name[160];
+    if (newton_positions(d, dd, t, y, &err, &worst) != 0)
+        return -1;
+    if (d->nrows == 0)
+        return 0;
+    const int n = d->nactive;
+    work w = parts(d, dd); /* w.G and w.phi: the rows at the positions Newton left */
     if (err > ASSEMBLY_TOLERANCE)
         return hx_dynamics_fail(dd, "the joints and couplers cannot be satisfied at t = %g: |phi|"
                                 " %.3g (of the model's size) after %d Newton steps, the largest"

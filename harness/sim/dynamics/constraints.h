@@ -52,6 +52,12 @@ int hx_constraints_projector(const hx_dynamics *d, hx_dynamics_data *dd, double 
  * residuals left kept in dd->max_phi, max_phidot; returns 0 or -1. */
 int hx_constraints_project(const hx_dynamics *d, hx_dynamics_data *dd, double t, double *y);
 
+/* The positions alone projected onto the active rows (quaternions made unit,
+ * Newton as hx_constraints_project's), the removed rows not checked: the
+ * set-up's assembly before the redundant rows are found again
+ * (redundancy.h). 0, or -1 (dd->message) when the active rows are not met. */
+int hx_constraints_assemble(const hx_dynamics *d, hx_dynamics_data *dd, double t, double *y);
+
 /* Largest |phi| and |dphi/dt| of the rows at a state. */
 int hx_constraints_residuals(const hx_dynamics *d, hx_dynamics_data *dd, double t,
                              const double *y, double *phi, double *phidot);

@@ -108,20 +108,26 @@ static int coupler_terms(const hx_dynamics *d, hx_dynamics_data *dd, int k, doub
  * and 2 at t (the rotation unwrapped against f); in velocity (val_type V)
  * the row holds G u = f(t) and G u_dot = f'(t) - c, and phi = 0: the
  * coordinate is where the integrated rates take it, which the position
- * projection leaves (its Newton step has no component along the row). */
+ * projection leaves (its Newton step has no component along the row); in
+ * acceleration (val_type A) phi = a(q) - s with s the motion's displacement
+ * state (unwrapped against s), G u held to its velocity state v, and
+ * G u_dot = f(t) - c, MOTSUB's iord 0: the states integrate f, the row holds
+ * the joint to them. */
 int hx_coordinate_rows_motion(const hx_dynamics *d, hx_dynamics_data *dd, int k, double t,
                               const double *y, double *phi, double G[12], double *gamma)
 {
     const int routine = d->motion_routine[k];
     const hx_routine *rt = &d->m->routines[routine];
-    double f, accel = 0.0, value, c;
+    double f = 0.0, accel = 0.0, value, c;
     dd->frames.time = t;
-    if (rt->val_type == 'V') {
-        if (gamma != NULL && hx_routines_motion(d, dd, routine, 1, &accel) != 0)
+    if (rt->val_type == 'V' || rt->val_type == 'A') {
+        if (gamma != NULL &&
+            hx_routines_motion(d, dd, routine, rt->val_type == 'V' ? 1 : 0, &accel) != 0)
             return -1;
+        const double s = rt->val_type == 'A' ? y[d->motion_state[k]] : 0.0;
         memset(G, 0, sizeof(double) * 12);
-        hx_joint_coordinate_near(d, rt->joint, rt->motion_type, y, 0.0, &value, G, &c);
-        *phi = 0.0;
+        hx_joint_coordinate_near(d, rt->joint, rt->motion_type, y, s, &value, G, &c);
+        *phi = rt->val_type == 'A' ? value - s : 0.0;
         if (gamma != NULL)
             *gamma = accel - c;
         return 0;
@@ -138,11 +144,15 @@ int hx_coordinate_rows_motion(const hx_dynamics *d, hx_dynamics_data *dd, int k,
 }
 
 /* What G u is held to at row i: a motion's rate f'(t) (f(t) for val_type
- * V), else 0 (not called). */
+ * V, the velocity state for A), else 0 (not called). */
 int hx_coordinate_rows_rate(const hx_dynamics *d, hx_dynamics_data *dd, int i, double t,
-                            double *rate)
+                            const double *y, double *rate)
 {
-    const int routine = d->motion_routine[i - d->motion_first];
+    const int k = i - d->motion_first, routine = d->motion_routine[k];
+    if (d->motion_state[k] >= 0) {
+        *rate = y[d->motion_state[k] + 1];
+        return 0;
+    }
     dd->frames.time = t;
     return hx_routines_motion(d, dd, routine, d->m->routines[routine].val_type == 'V' ? 0 : 1,
                               rate);

@@ -23,14 +23,17 @@ double hx_coordinate_rows_force(const hx_dynamics *d, hx_dynamics_data *dd, doub
 
 /* Motion row k (d->motion_routine[k]): phi = a(q) - f(t), G (12 values: I's
  * body block, J's) and gamma = f''(t) - c (may be NULL); for a velocity
- * motion (val_type V) phi = 0 and gamma = f'(t) - c. 0 or -1. */
+ * motion (val_type V) phi = 0 and gamma = f'(t) - c; for an acceleration
+ * motion (A) phi = a(q) - s, s its displacement state in y
+ * (d->motion_state[k]), and gamma = f(t) - c. 0 or -1. */
 int hx_coordinate_rows_motion(const hx_dynamics *d, hx_dynamics_data *dd, int k, double t,
                               const double *y, double *phi, double G[12], double *gamma);
 
-/* What G u is held to at motion row i (an index among all rows): f'(t), or
- * f(t) for a velocity motion. */
+/* What G u is held to at motion row i (an index among all rows) at (t, y):
+ * f'(t), f(t) for a velocity motion, the velocity state for an acceleration
+ * motion. */
 int hx_coordinate_rows_rate(const hx_dynamics *d, hx_dynamics_data *dd, int i, double t,
-                            double *rate);
+                            const double *y, double *rate);
 
 /* The rate G u of joint `joint`'s coordinate in freedom at y. */
 double hx_coordinate_rows_joint_rate(const hx_dynamics *d, int joint, char freedom,

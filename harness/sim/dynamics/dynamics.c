@@ -60,7 +60,7 @@ static int init_parts(hx_dynamics *d, hx_session *s, hx_message *msg)
         hx_joint_turns_init(d, msg) != 0 || hx_stateeqns_init(d, msg) != 0 ||
         hx_routines_init(d, msg) != 0)
         return -1;
-    d->load_work = d->diff_offset + d->ndiffs;
+    d->load_work = d->motion_state_offset + d->nmotion_states;
     d->element_work = d->load_work + 1;
     d->n = d->element_work + 1;
     for (int k = 0; k < nc; ++k)
@@ -72,7 +72,8 @@ static int init_parts(hx_dynamics *d, hx_session *s, hx_message *msg)
     return 0;
 }
 
-/* The redundant rows, at the model's initial configuration (redundancy.h). */
+/* The redundant rows, at the model's initial configuration and again where the
+ * assembly takes it (redundancy.h). */
 static int find_redundant(hx_dynamics *d, hx_message *msg)
 {
     hx_dynamics_data dd;
@@ -84,8 +85,8 @@ static int find_redundant(hx_dynamics *d, hx_message *msg)
         hx_fail(msg, "out of memory");
     else if (hx_dynamics_model_state(d, &dd, y) != 0)
         hx_fail(msg, "%s", dd.message);
-    else
-        status = hx_redundancy_find(d, &dd, y, msg);
+    else if ((status = hx_redundancy_find(d, &dd, y, msg)) == 0)
+        status = hx_redundancy_reassess(d, &dd, msg);
     free(y);
     hx_dynamics_data_free(&dd);
     return status;
@@ -221,6 +222,8 @@ int hx_dynamics_initial_state(const hx_dynamics *d, hx_dynamics_data *dd, double
 {
     if (hx_dynamics_model_state(d, dd, y) != 0)
         return -1;
+    if (d->assembled_q != NULL) /* where the set-up found the redundant rows it keeps */
+        memcpy(y, d->assembled_q, sizeof(double) * (size_t)d->nq);
     dd->max_phi = dd->max_phidot = 0.0;
     return hx_constraints_project(d, dd, 0.0, y);
 }

@@ -29,7 +29,8 @@
  *
  * State layout y: [positions (nq) | velocities (nu) | the Force_StateEqn
  * elements' states (nstates, element by element in the model's order) | the
- * Control_Diff states (ndiffs, routines.h) | work done by the loads and the
+ * Control_Diff states (ndiffs, routines.h) | an acceleration motion's displacement
+ * and velocity between bodies (2 a motion, routines.h) | work done by the loads and the
  * time-dependent constraints (the motions, the general constraints of TIME) | work
  * done by the force elements, Force_StateEqn ones included]. Units follow the
  * model; mass * acceleration = ucf * force, as in a solver with an
@@ -76,6 +77,8 @@ typedef struct hx_dynamics {
     int nq, nu, n;                /* positions, velocities, the whole of y */
     int stateeqn_offset, nstates; /* y offset and count of the Force_StateEqn states */
     int diff_offset, ndiffs;      /* y offset and count of the Control_Diff states */
+    int motion_state_offset, nmotion_states; /* y offset and count of the acceleration
+                                   * motions' states between bodies (routines.h) */
     int diffs_read_variables;     /* a Control_Diff's expression reads a variable */
     int load_work, element_work;  /* y indices of the work done by loads and the drives
                                    * (motions, GCONs of TIME), and by elements */
@@ -85,6 +88,8 @@ typedef struct hx_dynamics {
                                    * constraints' */
     int motion_first, nmotions;   /* the motions' rows: from motion_first, one a motion */
     int *motion_routine;          /* per motion row: its Motion_Joint routine (model.h) */
+    int *motion_state;            /* per motion row: the y index of an acceleration motion's
+                                   * displacement state (its velocity state the next), or -1 */
     int gcon_first;               /* the general constraints' rows: from gcon_first, one a
                                    * Constraint_General (expression_rows.h) */
     int row_values;               /* values a row of G keeps (hx_constraint_row) */
@@ -94,8 +99,14 @@ typedef struct hx_dynamics {
     int *turn_joint, *turn_coupler; /* per such rotation: its joint, the first coupler on it */
     hx_constraint_row *rows;
     int nactive, *active;         /* the rows the solves take, ascending (all of them but
-                                   * the redundant rows found at set-up: redundancy.h) */
+                                   * the redundant rows found at set-up, at the assembled
+                                   * configuration: redundancy.h) */
     int nremoved, *removed;       /* the redundant rows, ascending */
+    int nremoved_placed, *removed_placed; /* the redundant rows at the model's placed
+                                   * configuration, before the set-up's assembly */
+    double *assembled_q;          /* nq: the positions the set-up's assembly reached when
+                                   * it changed the redundant rows (the run's projection
+                                   * starts there), or NULL */
     int *envelope_first;          /* per active row: the first active row it shares a body
                                    * with (G M^-1 G^T's envelope), or NULL: solved dense */
     size_t *envelope_start;       /* per active row: its place in the envelope's values */

@@ -5,23 +5,26 @@
  * independent of the rows kept, in the metric M^-1) is below tol^2 of its
  * diagonal (its own squared size), so the test is relative to each row's
  * scale and the later joint's equations are the ones removed, as Adams
- * removes them. It runs once, at set-up (docs/architecture.md, the
- * constraint system).
+ * removes them. It runs at set-up, at the model's placed configuration and
+ * again at each configuration the set-up's assembly reaches until the set
+ * holds (docs/architecture.md, the constraint system).
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "sim/dynamics/constraint_matrix.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/joint_equations.h"
 #include "sim/dynamics/redundancy.h"
 
-int hx_redundancy_find(hx_dynamics *d, hx_dynamics_data *dd, const double *y, hx_message *msg)
+/* The rank test at y into kept and removed (d->nrows of room each, every row
+ * taken as active); their counts in *nkept, *nremoved. 0, or -1 with msg. */
+static int rank_at(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                   int *kept, int *nkept_, int *removed, int *nremoved_, hx_message *msg)
 {
     const int n = d->nrows;
-    if (n == 0)
-        return 0;
     const size_t nn = (size_t)n;
     const size_t v = (size_t)d->row_values;
     double *G = malloc(sizeof(double) * v * nn), *W = malloc(sizeof(double) * v * nn);
@@ -32,14 +35,13 @@ int hx_redundancy_find(hx_dynamics *d, hx_dynamics_data *dd, const double *y, hx
         hx_fail(msg, "out of memory");
         goto done;
     }
-    if (hx_constraints_rows(d, dd, 0.0, y, phi, G, NULL) != 0) {
+    if (hx_constraints_rows(d, dd, t, y, phi, G, NULL) != 0) {
         hx_fail(msg, "%s", dd->message);
         goto done;
     }
-    hx_constraint_matrix_gram(d, G, W, A); /* every row active here */
+    hx_constraint_matrix_gram_all(d, G, W, A);
     const double tol2 = HX_REDUNDANCY_TOLERANCE * HX_REDUNDANCY_TOLERANCE;
     int nkept = 0, nremoved = 0;
-    int *kept = d->active; /* filled in order as rows are kept */
     for (int i = 0; i < n; ++i) {
         /* L's row i against the kept rows, then its pivot */
         double pivot = A[i * n + i];
@@ -52,17 +54,125 @@ int hx_redundancy_find(hx_dynamics *d, hx_dynamics_data *dd, const double *y, hx
             pivot -= L[i * n + j] * L[i * n + j];
         }
         if (!(pivot > tol2 * A[i * n + i])) {
-            d->removed[nremoved++] = i;
+            removed[nremoved++] = i;
             continue;
         }
         L[i * n + i] = sqrt(pivot);
         kept[nkept++] = i;
     }
-    d->nactive = nkept, d->nremoved = nremoved;
+    *nkept_ = nkept, *nremoved_ = nremoved;
     status = 0;
 done:
     free(G), free(W), free(A), free(phi), free(L);
     return status;
+}
+
+int hx_redundancy_find(hx_dynamics *d, hx_dynamics_data *dd, const double *y, hx_message *msg)
+{
+    if (d->nrows == 0)
+        return 0;
+    return rank_at(d, dd, 0.0, y, d->active, &d->nactive, d->removed, &d->nremoved, msg);
+}
+
+/* Whether two ascending lists of rows differ. */
+static int lists_differ(const int *a, int na, const int *b, int nb)
+{
+    if (na != nb)
+        return 1;
+    for (int k = 0; k < na; ++k)
+        if (a[k] != b[k])
+            return 1;
+    return 0;
+}
+
+/* Whether the assembly moved a position of y from y0 beyond the rounding of
+ * its projection. */
+static int moved(const hx_dynamics *d, const double *y0, const double *y)
+{
+    for (int k = 0; k < d->nq; ++k)
+        if (fabs(y[k] - y0[k]) > 1e-12 * (1.0 + fabs(y0[k])))
+            return 1;
+    return 0;
+}
+
+int hx_redundancy_reassess(hx_dynamics *d, hx_dynamics_data *dd, hx_message *msg)
+{
+    const size_t n = (size_t)d->nrows;
+    d->nremoved_placed = d->nremoved;
+    d->removed_placed = malloc(sizeof(int) * (n + 1));
+    double *y = malloc(sizeof(double) * ((size_t)d->n + 1));
+    double *y0 = malloc(sizeof(double) * ((size_t)d->n + 1));
+    int *kept = malloc(sizeof(int) * (n + 1)), *removed = malloc(sizeof(int) * (n + 1));
+    int status = -1;
+    if (d->removed_placed == NULL || y == NULL || y0 == NULL || kept == NULL || removed == NULL) {
+        hx_fail(msg, "out of memory");
+        goto done;
+    }
+    memcpy(d->removed_placed, d->removed, sizeof(int) * (size_t)d->nremoved);
+    status = 0;
+    if (hx_dynamics_model_state(d, dd, y) != 0)
+        goto done; /* the run's own start says why */
+    int changed = 0;
+    for (int pass = 0; pass < HX_REDUNDANCY_PASSES; ++pass) {
+        memcpy(y0, y, sizeof(double) * (size_t)d->n);
+        /* a pass that cannot meet the active rows leaves the set as it is: the run's
+         * assembly names what fails */
+        if (hx_constraints_assemble(d, dd, 0.0, y) != 0 || !moved(d, y0, y))
+            break;
+        int nkept, nremoved;
+        if (rank_at(d, dd, 0.0, y, kept, &nkept, removed, &nremoved, msg) != 0) {
+            status = -1;
+            goto done;
+        }
+        if (!lists_differ(removed, nremoved, d->removed, d->nremoved))
+            break;
+        memcpy(d->active, kept, sizeof(int) * (size_t)nkept);
+        memcpy(d->removed, removed, sizeof(int) * (size_t)nremoved);
+        d->nactive = nkept, d->nremoved = nremoved;
+        changed = 1;
+    }
+    if (changed) { /* the run starts from the configuration the set was found at */
+        d->assembled_q = malloc(sizeof(double) * ((size_t)d->nq + 1));
+        if (d->assembled_q == NULL) {
+            status = hx_fail(msg, "out of memory");
+            goto done;
+        }
+        memcpy(d->assembled_q, y, sizeof(double) * (size_t)d->nq);
+    }
+done:
+    free(y), free(y0), free(kept), free(removed);
+    return status;
+}
+
+/* Appends row's name to text (size in all) after a separator when text is not empty. */
+static void append_row(const hx_dynamics *d, int row, char *text, size_t size)
+{
+    char name[160];
+    const size_t used = strlen(text);
+    snprintf(text + used, size - used, "%s%s", used > 0 ? ", " : "",
+             hx_redundancy_name_row(d, row, name, sizeof name));
+}
+
+/* Whether row is in the ascending list. */
+static int listed(const int *list, int n, int row)
+{
+    for (int k = 0; k < n; ++k)
+        if (list[k] == row)
+            return 1;
+    return 0;
+}
+
+int hx_redundancy_change(const hx_dynamics *d, char *no_longer, char *now, size_t size)
+{
+    no_longer[0] = now[0] = '\0';
+    int count = 0;
+    for (int k = 0; k < d->nremoved_placed; ++k)
+        if (!listed(d->removed, d->nremoved, d->removed_placed[k]))
+            append_row(d, d->removed_placed[k], no_longer, size), count++;
+    for (int k = 0; k < d->nremoved; ++k)
+        if (!listed(d->removed_placed, d->nremoved_placed, d->removed[k]))
+            append_row(d, d->removed[k], now, size), count++;
+    return count;
 }
 
 const char *hx_redundancy_name_row(const hx_dynamics *d, int row, char *text, size_t size)

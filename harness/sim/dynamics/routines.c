@@ -47,6 +47,20 @@ int hx_routines_init(hx_dynamics *d, hx_message *msg)
         if (m->joints[r->joint].reduced)
             d->driver[body] = k;
     }
+    /* an acceleration motion between bodies: its displacement and velocity are states
+     * after the Control_Diff states (docs/architecture.md, the constraint system) */
+    d->motion_state_offset = d->diff_offset + d->ndiffs;
+    d->nmotion_states = 0;
+    d->motion_state = malloc(sizeof(int) * ((size_t)d->nmotions + 1));
+    if (d->motion_state == NULL)
+        return hx_fail(msg, "out of memory");
+    for (int k = 0; k < d->nmotions; ++k) {
+        d->motion_state[k] = -1;
+        if (m->routines[d->motion_routine[k]].val_type == 'A') {
+            d->motion_state[k] = d->motion_state_offset + d->nmotion_states;
+            d->nmotion_states += 2;
+        }
+    }
     return 0;
 }
 
@@ -54,6 +68,7 @@ void hx_routines_free(hx_dynamics *d)
 {
     free(d->routine_binding);
     free(d->driver);
+    free(d->motion_state);
 }
 
 void hx_routines_set_state(const hx_dynamics *d, hx_dynamics_data *dd, const double *y)
@@ -111,6 +126,19 @@ int hx_routines_initial(const hx_dynamics *d, hx_dynamics_data *dd, double *y)
         if ((r->val_type == 'D' && (hx_routines_motion(d, dd, k, 0, q) != 0 || hx_routines_motion(d, dd, k, 1, u) != 0)) ||
             (r->val_type == 'V' && hx_routines_motion(d, dd, k, 0, u) != 0))
             return -1;
+    }
+    /* an acceleration motion between bodies starts at ic_disp and ic_vel, or where the
+     * model places its joint and at the rate the bodies' initial velocities give it */
+    for (int k = 0; k < d->nmotions; ++k) {
+        const int at = d->motion_state[k];
+        if (at < 0)
+            continue;
+        const hx_routine *r = &m->routines[d->motion_routine[k]];
+        double value;
+        hx_joint_coordinate_near(d, r->joint, r->motion_type, y, 0.0, &value, NULL, NULL);
+        y[at] = r->ic_given[0] ? r->ic[0] : value;
+        y[at + 1] = r->ic_given[1] ? r->ic[1]
+                                   : hx_coordinate_rows_joint_rate(d, r->joint, r->motion_type, y);
     }
     return 0;
 }
@@ -187,6 +215,16 @@ int hx_routines_apply(const hx_dynamics *d, hx_dynamics_data *dd, const double *
          * motion's, m (udot - udot_free) / ucf, times the joint rate (docs/architecture.md,
          * the energy balance) */
         ydot[d->load_work] += d->dof[body].mass * (*udot - free_udot) / d->ucf * rate;
+    }
+    /* an acceleration motion between bodies: its displacement's rate is its velocity, its
+     * velocity's the motion (its row holds the joint to both, coordinate_rows.h) */
+    for (int k = 0; k < d->nmotions; ++k) {
+        const int at = d->motion_state[k];
+        if (at < 0)
+            continue;
+        ydot[at] = y[at + 1];
+        if (hx_routines_motion(d, dd, d->motion_routine[k], 0, &ydot[at + 1]) != 0)
+            return -1;
     }
     return 0;
 }

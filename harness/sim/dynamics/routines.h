@@ -13,6 +13,10 @@
  *    (expr/time_derivative.h).
  *    The coordinate follows the integrated rates, within the integrator's
  *    tolerance of MOTSUB's value (the CSV's motionID.error says how far).
+ *    On a joint between bodies the motion is a row (coordinate_rows.h); one
+ *    in acceleration has its displacement and velocity as two states of y
+ *    (d->motion_state), integrated here from its value, started at ic_disp
+ *    and ic_vel (or the joint's coordinate and rate as the model places it).
  *  - Post_Request (REQSUB) and USERSUB Reference_Variable (VARSUB) values are
  *    outputs: computed at the output times, for the CSV.
  */
@@ -23,9 +27,10 @@
 
 #include "sim/dynamics/dynamics.h"
 
-/* Sets d->diff_offset and d->ndiffs (after the Force_StateEqn states) and the
- * driven bodies; refuses an implicit Control_Diff and a motion on a coupled
- * joint. 0, or -1 with msg. */
+/* Sets d->diff_offset and d->ndiffs (after the Force_StateEqn states), the
+ * acceleration motions' states (after those) and the driven bodies; refuses
+ * an implicit Control_Diff and a motion on a coupled joint. 0, or -1 with
+ * msg. */
 int hx_routines_init(hx_dynamics *d, hx_message *msg);
 void hx_routines_free(hx_dynamics *d);
 
@@ -34,12 +39,14 @@ void hx_routines_free(hx_dynamics *d);
 void hx_routines_set_state(const hx_dynamics *d, hx_dynamics_data *dd, const double *y);
 
 /* Initial values: ic of each Control_Diff, the driven joints' coordinates
- * and rates; 0 or -1 (dd->message). */
+ * and rates, an acceleration motion's states between bodies (y's bodies
+ * set already); 0 or -1 (dd->message). */
 int hx_routines_initial(const hx_dynamics *d, hx_dynamics_data *dd, double *y);
 
 /* The routines stage, at dd->frames: the Control_Diff rates into ydot (and
  * dd->frames's DIF1), the driven joints' rates and accelerations over the
- * bodies', and the drives' power added to ydot[d->load_work]. 0 or -1. */
+ * bodies', an acceleration motion's states' rates (v and f), and the drives'
+ * power added to ydot[d->load_work]. 0 or -1. */
 int hx_routines_apply(const hx_dynamics *d, hx_dynamics_data *dd, const double *y, double *ydot);
 
 /* The rate of the Control_Diff by expression routine k at dd->frames (its

@@ -187,6 +187,9 @@ int hx_jacobian_pattern(hx_jacobian *jac, int widen, hx_message *msg)
             for (int j = 0; j < nc; ++j)
                 add(&p, d->diff_offset + m->routines[k].slot, cols[j]);
         }
+    for (int k = 0; k < d->nmotions; ++k) /* an acceleration motion's s' = v */
+        if (d->motion_state[k] >= 0)
+            add(&p, d->motion_state[k], d->motion_state[k] + 1);
     coupled_rows(&p, jac);
     hx_sparsity built = {0};
     const int status =

@@ -7,7 +7,8 @@
  * the columns that rate depends on in turn, the rate computed again at each
  * moved state; an expression's partials in the states it reads by DIF are
  * exact where it reads neither a variable nor a rate. A driven joint's
- * rows, functions of time alone, are zero.
+ * rows, functions of time alone, are zero; an acceleration motion's states
+ * between bodies s' = v (1) and v' = f(t) (zero).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -253,6 +254,10 @@ int hx_routine_blocks(hx_jacobian *jac, double t, const double *y)
     const hx_model *m = d->m;
     if (m->nroutines == 0)
         return 0;
+    static const double one = 1.0;
+    for (int k = 0; k < d->nmotions; ++k)
+        if (d->motion_state[k] >= 0)
+            hx_jacobian_add(jac, d->motion_state[k], 1, d->motion_state[k] + 1, &one);
     if (m->nroutines_of[HX_ROUTINE_MOTION] > 0)
         for (int p = 0; p < jac->pattern.nnz; ++p)
             if (jac->driven[jac->pattern.rowind[p]])

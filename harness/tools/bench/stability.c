@@ -126,11 +126,12 @@ int hx_estimate_stability(const hx_dynamics *d, double t, const double *y, hx_st
                           hx_message *msg)
 {
     memset(out, 0, sizeof *out);
-    /* the element states follow the velocities, the Control_Diff states follow
-     * them (docs/architecture.md, the layout of y): bristles that slide fast,
+    /* the element states follow the velocities, the Control_Diff states and an
+     * acceleration motion's follow them (docs/architecture.md, the layout of y):
+     * bristles that slide fast,
      * or a filter's fast state, are a model's fastest mode; only the work
      * accumulators, which nothing reads, are left out */
-    const int n = d->n, m = d->diff_offset + d->ndiffs;
+    const int n = d->n, m = d->load_work;
     hx_dynamics_data dd;
     if (hx_dynamics_data_init(&dd, d, msg) != 0)
         return -1;
