@@ -328,7 +328,8 @@ static void link_errors_name_the_id(void **state)
                     "m.xml:10:5: ACCX(10): an acceleration is known only once the forces are",
                     "algebraic loop");
     assert_contains(expr_link_error(&fixture, "FM(10)", &msg),
-                    "m.xml:10:5: FM is not answered by the harness yet");
+                    "m.xml:10:5: FM(10): the forces at a marker are known only once the"
+                    " accelerations are", "algebraic loop");
 }
 
 /* Evaluation faults name the op, its place and the time; the value at

@@ -289,8 +289,8 @@ static const struct {
      {"bad.xml:6:", "Post_Request 5 is defined twice (line 5)", ""}},
 };
 
-/* A request reading a function the harness does not answer yet (another
- * element's force) is not written, with a warning naming its place: the
+/* A request reading a function the harness does not answer yet (a
+ * coupler's force) is not written, with a warning naming its place: the
  * model is still read. One reading ORIENT, as published datasets' requests
  * do, is written. */
 static void test_unanswered_function_is_a_warning(void **state)
@@ -298,7 +298,7 @@ static void test_unanswered_function_is_a_warning(void **state)
     (void)state;
     static const char text[] = STATE_DATASET
         "REQUEST/4, DISPLACEMENT, I=20\n"
-        "REQUEST/5, F1=1\\F2=FX(20,10)\n"
+        "REQUEST/5, F1=1\\F2=COUPLER(1,0,2,0)\n"
         "REQUEST/6, F2=ORIENT(27,1,20,10)\\F3=ORIENT(27,2,20,10)\n"
         "END\n";
     char path[512];
@@ -320,7 +320,7 @@ static void test_unanswered_function_is_a_warning(void **state)
     said[n] = '\0';
     fclose(warnings);
     assert_contains(said, "orient.adm:8: warning: REQUEST/5 is not written: F2:",
-                    "orient.adm:8:20: FX is not answered");
+                    "orient.adm:8:20: COUPLER is not answered");
     hx_model_free(m);
 }
 
