@@ -4,7 +4,8 @@
  * against closed forms worked by hand, DIF and DIF1 read by other states and
  * variables, the Jacobian's row against differences of the right-hand side
  * and BDF with it against BDF with differences, the XML and the dataset
- * forms bit for bit, and bad inputs refused with file:line.
+ * forms bit for bit, and bad inputs refused with file:line. The implicit
+ * form: test_implicit_diffs.c.
  */
 #include <math.h>
 #include <stdio.h>
@@ -216,8 +217,6 @@ static void bad_diffs_are_named(void **state)
     (void)state;
     sim_expect_parse_error("unknown.adm", ADM_HEAD "DIFF/1, FUNCTION=1 + DIF(9)\nEND\n",
                  (const char *const[]){"unknown.adm:6:", "DIF(9)", "no Control_Diff 9", NULL});
-    sim_expect_parse_error("implicit.adm", ADM_HEAD "DIFF/1, FUNCTION=DIF(1), IMPLICIT\nEND\n",
-                 (const char *const[]){"implicit.adm:6:", "IMPLICIT", "explicit", NULL});
     sim_expect_parse_error("nofunction.adm", ADM_HEAD "DIFF/1, IC=2\nEND\n",
                  (const char *const[]){"nofunction.adm:6:", "FUNCTION", NULL});
     sim_expect_parse_error("self.adm", ADM_HEAD "DIFF/1, FUNCTION=1 + DIF1(1)\nEND\n",
@@ -237,11 +236,6 @@ static void bad_diffs_are_named(void **state)
              "</Model></MotionSolve>\n", head);
     sim_expect_parse_error("noexpr.xml", xml,
                  (const char *const[]){"noexpr.xml:4:", "Control_Diff 1", "expr is missing", NULL});
-    snprintf(xml, sizeof xml, "%s<Control_Diff id=\"1\" type=\"EXPRESSION\" is_implicit=\"TRUE\""
-             " expr=\"DIF(1)\"/>\n</Model></MotionSolve>\n", head);
-    sim_expect_parse_error("implicit.xml", xml,
-                 (const char *const[]){"implicit.xml:4:", "Control_Diff 1", "is_implicit",
-                                       NULL});
     snprintf(xml, sizeof xml, "%s<Control_Diff id=\"1\" type=\"EXPRESSION\""
              " expr=\"DIF(1) + DX(99)\"/>\n</Model></MotionSolve>\n", head);
     sim_expect_parse_error("marker.xml", xml,

@@ -9,6 +9,7 @@
 #include "base/clock.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraints.h"
+#include "sim/dynamics/implicit_diffs.h"
 #include "sim/jacobian/jacobian.h"
 #include "sim/simulation/equilibrium.h"
 
@@ -32,6 +33,8 @@ static int rhs(void *ctx, double t, const double *y, double *ydot)
 static int project(void *ctx, double t, double *y)
 {
     run_context *rc = ctx;
+    /* a step accepted: the implicit Control_Diffs' Newton starts from its rates */
+    hx_implicit_diffs_accept(rc->d, rc->dd);
     if (hx_constraints_project(rc->d, rc->dd, t, y) != 0)
         return -1;
     return rc->d->nrows > 0 ? 1 : 0;
