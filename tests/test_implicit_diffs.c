@@ -24,26 +24,6 @@
     "ADAMS/View model\nPART/1, GROUND\nMARKER/10, PART=1\n"                                    \
     "PART/2, MASS=2, CM=20, IP=1,1,1, VX=2\nMARKER/20, PART=2, QP=3,4,0\n"
 
-static double diff_value(const model *m, const double *y, int id)
-{
-    const hx_model *mm = m->session.model;
-    const int k = hx_model_routine(mm, HX_ROUTINE_DIFF, id);
-    assert_true(k >= 0);
-    return y[m->d.diff_offset + mm->routines[k].slot];
-}
-
-static double *run(const char *name, const char *text, hx_method method,
-                   hx_jacobian_method jacobian, double rtol, double t_end, model *m)
-{
-    open_model(m, test_write_file(name, text));
-    double *y = model_state(m);
-    model_initial_state(m, y);
-    hx_simulation_result r = simulate(m, method, jacobian, rtol, t_end, y);
-    if (r.status != HX_INTEGRATION_OK)
-        fail_msg("%s: %s", name, r.message);
-    return y;
-}
-
 static const hx_method methods[3] = {HX_METHOD_DOPRI5, HX_METHOD_BDF, HX_METHOD_BDF};
 static const hx_jacobian_method jacobians[3] = {HX_JACOBIAN_ANALYTIC, HX_JACOBIAN_ANALYTIC,
                                                 HX_JACOBIAN_FD};
@@ -93,7 +73,7 @@ static void linear_residual_against_the_closed_form(void **state)
         hx_simulate(&m.d, &so, y, &r);
         assert_int_equal(r.status, HX_INTEGRATION_OK);
         assert_int_equal(outputs, 4);
-        assert_close(diff_value(&m, y, 1), exp(-0.5), 0, 1e-7);
+        assert_close(model_diff_state(&m, y, 1), exp(-0.5), 0, 1e-7);
         free(y), free(ydot);
         close_model(&m);
     }
@@ -111,9 +91,9 @@ static void nonlinear_residual_against_closed_forms(void **state)
                  " - COS(TIME)\nEND\n";
     for (int i = 0; i < 3; ++i) {
         model m;
-        double *y = run("cubic.adm", text, methods[i], jacobians[i], 1e-10, 1.0, &m);
-        assert_close(diff_value(&m, y, 1), exp(1.0), 0, 1e-6);
-        assert_close(diff_value(&m, y, 2), sin(1.0), 0, 1e-7);
+        double *y = model_run_text("cubic.adm", text, methods[i], jacobians[i], 1e-10, 1.0, &m);
+        assert_close(model_diff_state(&m, y, 1), exp(1.0), 0, 1e-6);
+        assert_close(model_diff_state(&m, y, 2), sin(1.0), 0, 1e-7);
         free(y);
         close_model(&m);
     }
@@ -139,9 +119,9 @@ static void two_residuals_coupled_through_their_rates(void **state)
                                 e * (c * y0[1] + sq * (B[2] * y0[0] + B[3] * y0[1]))};
     for (int i = 0; i < 3; ++i) {
         model m;
-        double *y = run("coupled.adm", text, methods[i], jacobians[i], 1e-10, t, &m);
-        assert_close(diff_value(&m, y, 1), expected[0], 0, 1e-7);
-        assert_close(diff_value(&m, y, 2), expected[1], 0, 1e-7);
+        double *y = model_run_text("coupled.adm", text, methods[i], jacobians[i], 1e-10, t, &m);
+        assert_close(model_diff_state(&m, y, 1), expected[0], 0, 1e-7);
+        assert_close(model_diff_state(&m, y, 2), expected[1], 0, 1e-7);
         free(y);
         close_model(&m);
     }
@@ -175,10 +155,10 @@ static void a_force_reading_the_implicit_state(void **state)
     assert_close(ydot[m.d.diff_offset + m.session.model->routines[k3].slot], -0.5, 0, 1e-15);
     hx_simulation_result r = simulate(&m, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-10, 1.0, y);
     assert_int_equal(r.status, HX_INTEGRATION_OK);
-    assert_close(diff_value(&m, y, 3), diff_value(&m, y, 1) - 1.0, 0, 1e-9);
+    assert_close(model_diff_state(&m, y, 3), model_diff_state(&m, y, 1) - 1.0, 0, 1e-9);
     model twin;
-    double *yt = run("force_twin.adm", explicit_twin, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC,
-                     1e-10, 1.0, &twin);
+    double *yt = model_run_text("force_twin.adm", explicit_twin, HX_METHOD_DOPRI5,
+                                HX_JACOBIAN_ANALYTIC, 1e-10, 1.0, &twin);
     for (int j = 0; j < m.d.n; ++j)
         assert_close(y[j], yt[j], 0, 1e-8);
     assert_true(fabs(y[m.d.nq + m.d.dof[b].u] - 2.0) > 0.1); /* the spring moved the body */
@@ -204,10 +184,10 @@ static void xml_and_dataset_bit_identical(void **state)
                  " - DX(20,10)\nEND\n";
     for (int i = 0; i < 2; ++i) {
         model a, b;
-        double *ya = run("twin.xml", xml, methods[i], jacobians[i], 1e-8, 0.5, &a);
-        double *yb = run("twin.adm", adm, methods[i], jacobians[i], 1e-8, 0.5, &b);
+        double *ya = model_run_text("twin.xml", xml, methods[i], jacobians[i], 1e-8, 0.5, &a);
+        double *yb = model_run_text("twin.adm", adm, methods[i], jacobians[i], 1e-8, 0.5, &b);
         assert_int_equal(a.d.n, b.d.n);
-        assert_true(fabs(diff_value(&a, ya, 1) - 0.5) > 0.1); /* it moved */
+        assert_true(fabs(model_diff_state(&a, ya, 1) - 0.5) > 0.1); /* it moved */
         assert_memory_equal(ya, yb, sizeof(double) * (size_t)a.d.n);
         free(ya), free(yb);
         close_model(&a), close_model(&b);
@@ -231,17 +211,19 @@ static void bdf_and_dopri5_agree_and_the_jacobian(void **state)
                  "SFORCE/7, TRANSLATION, I=20, J=10, FUNCTION=-40*(DM(20,10) - 5) - "
                  "2*VR(20,10) + 3*DIF(1) - DIF(2)\nEND\n";
     model m;
-    double *y = run("jacobian.adm", text, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, 1e-9, 0.4, &m);
+    double *y = model_run_text("jacobian.adm", text, HX_METHOD_BDF,
+                               HX_JACOBIAN_ANALYTIC, 1e-9, 0.4, &m);
     long outside = 0;
     const double worst = jacobian_against_differences(&m.d, 0.4, y, "implicit", &outside);
     assert_int_equal(outside, 0);
     assert_true(worst < 1e-6);
     model f, e;
-    double *yf = run("jacobian.adm", text, HX_METHOD_BDF, HX_JACOBIAN_FD, 1e-9, 0.4, &f);
-    double *ye = run("jacobian.adm", text, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-11, 0.4, &e);
+    double *yf = model_run_text("jacobian.adm", text, HX_METHOD_BDF, HX_JACOBIAN_FD, 1e-9, 0.4, &f);
+    double *ye = model_run_text("jacobian.adm", text, HX_METHOD_DOPRI5,
+                                HX_JACOBIAN_ANALYTIC, 1e-11, 0.4, &e);
     for (int id = 1; id <= 3; ++id) {
-        assert_close(diff_value(&m, y, id), diff_value(&f, yf, id), 1e-6, 1e-9);
-        assert_close(diff_value(&m, y, id), diff_value(&e, ye, id), 1e-6, 1e-8);
+        assert_close(model_diff_state(&m, y, id), model_diff_state(&f, yf, id), 1e-6, 1e-9);
+        assert_close(model_diff_state(&m, y, id), model_diff_state(&e, ye, id), 1e-6, 1e-8);
     }
     for (int j = 0; j < m.d.nq + m.d.nu; ++j)
         assert_close(y[j], ye[j], 1e-6, 1e-8);
@@ -269,7 +251,8 @@ static void bad_implicit_diffs_are_named(void **state)
 {
     (void)state;
     /* r^2 + y = 0 with y = 1: no real rate. From 0 dF/dDIF1 = 0; from 0.5 Newton wanders */
-    run_stops("singular.adm", ADM_HEAD "DIFF/1, IMPLICIT, IC=1, FUNCTION=DIF1(1)**2 + DIF(1)\nEND\n",
+    run_stops("singular.adm",
+              ADM_HEAD "DIFF/1, IMPLICIT, IC=1, FUNCTION=DIF1(1)**2 + DIF(1)\nEND\n",
               (const char *const[]){"singular.adm:6: Control_Diff 1", "singular", "t = 0",
                                     "residual 1 ", NULL});
     run_stops("wander.adm",
