@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "model_runs.h"
+#include "sim/dynamics/implicit_diffs.h"
 #include "sim_support.h"
 #include "test_support.h"
 
@@ -77,6 +78,36 @@ static void linear_residual_against_the_closed_form(void **state)
         free(y), free(ydot);
         close_model(&m);
     }
+}
+
+/* Where Newton starts moves only with an accepted step: a step's end (the
+ * integrator's projection) leaves its rates pending until an evaluation past
+ * its time. On 2 y' + y = 0 (rate -y/2), evaluated as an integrator would:
+ * a step ending at 0.5 (y = 1, rate -0.5), rejected, its retry ending at 0.4
+ * (y = 0.8, rate -0.4), then the next step's first evaluation at 0.45. */
+static void a_rejected_step_moves_no_start(void **state)
+{
+    (void)state;
+    model m;
+    open_model(&m, test_write_file("start.adm", ADM_HEAD "DIFF/1, IMPLICIT, IC=1,"
+                                   " FUNCTION=2*DIF1(1) + DIF(1)\nEND\n"));
+    double *y = model_state(&m), *ydot = model_state(&m);
+    model_initial_state(&m, y);
+    const double *start = m.data.implicit_start;
+    assert_int_equal(hx_dynamics_rhs(&m.d, &m.data, 0.5, y, ydot), 0);
+    assert_true(start[0] == 0.0); /* no ic_dot: 0 */
+    hx_implicit_diffs_step_ended(&m.d, &m.data, 0.5);
+    y[m.d.diff_offset] = 0.8; /* the retry, before 0.5 */
+    assert_int_equal(hx_dynamics_rhs(&m.d, &m.data, 0.4, y, ydot), 0);
+    assert_close(ydot[m.d.diff_offset], -0.4, 0, 1e-15);
+    assert_true(start[0] == 0.0); /* the rejected step's -0.5 is not taken */
+    hx_implicit_diffs_step_ended(&m.d, &m.data, 0.4);
+    y[m.d.diff_offset] = 0.6;
+    assert_int_equal(hx_dynamics_rhs(&m.d, &m.data, 0.45, y, ydot), 0);
+    assert_close(start[0], -0.4, 0, 1e-15); /* the accepted step's rate */
+    assert_close(ydot[m.d.diff_offset], -0.3, 0, 1e-15);
+    free(y), free(ydot);
+    close_model(&m);
 }
 
 /* Residuals nonlinear in the rate, x^3 + x = g, one real root as x^3 + x
@@ -282,6 +313,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(linear_residual_against_the_closed_form),
+        cmocka_unit_test(a_rejected_step_moves_no_start),
         cmocka_unit_test(nonlinear_residual_against_closed_forms),
         cmocka_unit_test(two_residuals_coupled_through_their_rates),
         cmocka_unit_test(a_force_reading_the_implicit_state),

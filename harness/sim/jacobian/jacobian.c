@@ -96,7 +96,7 @@ int hx_jacobian_build(hx_jacobian *jac, double t, const double *y, const double 
         return -1;
     /* the implicit Control_Diffs' Newton at the moved states starts from their
      * rates at (t, y) (routine_blocks.c) */
-    hx_implicit_diffs_accept(d, dd);
+    hx_implicit_diffs_keep(d, dd);
     jac->values = values;
     memset(values, 0, sizeof(double) * (size_t)jac->pattern.nnz);
     memcpy(jac->y, y, sizeof(double) * (size_t)jac->n);

@@ -33,8 +33,9 @@ static int rhs(void *ctx, double t, const double *y, double *ydot)
 static int project(void *ctx, double t, double *y)
 {
     run_context *rc = ctx;
-    /* a step accepted: the implicit Control_Diffs' Newton starts from its rates */
-    hx_implicit_diffs_accept(rc->d, rc->dd);
+    /* a step's end: the implicit Control_Diffs' Newton starts from its rates once
+     * the integrator goes on past it */
+    hx_implicit_diffs_step_ended(rc->d, rc->dd, t);
     if (hx_constraints_project(rc->d, rc->dd, t, y) != 0)
         return -1;
     return rc->d->nrows > 0 ? 1 : 0;
