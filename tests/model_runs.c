@@ -68,6 +68,26 @@ hx_simulation_result simulate(model *m, hx_method method, hx_jacobian_method jac
     return simulate_with(m, method, jacobian, rtol, 1e-3, t_end, y);
 }
 
+double *model_run_text(const char *name, const char *text, hx_method method,
+                       hx_jacobian_method jacobian, double rtol, double t_end, model *m)
+{
+    open_model(m, test_write_file(name, text));
+    double *y = model_state(m);
+    model_initial_state(m, y);
+    hx_simulation_result r = simulate(m, method, jacobian, rtol, t_end, y);
+    if (r.status != HX_INTEGRATION_OK)
+        fail_msg("%s: %s", name, r.message);
+    return y;
+}
+
+double model_diff_state(const model *m, const double *y, int id)
+{
+    const hx_model *mm = m->session.model;
+    const int k = hx_model_routine(mm, HX_ROUTINE_DIFF, id);
+    assert_true(k >= 0);
+    return y[m->d.diff_offset + mm->routines[k].slot];
+}
+
 /* Largest difference of positions and velocities, relative to the largest
  * of each kind (translations, quaternions, velocities, angular velocities and
  * joint coordinates apart): excursions from y0, and velocities at the end or

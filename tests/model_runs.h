@@ -35,6 +35,14 @@ hx_simulation_result simulate_with(model *m, hx_method method, hx_jacobian_metho
 hx_simulation_result simulate(model *m, hx_method method, hx_jacobian_method jacobian,
                               double rtol, double t_end, double *y);
 
+/* Writes text as name in the temporary folder, opens it into m and runs it
+ * from its initial state to t_end (simulate); fails the test with the run's
+ * message unless it finishes. The end state (calloc'ed; the caller frees it). */
+double *model_run_text(const char *name, const char *text, hx_method method,
+                       hx_jacobian_method jacobian, double rtol, double t_end, model *m);
+/* The state of Control_Diff id in y (fails the test when there is none). */
+double model_diff_state(const model *m, const double *y, int id);
+
 /* Largest difference of positions and velocities, relative to the largest
  * of each kind (translations, quaternions, velocities, angular velocities and
  * joint coordinates apart): excursions from y0, and velocities at the end or

@@ -4,7 +4,8 @@
  * against closed forms worked by hand, DIF and DIF1 read by other states and
  * variables, the Jacobian's row against differences of the right-hand side
  * and BDF with it against BDF with differences, the XML and the dataset
- * forms bit for bit, and bad inputs refused with file:line.
+ * forms bit for bit, and bad inputs refused with file:line. The implicit
+ * form: test_implicit_diffs.c.
  */
 #include <math.h>
 #include <stdio.h>
@@ -22,25 +23,6 @@
     "ADAMS/View model\nPART/1, GROUND\nMARKER/10, PART=1\n"                                    \
     "PART/2, MASS=2, CM=20, IP=1,1,1, VX=2\nMARKER/20, PART=2, QP=3,4,0\n"
 
-static double diff_value(const model *m, const double *y, int id)
-{
-    const hx_model *mm = m->session.model;
-    const int k = hx_model_routine(mm, HX_ROUTINE_DIFF, id);
-    assert_true(k >= 0);
-    return y[m->d.diff_offset + mm->routines[k].slot];
-}
-
-static double *run(const char *name, const char *text, hx_method method,
-                   hx_jacobian_method jacobian, double rtol, double t_end, model *m)
-{
-    open_model(m, test_write_file(name, text));
-    double *y = model_state(m);
-    model_initial_state(m, y);
-    hx_simulation_result r = simulate(m, method, jacobian, rtol, t_end, y);
-    assert_int_equal(r.status, HX_INTEGRATION_OK);
-    return y;
-}
-
 /* y' = -a y + b, y(0) = y0: y(t) = b/a + (y0 - b/a) e^{-a t}. With a = 2,
  * b = 3, y0 = 0.5: y(1) = 1.5 - e^{-2} = 1.3646647167633873. Both methods,
  * BDF with the analytic Jacobian (its entry -a exact from the expression's
@@ -55,9 +37,9 @@ static void linear_rate_against_the_closed_form(void **state)
                                                     HX_JACOBIAN_FD};
     for (int i = 0; i < 3; ++i) {
         model m;
-        double *y = run("linear.adm", text, methods[i], jacobians[i], 1e-10, 1.0, &m);
+        double *y = model_run_text("linear.adm", text, methods[i], jacobians[i], 1e-10, 1.0, &m);
         assert_int_equal(m.session.model->nunsimulated, 0);
-        assert_close(diff_value(&m, y, 1), expected, 0, 1e-7);
+        assert_close(model_diff_state(&m, y, 1), expected, 0, 1e-7);
         free(y);
         close_model(&m);
     }
@@ -78,10 +60,11 @@ static void states_integrating_a_displacement(void **state)
                  "VARIABLE/5, FUNCTION=2*DIF(2)\n"
                  "DIFF/4, FUNCTION=VARVAL(5) - DIF(4)\nEND\n";
     model m;
-    double *y = run("integral.adm", text, HX_METHOD_DOPRI5, HX_JACOBIAN_ANALYTIC, 1e-11, 1.0, &m);
-    assert_close(diff_value(&m, y, 2), 4.0, 0, 1e-8);
-    assert_close(diff_value(&m, y, 3), 4.0, 0, 1e-8);
-    assert_close(diff_value(&m, y, 4), 2.0 + 2.0 / exp(1.0), 0, 1e-8);
+    double *y = model_run_text("integral.adm", text, HX_METHOD_DOPRI5,
+                               HX_JACOBIAN_ANALYTIC, 1e-11, 1.0, &m);
+    assert_close(model_diff_state(&m, y, 2), 4.0, 0, 1e-8);
+    assert_close(model_diff_state(&m, y, 3), 4.0, 0, 1e-8);
+    assert_close(model_diff_state(&m, y, 4), 2.0 + 2.0 / exp(1.0), 0, 1e-8);
     hx_dynamics_kinematics(&m.d, &m.data, 1.0, y);
     double values[1];
     hx_message msg;
@@ -105,15 +88,16 @@ static void jacobian_row_against_differences(void **state)
                  "SFORCE/7, TRANSLATION, I=20, J=10, FUNCTION=-40*(DM(20,10) - 5) - "
                  "2*VR(20,10)\nEND\n";
     model m;
-    double *y = run("jacobian.adm", text, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, 1e-9, 0.4, &m);
+    double *y = model_run_text("jacobian.adm", text, HX_METHOD_BDF,
+                               HX_JACOBIAN_ANALYTIC, 1e-9, 0.4, &m);
     long outside = 0;
     const double worst = jacobian_against_differences(&m.d, 0.4, y, "diffs", &outside);
     assert_int_equal(outside, 0);
     assert_true(worst < 1e-6);
     model f;
-    double *yf = run("jacobian.adm", text, HX_METHOD_BDF, HX_JACOBIAN_FD, 1e-9, 0.4, &f);
+    double *yf = model_run_text("jacobian.adm", text, HX_METHOD_BDF, HX_JACOBIAN_FD, 1e-9, 0.4, &f);
     for (int id = 1; id <= 2; ++id)
-        assert_close(diff_value(&m, y, id), diff_value(&f, yf, id), 1e-6, 1e-9);
+        assert_close(model_diff_state(&m, y, id), model_diff_state(&f, yf, id), 1e-6, 1e-9);
     free(y), free(yf);
     close_model(&m), close_model(&f);
 }
@@ -134,16 +118,17 @@ static void rate_read_by_dif1_in_the_jacobian(void **state)
                  "SFORCE/7, TRANSLATION, I=20, J=10, FUNCTION=-40*(DM(20,10) - 5) - "
                  "2*VR(20,10) + 3*DIF(3)\nEND\n";
     model m;
-    double *y = run("rate.adm", text, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, 1e-9, 0.4, &m);
+    double *y = model_run_text("rate.adm", text, HX_METHOD_BDF,
+                               HX_JACOBIAN_ANALYTIC, 1e-9, 0.4, &m);
     long outside = 0;
     const double worst = jacobian_against_differences(&m.d, 0.4, y, "DIF1", &outside);
     printf("a rate read by DIF1: worst %.3g against differences, %ld outside\n", worst, outside);
     assert_int_equal(outside, 0);
     assert_true(worst < 1e-6);
     model f;
-    double *yf = run("rate.adm", text, HX_METHOD_BDF, HX_JACOBIAN_FD, 1e-9, 0.4, &f);
+    double *yf = model_run_text("rate.adm", text, HX_METHOD_BDF, HX_JACOBIAN_FD, 1e-9, 0.4, &f);
     for (int id = 2; id <= 3; ++id)
-        assert_close(diff_value(&m, y, id), diff_value(&f, yf, id), 1e-6, 1e-9);
+        assert_close(model_diff_state(&m, y, id), model_diff_state(&f, yf, id), 1e-6, 1e-9);
     free(y), free(yf);
     close_model(&m), close_model(&f);
 }
@@ -181,7 +166,7 @@ static void forces_reading_states(void **state)
     assert_int_equal(outside, 0);
     assert_true(worst < 1e-6);
     model f;
-    double *yf = run("forces.adm", text, HX_METHOD_BDF, HX_JACOBIAN_FD, 1e-9, 0.4, &f);
+    double *yf = model_run_text("forces.adm", text, HX_METHOD_BDF, HX_JACOBIAN_FD, 1e-9, 0.4, &f);
     for (int k = 0; k < m.d.n; ++k)
         assert_close(y[k], yf[k], 1e-6, 1e-8);
     free(y), free(yf);
@@ -202,10 +187,12 @@ static void xml_and_dataset_bit_identical(void **state)
         "</Model></MotionSolve>\n";
     static const char *const adm = ADM_HEAD "DIFF/1, IC=0.5, FUNCTION=-2*DIF(1) + DX(20,10)\nEND\n";
     model a, b;
-    double *ya = run("twin.xml", xml, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, 1e-8, 0.5, &a);
-    double *yb = run("twin.adm", adm, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, 1e-8, 0.5, &b);
+    double *ya = model_run_text("twin.xml", xml, HX_METHOD_BDF,
+                                HX_JACOBIAN_ANALYTIC, 1e-8, 0.5, &a);
+    double *yb = model_run_text("twin.adm", adm, HX_METHOD_BDF,
+                                HX_JACOBIAN_ANALYTIC, 1e-8, 0.5, &b);
     assert_int_equal(a.d.n, b.d.n);
-    assert_true(fabs(diff_value(&a, ya, 1) - 0.5) > 0.1); /* it moved */
+    assert_true(fabs(model_diff_state(&a, ya, 1) - 0.5) > 0.1); /* it moved */
     assert_memory_equal(ya, yb, sizeof(double) * (size_t)a.d.n);
     free(ya), free(yb);
     close_model(&a), close_model(&b);
@@ -216,8 +203,6 @@ static void bad_diffs_are_named(void **state)
     (void)state;
     sim_expect_parse_error("unknown.adm", ADM_HEAD "DIFF/1, FUNCTION=1 + DIF(9)\nEND\n",
                  (const char *const[]){"unknown.adm:6:", "DIF(9)", "no Control_Diff 9", NULL});
-    sim_expect_parse_error("implicit.adm", ADM_HEAD "DIFF/1, FUNCTION=DIF(1), IMPLICIT\nEND\n",
-                 (const char *const[]){"implicit.adm:6:", "IMPLICIT", "explicit", NULL});
     sim_expect_parse_error("nofunction.adm", ADM_HEAD "DIFF/1, IC=2\nEND\n",
                  (const char *const[]){"nofunction.adm:6:", "FUNCTION", NULL});
     sim_expect_parse_error("self.adm", ADM_HEAD "DIFF/1, FUNCTION=1 + DIF1(1)\nEND\n",
@@ -237,11 +222,6 @@ static void bad_diffs_are_named(void **state)
              "</Model></MotionSolve>\n", head);
     sim_expect_parse_error("noexpr.xml", xml,
                  (const char *const[]){"noexpr.xml:4:", "Control_Diff 1", "expr is missing", NULL});
-    snprintf(xml, sizeof xml, "%s<Control_Diff id=\"1\" type=\"EXPRESSION\" is_implicit=\"TRUE\""
-             " expr=\"DIF(1)\"/>\n</Model></MotionSolve>\n", head);
-    sim_expect_parse_error("implicit.xml", xml,
-                 (const char *const[]){"implicit.xml:4:", "Control_Diff 1", "is_implicit",
-                                       NULL});
     snprintf(xml, sizeof xml, "%s<Control_Diff id=\"1\" type=\"EXPRESSION\""
              " expr=\"DIF(1) + DX(99)\"/>\n</Model></MotionSolve>\n", head);
     sim_expect_parse_error("marker.xml", xml,

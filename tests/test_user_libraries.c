@@ -488,8 +488,8 @@ static void run_refuses_an_implicit_diff_and_a_motion_on_a_coupled_joint(void **
 {
     (void)state;
     run_refuses_variant("implicit.xml", "is_implicit=\"FALSE\"", "is_implicit=\"TRUE\"",
-                        "Control_Diff 7: is_implicit=\"TRUE\": the harness integrates explicit"
-                        " Control_Diff elements only");
+                        "Control_Diff 7: is_implicit=\"TRUE\" with DIFSUB: the harness runs an"
+                        " implicit Control_Diff by expression only");
     run_refuses_variant("coupled.xml", "<Force_Vector_OneBody",
                         "<Reference_Marker id=\"50\" body_id=\"5\"/>"
                         "<Body_Rigid id=\"5\" cg_id=\"50\" mass=\"1\" inertia_xx=\"1\""

@@ -201,8 +201,11 @@ typedef struct hx_routine {
      * Motion_Joint: ic_disp and ic_vel */
     double ic[2];
     int ic_given[2];     /* Motion_Joint: whether ic_disp, ic_vel were written (else the
-                          * joint's coordinate and rate as the model places it) */
-    int implicit;        /* Control_Diff is_implicit (read; check only) */
+                          * joint's coordinate and rate as the model places it);
+                          * Control_Diff: [1] whether ic_dot was */
+    int implicit;        /* Control_Diff is_implicit: by expression, expr is a residual
+                          * F(DIF1, ...) = 0 the dynamics solves for the rate
+                          * (docs/interface.md §7.10); a DIFSUB's is refused by run */
     int static_hold;     /* Control_Diff is_static_hold (read, no effect) */
     int joint_id;        /* Motion_Joint: the joint it drives, as written */
     int joint;           /* its index */
@@ -336,7 +339,7 @@ typedef struct hx_model {
     int nstateeqns;
     hx_routine *routines;    /* in the order read */
     int nroutines;
-    int *diff_order;         /* the Control_Diffs by expression (routine indices), each after
+    int *diff_order;         /* the explicit Control_Diffs by expression (routine indices), each after
                               * those whose rate (DIF1) it reads; computed after the DIFSUBs */
     int ndiff_programs;
     int nroutines_of[HX_ROUTINE_KINDS];

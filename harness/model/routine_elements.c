@@ -109,12 +109,6 @@ void hx_build_diff(hx_draft *d, const hx_element_read *e)
                           " EXPRESSION: the state's rate)", e->id);
             return;
         }
-        if (hx_attr_number(e, "is_implicit", 0.0) != 0.0) {
-            hx_draft_fail(d, e->line, "Control_Diff %d: is_implicit=\"TRUE\": the harness"
-                          " integrates explicit Control_Diff elements only (expr is the state's"
-                          " rate)", e->id);
-            return;
-        }
         if (hx_attr_present(e, "usrsub_param_string") || hx_attr_present(e, "usrsub_dll_name")) {
             hx_draft_fail(d, e->line, "Control_Diff %d: type EXPRESSION takes no user routine"
                           " (usrsub_*)", e->id);
@@ -132,6 +126,7 @@ void hx_build_diff(hx_draft *d, const hx_element_read *e)
         return;
     r->ic[0] = hx_attr_number(e, "ic", 0.0);
     r->ic[1] = hx_attr_number(e, "ic_dot", 0.0);
+    r->ic_given[1] = hx_attr_present(e, "ic_dot");
     r->implicit = hx_attr_number(e, "is_implicit", 0.0) != 0.0;
     r->static_hold = hx_attr_number(e, "is_static_hold", 0.0) != 0.0;
     if (expression)
@@ -219,7 +214,41 @@ static int rate_read(const hx_model *m, int k, int j)
     if (in->kind != HX_EXPR_INPUT_DIF1)
         return -1;
     const int r = diff_of_slot(m, in->index[0]);
-    return r >= 0 && m->routines[r].program != NULL ? r : -1;
+    return r >= 0 && m->routines[r].program != NULL && !m->routines[r].implicit ? r : -1;
+}
+
+/* An implicit Control_Diff's residual (docs/interface.md §7.10) reads its own
+ * rate, and the rates of no explicit Control_Diff by expression (those are
+ * computed after the implicit ones are solved). */
+static int check_implicit(hx_draft *d, int k)
+{
+    hx_model *m = d->m;
+    const hx_routine *r = &m->routines[k];
+    const hx_expr_input *in = hx_expr_inputs(r->program);
+    int own = 0;
+    for (int j = 0; j < hx_expr_input_count(r->program); ++j) {
+        if (in[j].kind != HX_EXPR_INPUT_DIF1)
+            continue;
+        own |= in[j].index[0] == r->slot;
+        const int q = rate_read(m, k, j);
+        if (q >= 0) {
+            char name[64], what[HX_MESSAGE_MAX];
+            snprintf(what, sizeof what, "%s:%d:%d: %s: an implicit Control_Diff's residual reads"
+                     " the rate of Control_Diff %d (line %d), an explicit one by expression,"
+                     " which is computed after the implicit ones are solved", d->path,
+                     in[j].line, in[j].column, hx_expr_input_text(&in[j], name, sizeof name),
+                     m->routines[q].id, m->routines[q].line);
+            hx_draft_fail_expression(d, "Control_Diff", r->id, "expr", what);
+            return -1;
+        }
+    }
+    if (own)
+        return 0;
+    hx_draft_fail(d, r->line, "Control_Diff %d: is_implicit=\"TRUE\": expr does not read"
+                  " DIF1(%d), the element's own rate: such a residual is an algebraic"
+                  " constraint on the state, not a differential equation, which the harness"
+                  " does not solve", r->id, r->id);
+    return -1;
 }
 
 /* Links routine k's program; refuses a rate that reads itself. */
@@ -240,7 +269,7 @@ static int link_diff(hx_draft *d, int k)
             for (int i = 0; i < in[j].nids && i < 4; ++i)
                 if (in[j].index[i] >= 0)
                     m->markers[in[j].index[i]].tracked = 1;
-        if (rate_read(m, k, j) == k) {
+        if (!r->implicit && rate_read(m, k, j) == k) {
             char name[64], what[HX_MESSAGE_MAX];
             snprintf(what, sizeof what, "%s:%d:%d: %s: a Control_Diff's rate reads its own rate"
                      " (an algebraic loop, which the harness does not solve)", d->path,
@@ -293,18 +322,24 @@ static int order_diffs(hx_draft *d)
     int total = 0;
     for (int k = 0; k < m->nroutines; ++k)
         if (m->routines[k].program != NULL && m->routines[k].kind == HX_ROUTINE_DIFF) {
-            ++total;
             if (link_diff(d, k) != 0) {
                 free(ordered);
                 return -1;
             }
+            total += !m->routines[k].implicit;
+        }
+    for (int k = 0; k < m->nroutines; ++k)
+        if (m->routines[k].program != NULL && m->routines[k].kind == HX_ROUTINE_DIFF &&
+            m->routines[k].implicit && check_implicit(d, k) != 0) {
+            free(ordered);
+            return -1;
         }
     int count = 0;
     for (int added = 1; added && count < total;) {
         added = 0;
         for (int k = 0; k < m->nroutines; ++k) {
             if (m->routines[k].program == NULL || m->routines[k].kind != HX_ROUTINE_DIFF ||
-                ordered[k])
+                m->routines[k].implicit || ordered[k])
                 continue;
             int ready = 1;
             for (int j = 0; j < hx_expr_input_count(m->routines[k].program) && ready; ++j) {
@@ -322,7 +357,7 @@ static int order_diffs(hx_draft *d)
         int first = -1;
         for (int k = 0; k < m->nroutines; ++k) {
             const hx_routine *r = &m->routines[k];
-            if (r->program == NULL || r->kind != HX_ROUTINE_DIFF || ordered[k])
+            if (r->program == NULL || r->kind != HX_ROUTINE_DIFF || r->implicit || ordered[k])
                 continue;
             first = first < 0 ? k : first;
             for (int j = 0; j < hx_expr_input_count(r->program); ++j) {

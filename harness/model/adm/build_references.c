@@ -124,10 +124,6 @@ int hx_adm_build_diff(hx_adm_reader *r, hx_adm_entry *e)
     const int user = hx_adm_is_user(hx_adm_text(e, "FUNCTION"));
     if (!user && hx_adm_no_routine(r, e) != 0)
         return -1;
-    if (!user && hx_adm_has(e, "IMPLICIT"))
-        return hx_adm_fail(r, e, hx_adm_get(e, "IMPLICIT")->line, "IMPLICIT: the harness"
-                           " integrates explicit DIFF statements only (FUNCTION is the state's"
-                           " rate)");
     hx_adm_element_text(&el, "type", user ? "USERSUB" : "EXPRESSION");
     const hx_adm_value *ic = hx_adm_get(e, "IC");
     if (ic->present)

@@ -8,6 +8,7 @@
 #include "sim/dynamics/element_forces.h"
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/joint_turns.h"
+#include "sim/dynamics/implicit_diffs.h"
 #include "sim/dynamics/loads.h"
 #include "sim/dynamics/routines.h"
 #include "sim/dynamics/stateeqns.h"
@@ -135,7 +136,10 @@ int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message
     dd->turn_rate = calloc((size_t)m->njoints + 1, sizeof(double));
     dd->constraint_work = calloc(hx_constraints_work_size(d), sizeof(double));
     dd->stateeqn_work = malloc(sizeof(double) * (size_t)hx_stateeqns_work_size(d));
-    if (!dd->force || !dd->torque || !dd->element_outputs || !dd->element_load ||
+    dd->implicit_start = calloc(2 * (size_t)d->nimplicit + 1, sizeof(double));
+    dd->implicit_work = calloc(hx_implicit_diffs_work_size(d), sizeof(double));
+    if (!dd->implicit_start || !dd->implicit_work ||
+        !dd->force || !dd->torque || !dd->element_outputs || !dd->element_load ||
         !dd->element_partials || !dd->stateeqn_outputs || !dd->free_accelerations ||
         !dd->lambda || !dd->turn || !dd->turn_rate || !dd->constraint_work ||
         !dd->stateeqn_work ||
@@ -145,6 +149,7 @@ int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message
         return hx_fail(msg, "out of memory");
     }
     hx_joint_turns_placed(d, dd);
+    hx_implicit_diffs_restart(d, dd);
     return 0;
 }
 
@@ -162,6 +167,8 @@ void hx_dynamics_data_free(hx_dynamics_data *dd)
     free(dd->turn_rate);
     free(dd->constraint_work);
     free(dd->stateeqn_work);
+    free(dd->implicit_start);
+    free(dd->implicit_work);
     hx_frames_free(&dd->frames);
     hx_frames_free(&dd->moved);
     memset(dd, 0, sizeof *dd);

@@ -80,6 +80,10 @@ typedef struct hx_dynamics {
     int motion_state_offset, nmotion_states; /* y offset and count of the acceleration
                                    * motions' states between bodies (routines.h) */
     int diffs_read_variables;     /* a Control_Diff's expression reads a variable */
+    int nimplicit, *implicit;     /* the implicit Control_Diffs by expression (routine
+                                   * indices), solved together (implicit_diffs.h) */
+    int *implicit_of_slot;        /* per Control_Diff slot: its place in implicit[], or -1 */
+    size_t implicit_work;         /* doubles of a data's implicit_work */
     int load_work, element_work;  /* y indices of the work done by loads and the drives
                                    * (motions, GCONs of TIME), and by elements */
     hx_binding **coupler_binding; /* per coupler; NULL for the built-in form */
@@ -156,6 +160,12 @@ typedef struct hx_dynamics_data {
     double *constraint_work;      /* G and M^-1 G^T (12 a row), G M^-1 G^T, vectors */
     double *stateeqn_work;        /* one Force_StateEqn's inputs and its call's copies */
     hx_frames moved;              /* frames with bodies placed elsewhere (element_at.h) */
+    double *implicit_start;       /* per implicit Control_Diff: where Newton starts, the rate
+                                   * of the last accepted step (implicit_diffs.h); then as
+                                   * many pending: a step's rates not known to be accepted */
+    double implicit_pending_time; /* the pending rates' step end; taken once an evaluation
+                                   * is past it (+inf: none pending) */
+    double *implicit_work;        /* Newton's iterate, residuals, step and matrix */
     /* the first failure (failure.h) */
     int failed;
     char message[1024];

@@ -28,9 +28,9 @@
 #include "sim/dynamics/dynamics.h"
 
 /* Sets d->diff_offset and d->ndiffs (after the Force_StateEqn states), the
- * acceleration motions' states (after those) and the driven bodies; refuses
- * an implicit Control_Diff and a motion on a coupled joint. 0, or -1 with
- * msg. */
+ * acceleration motions' states (after those), the driven bodies and the
+ * implicit Control_Diffs (implicit_diffs.h); refuses an implicit Control_Diff
+ * with DIFSUB and a motion on a coupled joint. 0, or -1 with msg. */
 int hx_routines_init(hx_dynamics *d, hx_message *msg);
 void hx_routines_free(hx_dynamics *d);
 

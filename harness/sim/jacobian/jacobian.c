@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "sim/dynamics/constraints.h"
+#include "sim/dynamics/implicit_diffs.h"
 
 int hx_jacobian_init(hx_jacobian *jac, const hx_dynamics *d, hx_message *msg)
 {
@@ -93,6 +94,9 @@ int hx_jacobian_build(hx_jacobian *jac, double t, const double *y, const double 
     jac->evaluations++;
     if (hx_dynamics_evaluate(d, dd, t, y, jac->f_plus, HX_EVALUATE_PARTIALS) != 0)
         return -1;
+    /* the implicit Control_Diffs' Newton at the moved states starts from their
+     * rates at (t, y) (routine_blocks.c) */
+    hx_implicit_diffs_keep(d, dd);
     jac->values = values;
     memset(values, 0, sizeof(double) * (size_t)jac->pattern.nnz);
     memcpy(jac->y, y, sizeof(double) * (size_t)jac->n);

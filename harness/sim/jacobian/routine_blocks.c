@@ -6,9 +6,12 @@
  * name, the Control_Diff states they name, and, for a rate read by DIF1,
  * the columns that rate depends on in turn, the rate computed again at each
  * moved state; an expression's partials in the states it reads by DIF are
- * exact where it reads neither a variable nor a rate. A driven joint's
- * rows, functions of time alone, are zero; an acceleration motion's states
- * between bodies s' = v (1) and v' = f(t) (zero).
+ * exact where it reads neither a variable nor a rate. The implicit
+ * Control_Diffs' rows by central differences too, their rates solved again
+ * together at each moved state (d ydot/dx = -(dF/dydot)^-1 dF/dx, which the
+ * differences of the solved rates give). A driven joint's rows, functions of
+ * time alone, are zero; an acceleration motion's states between bodies
+ * s' = v (1) and v' = f(t) (zero).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,6 +23,7 @@
 #include "host/queries.h"
 #include "sim/dynamics/routines.h"
 #include "sim/dynamics/failure.h"
+#include "sim/dynamics/implicit_diffs.h"
 #include "sim/jacobian/jacobian_parts.h"
 
 static void add_column(int *cols, int *n, int max, int c)
@@ -50,14 +54,32 @@ static int reads_rate(const hx_expr_program *p)
     return 0;
 }
 
-static void diff_columns_into(const hx_dynamics *d, int routine, int *cols, int *n, int max);
+static void diff_columns_into(const hx_dynamics *d, int routine, int *cols, int *n, int max,
+                              int *implicit_added);
+static void program_columns(const hx_dynamics *d, const hx_expr_program *p, int *cols, int *n,
+                            int max, int *implicit_added);
+
+/* The columns of the implicit Control_Diffs' rates, solved together: their
+ * states and every column their residuals read (once: *implicit_added). */
+static void implicit_columns(const hx_dynamics *d, int *cols, int *n, int max,
+                             int *implicit_added)
+{
+    if (*implicit_added)
+        return;
+    *implicit_added = 1;
+    for (int i = 0; i < d->nimplicit; ++i) {
+        const hx_routine *r = &d->m->routines[d->implicit[i]];
+        add_column(cols, n, max, d->diff_offset + r->slot);
+        program_columns(d, r->program, cols, n, max, implicit_added);
+    }
+}
 
 /* The columns program p reads: the Control_Diff states it names (DIF), the
  * columns of the rates it names (DIF1: the model refuses a cycle of them,
  * model/routine_elements.c), the bodies its markers sit on, through the
  * variables it reads (they form no cycle: model/variable_programs.c). */
 static void program_columns(const hx_dynamics *d, const hx_expr_program *p, int *cols, int *n,
-                            int max)
+                            int max, int *implicit_added)
 {
     const hx_model *m = d->m;
     const hx_expr_input *in = hx_expr_inputs(p);
@@ -67,12 +89,12 @@ static void program_columns(const hx_dynamics *d, const hx_expr_program *p, int 
         if (in[j].kind == HX_EXPR_INPUT_DIF1) {
             const int rate = diff_routine(m, in[j].index[0]);
             if (rate >= 0)
-                diff_columns_into(d, rate, cols, n, max);
+                diff_columns_into(d, rate, cols, n, max, implicit_added);
         }
         if (in[j].variable >= 0) {
             const hx_variable *v = &m->variables[in[j].variable];
             if (v->program != NULL)
-                program_columns(d, v->program, cols, n, max);
+                program_columns(d, v->program, cols, n, max, implicit_added);
             for (int i = 0; v->program == NULL && i < v->nmarkers; ++i)
                 if (v->marker_ids[i] != 0) {
                     int body_cols[13];
@@ -93,12 +115,17 @@ static void program_columns(const hx_dynamics *d, const hx_expr_program *p, int 
     }
 }
 
-static void diff_columns_into(const hx_dynamics *d, int routine, int *cols, int *n, int max)
+static void diff_columns_into(const hx_dynamics *d, int routine, int *cols, int *n, int max,
+                              int *implicit_added)
 {
     const hx_model *m = d->m;
     add_column(cols, n, max, d->diff_offset + m->routines[routine].slot);
+    if (m->routines[routine].implicit && m->routines[routine].program != NULL) {
+        implicit_columns(d, cols, n, max, implicit_added);
+        return;
+    }
     if (m->routines[routine].program != NULL) {
-        program_columns(d, m->routines[routine].program, cols, n, max);
+        program_columns(d, m->routines[routine].program, cols, n, max, implicit_added);
         return;
     }
     const hx_binding *b = d->routine_binding[routine];
@@ -126,14 +153,28 @@ static void diff_columns_into(const hx_dynamics *d, int routine, int *cols, int 
 
 int hx_diff_columns(const hx_dynamics *d, int routine, int *cols, int max)
 {
-    int n = 0;
-    diff_columns_into(d, routine, cols, &n, max);
+    int n = 0, implicit_added = 0;
+    diff_columns_into(d, routine, cols, &n, max, &implicit_added);
     return n;
 }
 
 /* The rates routine k's expression reads by DIF1 computed again at jac->dd's
  * frames (and first those they read in turn), as the routines stage
  * computes them (DIFSUB as for a difference); 0 or -1 (jac->dd.message). */
+static int read_rates(hx_jacobian *jac, int k);
+
+/* The implicit rates solved again at jac->dd's frames (the DIFSUB rates
+ * their residuals read computed there first), Newton from their rates at
+ * the build's state; 0 or -1 (jac->dd.message). */
+static int implicit_rates(hx_jacobian *jac)
+{
+    const hx_dynamics *d = jac->d;
+    for (int i = 0; i < d->nimplicit; ++i)
+        if (read_rates(jac, d->implicit[i]) != 0)
+            return -1;
+    return hx_implicit_diffs_solve(d, &jac->dd, NULL, NULL);
+}
+
 static int read_rates(hx_jacobian *jac, int k)
 {
     const hx_dynamics *d = jac->d;
@@ -142,10 +183,17 @@ static int read_rates(hx_jacobian *jac, int k)
     if (p == NULL)
         return 0;
     const hx_expr_input *in = hx_expr_inputs(p);
+    int solved = d->m->routines[k].implicit; /* an implicit one's are solved by the caller */
     for (int j = 0; j < hx_expr_input_count(p); ++j) {
         const int r = in[j].kind == HX_EXPR_INPUT_DIF1 ? diff_routine(d->m, in[j].index[0]) : -1;
         if (r < 0)
             continue;
+        if (d->m->routines[r].implicit && d->m->routines[r].program != NULL) {
+            if (!solved && implicit_rates(jac) != 0)
+                return -1;
+            solved = 1;
+            continue;
+        }
         double rate;
         if (d->m->routines[r].program != NULL) {
             if (read_rates(jac, r) != 0 || hx_routines_diff_expression(d, dd, r, &rate) != 0)
@@ -176,6 +224,12 @@ static int diff_rate(hx_jacobian *jac, int k, double t, const double *y, double 
             hx_message msg;
             if (hx_variables_values(&dd->frames, dd->frames.variables, &msg) != 0)
                 return hx_dynamics_fail(dd, "%s", msg.text);
+        }
+        if (d->m->routines[k].implicit) { /* solved with the other implicit ones */
+            if (implicit_rates(jac) != 0)
+                return -1;
+            *rate = dd->frames.diffs[2 * d->m->routines[k].slot + 1];
+            return 0;
         }
         if (rates && read_rates(jac, k) != 0)
             return -1;
@@ -301,9 +355,11 @@ int hx_routine_blocks(hx_jacobian *jac, double t, const double *y)
     if ((m->variables_read || d->diffs_read_variables) &&
         hx_variables_values(&dd->frames, dd->frames.variables, &msg) != 0)
         return hx_dynamics_fail(dd, "%s", msg.text);
+    if (d->nimplicit > 0 && implicit_rates(jac) != 0)
+        return -1;
     for (int k = 0; rates && k < m->nroutines; ++k)
-        if (m->routines[k].program != NULL && reads_rate(m->routines[k].program) &&
-            read_rates(jac, k) != 0)
+        if (m->routines[k].program != NULL && !m->routines[k].implicit &&
+            reads_rate(m->routines[k].program) && read_rates(jac, k) != 0)
             return -1;
     return 0;
 }

@@ -10,6 +10,7 @@
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/joint_turns.h"
+#include "sim/dynamics/implicit_diffs.h"
 #include "sim/jacobian/jacobian.h"
 #include "sim/simulation/equilibrium.h"
 
@@ -33,6 +34,9 @@ static int rhs(void *ctx, double t, const double *y, double *ydot)
 static int project(void *ctx, double t, double *y)
 {
     run_context *rc = ctx;
+    /* a step's end: the implicit Control_Diffs' Newton starts from its rates once
+     * the integrator goes on past it */
+    hx_implicit_diffs_step_ended(rc->d, rc->dd, t);
     if (hx_constraints_project(rc->d, rc->dd, t, y) != 0)
         return -1;
     return rc->d->nrows > 0 ? 1 : 0;
