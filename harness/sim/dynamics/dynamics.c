@@ -136,7 +136,7 @@ int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message
     dd->turn_rate = calloc((size_t)m->njoints + 1, sizeof(double));
     dd->constraint_work = calloc(hx_constraints_work_size(d), sizeof(double));
     dd->stateeqn_work = malloc(sizeof(double) * (size_t)hx_stateeqns_work_size(d));
-    dd->implicit_start = calloc(2 * (size_t)d->nimplicit + 1, sizeof(double));
+    dd->implicit_start = calloc((size_t)d->nimplicit + 1, sizeof(double));
     dd->implicit_work = calloc(hx_implicit_diffs_work_size(d), sizeof(double));
     if (!dd->implicit_start || !dd->implicit_work ||
         !dd->force || !dd->torque || !dd->element_outputs || !dd->element_load ||

@@ -161,10 +161,7 @@ typedef struct hx_dynamics_data {
     double *stateeqn_work;        /* one Force_StateEqn's inputs and its call's copies */
     hx_frames moved;              /* frames with bodies placed elsewhere (element_at.h) */
     double *implicit_start;       /* per implicit Control_Diff: where Newton starts, the rate
-                                   * of the last accepted step (implicit_diffs.h); then as
-                                   * many pending: a step's rates not known to be accepted */
-    double implicit_pending_time; /* the pending rates' step end; taken once an evaluation
-                                   * is past it (+inf: none pending) */
+                                   * of the last accepted step (implicit_diffs.h) */
     double *implicit_work;        /* Newton's iterate, residuals, step and matrix */
     /* the first failure (failure.h) */
     int failed;

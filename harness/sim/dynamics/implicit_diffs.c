@@ -58,7 +58,6 @@ void hx_implicit_diffs_restart(const hx_dynamics *d, hx_dynamics_data *dd)
         const hx_routine *r = &d->m->routines[d->implicit[i]];
         dd->implicit_start[i] = r->ic_given[1] ? r->ic[1] : 0.0;
     }
-    dd->implicit_pending_time = INFINITY;
 }
 
 /* The rates of dd->frames into to. */
@@ -71,15 +70,6 @@ static void rates_into(const hx_dynamics *d, const hx_dynamics_data *dd, double 
 void hx_implicit_diffs_keep(const hx_dynamics *d, hx_dynamics_data *dd)
 {
     rates_into(d, dd, dd->implicit_start);
-    dd->implicit_pending_time = INFINITY;
-}
-
-void hx_implicit_diffs_step_ended(const hx_dynamics *d, hx_dynamics_data *dd, double t)
-{
-    if (d->nimplicit == 0)
-        return;
-    rates_into(d, dd, dd->implicit_start + d->nimplicit);
-    dd->implicit_pending_time = t;
 }
 
 /* The residuals F at the rates x (set into dd->frames) and their partials J
@@ -130,11 +120,6 @@ int hx_implicit_diffs_solve(const hx_dynamics *d, hx_dynamics_data *dd, const do
     const hx_model *m = d->m;
     double *x = dd->implicit_work, *F = x + n, *step = F + n, *J = step + n,
            *partials = J + n * n, *scratch = partials + HX_EXPR_MAX_INPUTS;
-    if (dd->frames.time > dd->implicit_pending_time) { /* the pending step was accepted */
-        for (int i = 0; i < n; ++i)
-            dd->implicit_start[i] = dd->implicit_start[n + i];
-        dd->implicit_pending_time = INFINITY; /* taken; the next step's end sets it */
-    }
     for (int i = 0; i < n; ++i)
         x[i] = start != NULL ? start[i] : dd->implicit_start[i];
     for (int it = 0; it < NEWTON_ITERATIONS; ++it) {

@@ -4,12 +4,9 @@
  * every implicit one, are solved together at each evaluation by Newton's
  * method, dF/dDIF1 exact from the expressions' partials (expr/evaluate.h).
  * Newton starts from the rates of the last step the integrator accepted,
- * kept in the evaluation's own data (dd->implicit_start); at the start of a
- * run from ic_dot where written, else 0. A step's end is not known to be
- * accepted when the integrator projects it (CVODE projects before its error
- * test): its rates wait, pending, until an evaluation past its end time
- * shows the integrator went on from it (a rejected step's retry evaluates
- * before that time, and its own end replaces the pending rates).
+ * kept in the evaluation's own data (dd->implicit_start), which only the
+ * run's accept hook moves (an evaluation never does, so a rejected step's
+ * never count); at the start of a run from ic_dot where written, else 0.
  */
 #ifndef HX_SIM_DYNAMICS_IMPLICIT_DIFFS_H
 #define HX_SIM_DYNAMICS_IMPLICIT_DIFFS_H
@@ -24,8 +21,7 @@ int hx_implicit_diffs_init(hx_dynamics *d, hx_message *msg);
 void hx_implicit_diffs_free(hx_dynamics *d);
 size_t hx_implicit_diffs_work_size(const hx_dynamics *d);
 
-/* dd->implicit_start at a run's start: ic_dot where written, else 0; nothing
- * pending. */
+/* dd->implicit_start at a run's start: ic_dot where written, else 0. */
 void hx_implicit_diffs_restart(const hx_dynamics *d, hx_dynamics_data *dd);
 
 /* The implicit rates solved at dd->frames (the kinematics, the variables and
@@ -38,11 +34,8 @@ int hx_implicit_diffs_solve(const hx_dynamics *d, hx_dynamics_data *dd, const do
                             double *ydot);
 
 /* The rates of dd->frames (DIF1, from the last evaluation) become where
- * Newton starts next, at once (the Jacobian's data, at the build's state). */
+ * Newton starts next: an accepted step's (the run's accept hook, after the
+ * step's last evaluation), or the Jacobian's data at the build's state. */
 void hx_implicit_diffs_keep(const hx_dynamics *d, hx_dynamics_data *dd);
-
-/* A step ended at t (the integrator projects it): the rates of dd->frames
- * become pending, where Newton starts once an evaluation is past t. */
-void hx_implicit_diffs_step_ended(const hx_dynamics *d, hx_dynamics_data *dd, double t);
 
 #endif

@@ -34,9 +34,6 @@ static int rhs(void *ctx, double t, const double *y, double *ydot)
 static int project(void *ctx, double t, double *y)
 {
     run_context *rc = ctx;
-    /* a step's end: the implicit Control_Diffs' Newton starts from its rates once
-     * the integrator goes on past it */
-    hx_implicit_diffs_step_ended(rc->d, rc->dd, t);
     if (hx_constraints_project(rc->d, rc->dd, t, y) != 0)
         return -1;
     return rc->d->nrows > 0 ? 1 : 0;
@@ -51,13 +48,15 @@ static void follow_turns(run_context *rc)
 }
 
 /* An accepted step: the rotations between moving bodies counted from it
- * (joint_turns.h). */
+ * (joint_turns.h), and the implicit Control_Diffs' Newton starting from its
+ * rates (implicit_diffs.h; the step's last evaluation is at its end). */
 static int accept(void *ctx, double t, const double *y)
 {
     run_context *rc = ctx;
     if (hx_joint_turns_accept(rc->d, rc->dd, t, y) != 0)
         return -1;
     follow_turns(rc);
+    hx_implicit_diffs_keep(rc->d, rc->dd);
     return 0;
 }
 
