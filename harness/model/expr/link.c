@@ -3,7 +3,9 @@
  * Control_Diffs, arrays, splines and curves by id to their indices, each id
  * the model does not define named with its place in the text; a function
  * the harness does not answer yet is refused here, and so are a joint's
- * reaction and a marker's acceleration anywhere but in an output expression.
+ * reaction, a marker's acceleration and an SFORCE's force anywhere but in an
+ * output expression or one linked as a loop's (a force's, a variable's, a
+ * Control_Diff's: hx_expr_link_loop).
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -12,6 +14,9 @@
 #include "model/curve.h"
 #include "model/expr/functions.h"
 #include "model/expr/program.h"
+
+/* Where a program is evaluated: what it may read beyond the state. */
+enum { LINK_STATE, LINK_LOOP, LINK_OUTPUT };
 
 static int fail_at(hx_expr_program *p, hx_message *msg, int line, int column, const char *fmt,
                    ...) __attribute__((format(printf, 5, 6)));
@@ -30,14 +35,14 @@ static int fail_at(hx_expr_program *p, hx_message *msg, int line, int column, co
 
 /* JOINT(id, jflag, comp, rm), JPRIM(...): the joint, its markers and rm. */
 static int link_reaction(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
-                         const char *text, int output, hx_message *msg)
+                         const char *text, int where, hx_message *msg)
 {
     const int primitive = in->function == HX_FN_JPRIM;
-    if (!output)
+    if (where == LINK_STATE)
         return fail_at(p, msg, in->line, in->column, "%s: a joint's reaction is known only"
-                       " once the accelerations are, after the forces and variables: a force"
-                       " or variable that reads it closes an algebraic loop, which the harness"
-                       " does not solve (REQUEST and Post_Request expressions may read it)",
+                       " once the accelerations are: here it would close an algebraic loop,"
+                       " which the harness solves for forces, variables and Control_Diff"
+                       " rates only (REQUEST and Post_Request expressions may read it)",
                        text);
     const int k = primitive ? hx_model_primitive(m, in->ids[0]) : hx_model_joint(m, in->ids[0]);
     if (k < 0)
@@ -56,12 +61,13 @@ static int link_reaction(hx_expr_program *p, hx_expr_input *in, const hx_model *
 /* SFORCE(id, jflag, comp, rm): a Force_Scalar_TwoBody by expression (a
  * dataset's SFORCE), and rm. */
 static int link_load(hx_expr_program *p, hx_expr_input *in, const hx_model *m, const char *text,
-                     int output, hx_message *msg)
+                     int where, hx_message *msg)
 {
-    if (!output)
-        return fail_at(p, msg, in->line, in->column, "%s: another element's force: the order of"
-                       " evaluation would decide it (REQUEST and Post_Request expressions may"
-                       " read it)", text);
+    if (where == LINK_STATE)
+        return fail_at(p, msg, in->line, in->column, "%s: another element's force: here it"
+                       " would close an algebraic loop, which the harness solves for forces,"
+                       " variables and Control_Diff rates only (REQUEST and Post_Request"
+                       " expressions may read it)", text);
     in->index[0] = -1;
     for (int k = 0; k < m->nloads && in->index[0] < 0; ++k)
         if (m->loads[k].id == in->ids[0] && m->loads[k].kind != HX_LOAD_VECTOR)
@@ -77,23 +83,24 @@ static int link_load(hx_expr_program *p, hx_expr_input *in, const hx_model *m, c
     return 0;
 }
 
-static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, int output,
+static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, int where,
                       hx_message *msg)
 {
     char text[96];
     hx_expr_input_text(in, text, sizeof text);
     const int id = in->ids[0];
     in->variable = -1;
+    in->loop = -1;
     switch (in->kind) {
     case HX_EXPR_INPUT_TIME: return 0;
-    case HX_EXPR_INPUT_REACTION: return link_reaction(p, in, m, text, output, msg);
-    case HX_EXPR_INPUT_LOAD: return link_load(p, in, m, text, output, msg);
+    case HX_EXPR_INPUT_REACTION: return link_reaction(p, in, m, text, where, msg);
+    case HX_EXPR_INPUT_LOAD: return link_load(p, in, m, text, where, msg);
     case HX_EXPR_INPUT_ACCELERATION:
-        if (!output)
+        if (where == LINK_STATE)
             return fail_at(p, msg, in->line, in->column, "%s: an acceleration is known only once"
-                           " the forces are: a force or variable that reads it closes an"
-                           " algebraic loop, which the harness does not solve (REQUEST and"
-                           " Post_Request expressions may read it)", text);
+                           " the forces are: here it would close an algebraic loop, which the"
+                           " harness solves for forces, variables and Control_Diff rates only"
+                           " (REQUEST and Post_Request expressions may read it)", text);
         /* its markers are linked as a measure's */
         /* fall through */
     case HX_EXPR_INPUT_MEASURE:
@@ -144,7 +151,7 @@ static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, 
     }
 }
 
-static int link_program(hx_expr_program *p, const hx_model *m, int output, hx_message *msg)
+static int link_program(hx_expr_program *p, const hx_model *m, int where, hx_message *msg)
 {
     p->model = NULL;
     for (int k = 0; k < p->nops; ++k) {
@@ -175,7 +182,7 @@ static int link_program(hx_expr_program *p, const hx_model *m, int output, hx_me
         }
     }
     for (int k = 0; k < p->ninputs; ++k)
-        if (link_input(p, &p->inputs[k], m, output, msg) != 0)
+        if (link_input(p, &p->inputs[k], m, where, msg) != 0)
             return -1;
     p->model = m;
     return 0;
@@ -183,10 +190,20 @@ static int link_program(hx_expr_program *p, const hx_model *m, int output, hx_me
 
 int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg)
 {
-    return link_program(p, m, 0, msg);
+    return link_program(p, m, LINK_STATE, msg);
+}
+
+int hx_expr_link_loop(hx_expr_program *p, const hx_model *m, hx_message *msg)
+{
+    return link_program(p, m, LINK_LOOP, msg);
 }
 
 int hx_expr_link_output(hx_expr_program *p, const hx_model *m, hx_message *msg)
 {
-    return link_program(p, m, 1, msg);
+    return link_program(p, m, LINK_OUTPUT, msg);
+}
+
+void hx_expr_set_loop(hx_expr_program *p, int k, int slot)
+{
+    p->inputs[k].loop = slot;
 }
