@@ -76,6 +76,8 @@ static void added_mass_accelerates_at_f_over_m_plus_ma(void **state)
         assert_close(y[Z], ADDED_MASS_A / 2, 0, 1e-6);
         assert_close(y[VZ], ADDED_MASS_A, 0, 1e-6);
         assert_close(y[m.d.diff_offset], ADDED_MASS_A, 0, 1e-6);
+        if (methods[k] == HX_METHOD_BDF) /* its Jacobian by differences, and it says so */
+            assert_non_null(strstr(r.jacobian, "central differences of the whole right-hand"));
     }
     free(y), free(ydot);
     close_model(&m);

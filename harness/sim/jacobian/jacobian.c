@@ -136,6 +136,13 @@ int hx_jacobian_build(hx_jacobian *jac, double t, const double *y, const double 
 
 void hx_jacobian_describe(const hx_jacobian *jac, char *text, size_t size)
 {
+    const int nz = jac->d->m->nloop_inputs;
+    if (nz > 0) {
+        snprintf(text, size, "Jacobian by central differences of the whole right-hand side:"
+                 " the model's loads read %d input%s of an algebraic loop"
+                 " (docs/interface.md §8.8)", nz, nz == 1 ? "" : "s");
+        return;
+    }
     int counts[3] = {0, 0, 0};
     for (int k = 0; k < jac->nf; ++k)
         counts[jac->source[k]]++;
