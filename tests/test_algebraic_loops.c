@@ -38,6 +38,15 @@ static const char *free_body(const char *name, const char *loads)
     return test_write_file(name, text);
 }
 
+/* m's initial state into *y and ydot = f(0, y) into *ydot (both the
+ * caller's to free): the evaluation's status. */
+static int evaluate_initial(model *m, double **y, double **ydot)
+{
+    *y = model_state(m), *ydot = model_state(m);
+    model_initial_state(m, *y);
+    return hx_dynamics_rhs(&m->d, &m->data, 0.0, *y, *ydot);
+}
+
 /* The added mass: m z'' = F - m g - ma z'' with m = 2, ma = 3, F = 30, so
  * z'' = (30 - 2 * 9.81) / (2 + 3) = 10.38 / 5 = 2.076. */
 #define ADDED_MASS                                                                          \
@@ -61,9 +70,8 @@ static void added_mass_accelerates_at_f_over_m_plus_ma(void **state)
     char text[160];
     assert_string_equal(hx_loop_input_text(md, 0, text, sizeof text),
                         "ACCZ(20) (Force_Vector_OneBody 5)");
-    double *y = model_state(&m), *ydot = model_state(&m);
-    model_initial_state(&m, y);
-    assert_int_equal(hx_dynamics_rhs(&m.d, &m.data, 0.0, y, ydot), 0);
+    double *y, *ydot;
+    assert_int_equal(evaluate_initial(&m, &y, &ydot), 0);
     assert_close(ydot[VZ], ADDED_MASS_A, 0, 1e-9);
     assert_close(m.data.frames.loop[0], ADDED_MASS_A, 0, 1e-9); /* z = g(z) */
     /* the trajectory: z = a t^2 / 2, v = a t at t = 1, both methods */
@@ -96,9 +104,8 @@ static void a_variable_of_accx_and_an_sforce_read_by_forces(void **state)
                              "<Force_Vector_OneBody id=\"5\" marker_id=\"20\""
                              " fx_expression=\"6 - VARVAL(3)\"/>\n"));
     assert_int_equal(m.session.model->nloop_inputs, 1);
-    double *y = model_state(&m), *ydot = model_state(&m);
-    model_initial_state(&m, y);
-    assert_int_equal(hx_dynamics_rhs(&m.d, &m.data, 0.0, y, ydot), 0);
+    double *y, *ydot;
+    assert_int_equal(evaluate_initial(&m, &y, &ydot), 0);
     assert_close(ydot[VX], 2.0, 0, 1e-9);
     assert_close(ydot[VZ], -G, 0, 1e-12);
     free(y), free(ydot);
@@ -112,9 +119,7 @@ static void a_variable_of_accx_and_an_sforce_read_by_forces(void **state)
                              "<Force_Vector_OneBody id=\"5\" marker_id=\"20\""
                              " fx_expression=\"6 - VARVAL(3) + SFORCE(7, 0, 2, 0)\"/>\n"));
     assert_int_equal(m.session.model->nloop_inputs, 2);
-    y = model_state(&m), ydot = model_state(&m);
-    model_initial_state(&m, y);
-    assert_int_equal(hx_dynamics_rhs(&m.d, &m.data, 0.0, y, ydot), 0);
+    assert_int_equal(evaluate_initial(&m, &y, &ydot), 0);
     assert_close(ydot[VX], 20.0 / 3.0, 0, 1e-9);
     free(y), free(ydot);
     close_model(&m);
@@ -151,9 +156,8 @@ static void friction_of_the_normal_reaction_brakes_at_mu_g(void **state)
     model m;
     open_model(&m, braked_block());
     assert_int_equal(m.d.joint_row[0], -1); /* reduced: y = [x | v | works] */
-    double *y = model_state(&m), *ydot = model_state(&m);
-    model_initial_state(&m, y);
-    assert_int_equal(hx_dynamics_rhs(&m.d, &m.data, 0.0, y, ydot), 0);
+    double *y, *ydot;
+    assert_int_equal(evaluate_initial(&m, &y, &ydot), 0);
     assert_close(m.data.frames.loop[0], 4 * G, 0, 1e-9);
     assert_close(ydot[m.d.nq], -0.25 * G, 0, 1e-9);
     double end[2][8];
@@ -183,9 +187,8 @@ static void a_loop_without_a_solution_is_refused_naming_it(void **state)
     open_model(&m, free_body("singular.xml",
                              "<Force_Vector_OneBody id=\"5\" marker_id=\"20\""
                              " fz_expression=\"30 + 2*ACCZ(20)\"/>\n"));
-    double *y = model_state(&m), *ydot = model_state(&m);
-    model_initial_state(&m, y);
-    assert_int_equal(hx_dynamics_rhs(&m.d, &m.data, 0.0, y, ydot), -1);
+    double *y, *ydot;
+    assert_int_equal(evaluate_initial(&m, &y, &ydot), -1);
     const char *text = m.data.message;
     printf("%s\n", text);
     assert_non_null(strstr(text, "the algebraic loop of ACCZ(20) (Force_Vector_OneBody 5)"));
