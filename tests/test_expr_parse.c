@@ -322,8 +322,8 @@ static void link_errors_name_the_id(void **state)
                     "m.xml:10:9: VFORCE(1,0,2,0): another element's force: the order of"
                     " evaluation would decide it");
     assert_contains(expr_link_error(&fixture, "1 + SFORCE(1, 0, 2, 0)", &msg),
-                    "m.xml:10:9: SFORCE(1,0,2,0): another element's force: the order of"
-                    " evaluation would decide it");
+                    "m.xml:10:9: SFORCE(1,0,2,0): another element's force: here it would"
+                    " close an algebraic loop");
     assert_contains(expr_link_error(&fixture, "ACCX(10)", &msg),
                     "m.xml:10:5: ACCX(10): an acceleration is known only once the forces are",
                     "algebraic loop");

@@ -335,6 +335,47 @@ static void jacobian_with_state_equations_diffs_and_loads(void **state)
                    HX_PARTIALS_FIESUB /* no force elements */);
 }
 
+/* An added mass on a spring (docs/interface.md §8.8): a body of 2 with
+ * fz = -50 DZ - 3 VZ - 3 ACCZ, so z'' = (-50 z - 3 v - 2 g) / (2 + 3): the row
+ * of z' holds -50 / 5 = -10 on z and -3 / 5 = -0.6 on v (the loop's share;
+ * without it -25 and -1.5), by hand; and the whole matrix against
+ * differences, nothing outside its pattern. */
+static void jacobian_of_an_algebraic_loop(void **state)
+{
+    (void)state;
+    model m;
+    open_model(&m, test_write_file(
+        "loop.xml",
+        "<MotionSolve><Model>\n"
+        "<Force_Gravity grav_x=\"0\" grav_y=\"0\" grav_z=\"-9.81\"/>\n"
+        "<Body_Ground id=\"1\"/>\n<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+        "<Body_Rigid id=\"2\" cg_id=\"20\" mass=\"2\" inertia_xx=\"0.1\" inertia_yy=\"0.2\""
+        " inertia_zz=\"0.3\" v_ic_z=\"0.4\" w_ic_x=\"0.5\"/>\n"
+        "<Reference_Marker id=\"20\" body_id=\"2\" pos_z=\"0.1\"/>\n"
+        "<Force_Vector_OneBody id=\"5\" marker_id=\"20\""
+        " fz_expression=\"-50*DZ(20) - 3*VZ(20) - 3*ACCZ(20)\"/>\n"
+        "</Model></MotionSolve>\n"));
+    double *y = model_state(&m);
+    model_initial_state(&m, y);
+    hx_jacobian jac;
+    hx_message msg;
+    assert_int_equal(hx_jacobian_init(&jac, &m.d, &msg), 0);
+    double *values = calloc((size_t)jac.pattern.nnz, sizeof(double));
+    assert_non_null(values);
+    assert_int_equal(hx_jacobian_build(&jac, 0.0, y, NULL, values), 0);
+    enum { Z = 2, VZ = 9 }; /* y = [p, q | v, w | works] */
+    assert_close(values[hx_sparsity_find(&jac.pattern, VZ, Z)], -10.0, 0, 1e-6);
+    assert_close(values[hx_sparsity_find(&jac.pattern, VZ, VZ)], -0.6, 0, 1e-6);
+    free(values);
+    hx_jacobian_free(&jac);
+    long outside = 0;
+    const double worst = jacobian_against_differences(&m.d, 0.0, y, "an added mass", &outside);
+    assert_int_equal(outside, 0);
+    assert_true(worst < 1e-6);
+    free(y);
+    close_model(&m);
+}
+
 /* Every bundled model the harness simulates, at a state it reaches (0.05 s
  * of DOPRI5 from the start: loads on, elements deformed), and chains of
  * bodies from scripts/chain_model.sh: the assembled matrix equals the
@@ -462,6 +503,7 @@ int main(void)
         cmocka_unit_test(jacobian_on_jointed_bodies_with_partials),
         cmocka_unit_test(jacobian_of_constraint_groups),
         cmocka_unit_test(jacobian_with_state_equations_diffs_and_loads),
+        cmocka_unit_test(jacobian_of_an_algebraic_loop),
         cmocka_unit_test(non_finite_partials_stop_the_run_with_their_element),
         cmocka_unit_test(a_twin_that_disagrees_is_set_aside),
     };

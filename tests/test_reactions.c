@@ -5,8 +5,8 @@
  * millimetres (ucf = 1000); a chain of three links carrying the links below;
  * a bar on a SPHERICAL and an INLINE or INPLANE primitive by moments; a
  * cantilever's torque; JOINT()/JPRIM() on J (jflag 1) and in a turned rm;
- * JOINT() in a Post_Request equal to the CSV's columns; JOINT() in a force
- * or variable refused with its place.
+ * JOINT() in a Post_Request equal to the CSV's columns; JOINT() in a general
+ * constraint refused with its place.
  */
 #include <math.h>
 #include <stdio.h>
@@ -346,20 +346,22 @@ static void request_equals_the_csv_columns(void **state)
     csv_free(&t);
 }
 
-static void joint_in_a_force_or_variable_is_refused(void **state)
+static void joint_in_a_general_constraint_is_refused(void **state)
 {
     (void)state;
     char text[2048];
-    /* line 9: the force; its value's column 5 */
+    /* line 9: a general constraint. (A force or a
+     * variable reads it as an algebraic loop's input: test_algebraic_loops.c) */
     snprintf(text, sizeof text, "%s", pendulum("", 1.5, G, 0.0, JOINT_IJ("REVOLUTE", 21, 10)
-             "\n<Force_Scalar_TwoBody id=\"4\" type=\"FORCE\" i_marker_id=\"20\""
-             " j_marker_id=\"10\" val_expression=\"1 + JOINT(1,0,3,0)\"/>"));
-    sim_expect_parse_error("force.xml", text, (const char *const[]){"force.xml:9:5", "JOINT(1,0,3,0)",
-                 "algebraic loop", "Force_Scalar_TwoBody", NULL});
+             "\n<Constraint_General id=\"4\" i_marker_id=\"20\""
+             " expr=\"DX(20) - JOINT(1,0,3,0)\"/>"));
+    sim_expect_parse_error("gcon.xml", text, (const char *const[]){"gcon.xml:9:", "JOINT(1,0,3,0)",
+                 "algebraic loop", "Constraint_General", NULL});
+    /* a variable's: its ids resolved all the same */
     snprintf(text, sizeof text, "%s", pendulum("", 1.5, G, 0.0, JOINT_IJ("REVOLUTE", 21, 10)
              "\n<Reference_Variable id=\"3\" expr=\"JPRIM(1,0,3,0)\"/>"));
     sim_expect_parse_error("variable.xml", text, (const char *const[]){"variable.xml:9:1",
-                 "JPRIM(1,0,3,0)", "algebraic loop", "Reference_Variable", NULL});
+                 "JPRIM(1,0,3,0)", "no Constraint_Jprim (JPRIM) 1", "Reference_Variable", NULL});
     /* in a request: an id the model lacks, a flag or component out of range */
     snprintf(text, sizeof text, "%s", pendulum("", 1.5, G, 0.0, JOINT_IJ("REVOLUTE", 21, 10)
              "\n<Post_Request id=\"5\" type=\"EXPRESSION\" expr2=\"JOINT(9,0,3,0)\"/>"));
@@ -432,10 +434,10 @@ static void dataset_request_and_force(void **state)
     assert_int_equal(hx_requests_values(&e.m.data.frames, 0, NULL, NULL, out, &msg), -1);
     assert_contains(msg.text, "request.adm:9:", "JOINT", "no joint reactions");
     release(&e);
-    /* line 9, the function's column 44 */
-    snprintf(text, sizeof text, "%sSFORCE/4, TRANSLATION, I = 20, J = 10, FUNCTION = JOINT(1,0,3,0)"
+    /* line 9: a general constraint may not read it (a force may: test_algebraic_loops.c) */
+    snprintf(text, sizeof text, "%sGCON/4, I = 20, FUNCTION = DX(20) - JOINT(1,0,3,0)"
              "\nEND\n", head);
-    sim_expect_parse_error("sforce.adm", text, (const char *const[]){"sforce.adm:9:", "SFORCE/4",
+    sim_expect_parse_error("gcon.adm", text, (const char *const[]){"gcon.adm:9:", "GCON/4",
                  "JOINT(1,0,3,0)", "algebraic loop", NULL});
 }
 
@@ -475,7 +477,7 @@ int main(void)
         cmocka_unit_test(bar_on_two_supports_by_moments),
         cmocka_unit_test(cantilever_torque_and_its_transfer),
         cmocka_unit_test(request_equals_the_csv_columns),
-        cmocka_unit_test(joint_in_a_force_or_variable_is_refused),
+        cmocka_unit_test(joint_in_a_general_constraint_is_refused),
         cmocka_unit_test(joint_without_reactions_is_a_fault),
         cmocka_unit_test(dataset_request_and_force),
         cmocka_unit_test(coupled_gears_hold_their_weight_only),

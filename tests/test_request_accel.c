@@ -6,7 +6,7 @@
  * w^2 L, and at rest in the pendulum's own frame (L); a free body turned by a
  * known torque, alpha = T / I about a body axis that is not the world's; a
  * spring's mass, ACCX = -k x / m at every row of a run (the value at the
- * row's state, not an earlier one's); ACCX in a force or a variable refused
+ * row's state, not an earlier one's); ACCX in a general constraint refused
  * with its file, line and column; REQUEST/ACCELERATION and Post_Request's
  * MARKER_ACCELERATION in Adams' order (F1 ACCM, F2..F4 ACCX..ACCZ in RM's
  * axes, F5 WDTM, F6..F8 WDTX..WDTZ), in a run's CSV and at a state.
@@ -288,17 +288,19 @@ static void spring_acceleration_is_the_rows(void **state)
     csv_free(&t);
 }
 
-/* ACCX and WDTZ in a force or a variable: refused where written. */
-static void refused_in_forces_and_variables(void **state)
+/* ACCX, WDTZ and SFORCE in a general constraint: refused where written (a
+ * force or a variable reads them as an algebraic loop's inputs:
+ * test_algebraic_loops.c). */
+static void refused_in_general_constraints(void **state)
 {
     (void)state;
     static const char *const cases[][3] = {
-        {"SFORCE/1, TRANSLATION, I=20, J=10, FUNCTION=2*ACCX(20)",
-         "bad.adm:6:47:", "ACCX(20): an acceleration is known only once the forces are"},
-        {"VARIABLE/1, FUNCTION=WDTZ(20,10)",
-         "bad.adm:6:22:", "WDTZ(20,10): an acceleration is known only"},
-        {"VARIABLE/1, FUNCTION=1+SFORCE(1,0,2,0)",
-         "bad.adm:6:24:", "SFORCE(1,0,2,0): another element's force"},
+        {"GCON/1, I=20, FUNCTION=DX(20)-2*ACCX(20)",
+         "bad.adm:6:33:", "ACCX(20): an acceleration is known only once the forces are"},
+        {"GCON/1, I=20, FUNCTION=WDTZ(20,10)",
+         "bad.adm:6:24:", "WDTZ(20,10): an acceleration is known only"},
+        {"GCON/1, I=20, FUNCTION=1+SFORCE(1,0,2,0)",
+         "bad.adm:6:26:", "SFORCE(1,0,2,0): another element's force"},
         {"REQUEST/1, F2=SFORCE(7,0,2,0)",
          "bad.adm:6:15:", "SFORCE(7,0,2,0): no Force_Scalar_TwoBody (SFORCE) 7 in the model"},
     };
@@ -336,7 +338,7 @@ int main(void)
         cmocka_unit_test(pendulum_at_the_bottom),
         cmocka_unit_test(torque_over_inertia),
         cmocka_unit_test(spring_acceleration_is_the_rows),
-        cmocka_unit_test(refused_in_forces_and_variables),
+        cmocka_unit_test(refused_in_general_constraints),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

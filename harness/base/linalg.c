@@ -8,12 +8,17 @@ int hx_solve(int n, double *A, double *b)
     double scale = 0.0;
     for (int k = 0; k < n * n; ++k)
         scale = fmax(scale, fabs(A[k]));
+    return hx_solve_pivot(n, A, b, 1e-14 * scale);
+}
+
+int hx_solve_pivot(int n, double *A, double *b, double min_pivot)
+{
     for (int c = 0; c < n; ++c) {
         int p = c;
         for (int r = c + 1; r < n; ++r)
             if (fabs(A[r * n + c]) > fabs(A[p * n + c]))
                 p = r;
-        if (!(fabs(A[p * n + c]) > 1e-14 * scale))
+        if (!(fabs(A[p * n + c]) > min_pivot))
             return -1;
         if (p != c) {
             for (int k = 0; k < n; ++k) {

@@ -166,15 +166,25 @@ int hx_expr_operand_input(const hx_expr_program *p, const hx_expr_context *c, in
             return -1;
         break;
     case HX_EXPR_INPUT_REACTION:
-        if (reaction(c, in, value, fault) != 0)
-            return -1;
-        break;
     case HX_EXPR_INPUT_ACCELERATION:
-        if (acceleration(c, in, value, fault) != 0)
-            return -1;
-        break;
     case HX_EXPR_INPUT_LOAD:
-        if (load(c, in, value, fault) != 0)
+        if (c->outputs == NULL && in->loop >= 0) {
+            /* within a right-hand side: the algebraic loop's current iterate
+             * (sim/dynamics/algebraic_loop.h) */
+            *value = fr->loop[in->loop];
+            break;
+        }
+        if (in->kind == HX_EXPR_INPUT_ACCELERATION) {
+            if (acceleration(c, in, value, fault) != 0)
+                return -1;
+            break;
+        }
+        if (in->kind == HX_EXPR_INPUT_LOAD) {
+            if (load(c, in, value, fault) != 0)
+                return -1;
+            break;
+        }
+        if (reaction(c, in, value, fault) != 0)
             return -1;
         break;
     case HX_EXPR_INPUT_MARKER_FORCE:

@@ -45,8 +45,10 @@ int hx_frames_init(hx_frames *fr, const hx_model *m)
     fr->first_tracked = calloc((size_t)m->nbodies + 1, sizeof *fr->first_tracked);
     fr->diffs = calloc(2 * (size_t)m->nroutines_of[HX_ROUTINE_DIFF] + 1, sizeof *fr->diffs);
     fr->variables = calloc((size_t)m->nvariables + 1, sizeof *fr->variables);
+    fr->loop = calloc((size_t)m->nloop_inputs + 1, sizeof *fr->loop);
     if (fr->bodies == NULL || fr->markers == NULL || fr->tracked == NULL ||
-        fr->first_tracked == NULL || fr->diffs == NULL || fr->variables == NULL) {
+        fr->first_tracked == NULL || fr->diffs == NULL || fr->variables == NULL ||
+        fr->loop == NULL) {
         hx_frames_free(fr);
         return -1;
     }
@@ -86,6 +88,7 @@ void hx_frames_free(hx_frames *fr)
     free(fr->first_tracked);
     free(fr->diffs);
     free(fr->variables);
+    free(fr->loop);
     memset(fr, 0, sizeof *fr);
 }
 
@@ -105,6 +108,7 @@ void hx_frames_copy(hx_frames *to, const hx_frames *from)
     memcpy(to->markers, from->markers, sizeof *to->markers * (size_t)m->nmarkers);
     memcpy(to->diffs, from->diffs, sizeof *to->diffs * 2 * (size_t)m->nroutines_of[HX_ROUTINE_DIFF]);
     memcpy(to->variables, from->variables, sizeof *to->variables * (size_t)m->nvariables);
+    memcpy(to->loop, from->loop, sizeof *to->loop * (size_t)m->nloop_inputs);
 }
 
 void hx_frames_update(hx_frames *fr)

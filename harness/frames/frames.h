@@ -33,6 +33,11 @@ typedef struct hx_frames {
     /* the Reference_Variable values by index, computed after the frames when the
      * model's loads read them (model.h's variables_read; host/variable_values.h) */
     double *variables;
+    /* the algebraic loop's inputs by slot (model/loop_inputs.h): what the forces,
+     * variables and Control_Diff rates read for an acceleration, a reaction or an
+     * SFORCE's force within a right-hand side, the loop's iterate
+     * (sim/dynamics/algebraic_loop.h); zeros until a right-hand side sets them */
+    double *loop;
 } hx_frames;
 
 /* Frames at the model's initial pose and velocities, its markers current.
@@ -41,7 +46,7 @@ int hx_frames_init(hx_frames *fr, const hx_model *m);
 void hx_frames_free(hx_frames *fr);
 /* A second set equal to from (scratch frames for a probe); 0 or -1. */
 int hx_frames_clone(hx_frames *to, const hx_frames *from);
-/* Copies time, frames, Control_Diff and variable values between two sets of the same model. */
+/* Copies time, frames, Control_Diff, variable and loop values between two sets of the same model. */
 void hx_frames_copy(hx_frames *to, const hx_frames *from);
 
 /* The kinematics stage: world frames of the tracked markers of moving bodies

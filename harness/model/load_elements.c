@@ -107,7 +107,7 @@ static int link_one(hx_draft *d, const hx_load *l, hx_expr_program *p, const cha
     hx_model *m = d->m;
     const char *element = hx_load_element_name(l);
     hx_message why;
-    if (hx_expr_link(p, m, &why) != 0) {
+    if (hx_expr_link_loop(p, m, &why) != 0) {
         hx_draft_fail_expression(d, element, l->id, attr, why.text);
         return -1;
     }
@@ -124,6 +124,9 @@ static int link_one(hx_draft *d, const hx_load *l, hx_expr_program *p, const cha
         }
         if (in[k].kind == HX_EXPR_INPUT_DIF)
             continue; /* a Control_Diff's state, set before the forces (§7.10) */
+        if (in[k].kind == HX_EXPR_INPUT_ACCELERATION || in[k].kind == HX_EXPR_INPUT_REACTION ||
+            in[k].kind == HX_EXPR_INPUT_LOAD)
+            continue; /* an algebraic loop's input (model/loop_inputs.h) */
         if (in[k].kind != HX_EXPR_INPUT_MEASURE) {
             /* a rate (DIF1) is computed after the forces; an IC array is refused as
              * before */

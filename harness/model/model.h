@@ -333,6 +333,10 @@ typedef struct hx_model {
     int *variable_order;     /* the variables' indices, each after those it reads (VARVAL) */
     int variables_read;      /* a load's expression reads a variable: the dynamics computes
                               * their values at each evaluation (frames.h) */
+    struct hx_loop_input *loop_inputs; /* the algebraic loop's inputs (model/loop_inputs.h):
+                              * each distinct acceleration, reaction or SFORCE force a
+                              * force, variable or Control_Diff rate reads */
+    int nloop_inputs;        /* 0: no loop, and a right-hand side does no work for one */
     hx_array *arrays;
     int narrays;
     hx_stateeqn *stateeqns;

@@ -11,6 +11,7 @@
 #include "base/vecmath.h"
 #include "model/draft.h"
 #include "model/load_elements.h"
+#include "model/loop_inputs.h"
 
 static int resolve_marker(hx_draft *r, int k)
 {
@@ -426,6 +427,7 @@ int hx_draft_resolve(hx_draft *r)
         resolve_couplers(r) != 0 || resolve_forces(r) != 0 || hx_draft_resolve_stateeqns(r) != 0 ||
         hx_draft_resolve_routines(r) != 0 || hx_draft_link_variables(r) != 0 ||
         hx_draft_link_loads(r) != 0 || hx_draft_link_gcons(r) != 0 ||
+        hx_draft_find_loop_inputs(r) != 0 ||
         hx_draft_resolve_requests(r) != 0) /* last: FX .. TM ask what acts at a marker */
         return -1;
     track_markers(m);

@@ -257,7 +257,7 @@ static int link_diff(hx_draft *d, int k)
     hx_model *m = d->m;
     hx_routine *r = &m->routines[k];
     hx_message why;
-    if (hx_expr_link(r->program, m, &why) != 0) {
+    if (hx_expr_link_loop(r->program, m, &why) != 0) {
         hx_draft_fail_expression(d, "Control_Diff", r->id, "expr", why.text);
         return -1;
     }

@@ -18,7 +18,7 @@ static int link_one(hx_draft *d, hx_variable *v)
 {
     hx_model *m = d->m;
     hx_message why;
-    if (hx_expr_link(v->program, m, &why) != 0) {
+    if (hx_expr_link_loop(v->program, m, &why) != 0) {
         hx_draft_fail_expression(d, "Reference_Variable", v->id, "expr", why.text);
         return -1;
     }

@@ -61,6 +61,10 @@ typedef struct hx_expr_input {
                        * index[3] rm's; MARKER_FORCE: I's, J's (-1: left out or 0,
                        * every element acting at I) and K's (-1: the world's axes) */
     int variable;     /* the variable it reads (VARVAL, ARYVAL of a U array), else -1 */
+    int loop;         /* an acceleration, a reaction or an SFORCE's force read within a
+                       * right-hand side (hx_expr_link_loop): its slot among the model's
+                       * algebraic loop inputs (model/loop_inputs.h), set once the model
+                       * is read; else -1 */
     int line, column; /* its first place in the text */
 } hx_expr_input;
 
@@ -109,6 +113,14 @@ int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg);
  * which hx_expr_link refuses (a force or variable reading one would close an
  * algebraic loop, or depend on the order of evaluation). */
 int hx_expr_link_output(hx_expr_program *p, const hx_model *m, hx_message *msg);
+/* The same for a force's, a variable's or a Control_Diff's expression,
+ * evaluated within a right-hand side: the accelerations (ACCX .. WDTM), the
+ * reactions (JOINT, JPRIM) and the SFORCE forces it reads are the inputs of
+ * an algebraic loop the dynamics solves (sim/dynamics/algebraic_loop.h), each
+ * given its slot by hx_expr_set_loop once the model is read. */
+int hx_expr_link_loop(hx_expr_program *p, const hx_model *m, hx_message *msg);
+/* Input k's slot among the model's loop inputs (model/loop_inputs.c). */
+void hx_expr_set_loop(hx_expr_program *p, int k, int slot);
 
 void hx_expr_free(hx_expr_program *p);
 

@@ -4,7 +4,9 @@
  * the model does not define named with its place in the text; a function
  * the harness does not answer yet is refused here, and so are a joint's
  * reaction, a marker's acceleration, a force element's force and the forces
- * at a marker anywhere but in an output expression.
+ * at a marker anywhere but in an output expression or, for the first three
+ * (an SFORCE by expressions' alone of the force elements), one linked as a
+ * loop's (a force's, a variable's, a Control_Diff's: hx_expr_link_loop).
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -14,6 +16,9 @@
 #include "model/marker_elements.h"
 #include "model/expr/functions.h"
 #include "model/expr/program.h"
+
+/* Where a program is evaluated: what it may read beyond the state. */
+enum { LINK_STATE, LINK_LOOP, LINK_OUTPUT };
 
 static int fail_at(hx_expr_program *p, hx_message *msg, int line, int column, const char *fmt,
                    ...) __attribute__((format(printf, 5, 6)));
@@ -32,14 +37,14 @@ static int fail_at(hx_expr_program *p, hx_message *msg, int line, int column, co
 
 /* JOINT(id, jflag, comp, rm), JPRIM(...): the joint, its markers and rm. */
 static int link_reaction(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
-                         const char *text, int output, hx_message *msg)
+                         const char *text, int where, hx_message *msg)
 {
     const int primitive = in->function == HX_FN_JPRIM;
-    if (!output)
+    if (where == LINK_STATE)
         return fail_at(p, msg, in->line, in->column, "%s: a joint's reaction is known only"
-                       " once the accelerations are, after the forces and variables: a force"
-                       " or variable that reads it closes an algebraic loop, which the harness"
-                       " does not solve (REQUEST and Post_Request expressions may read it)",
+                       " once the accelerations are: here it would close an algebraic loop,"
+                       " which the harness solves for forces, variables and Control_Diff"
+                       " rates only (REQUEST and Post_Request expressions may read it)",
                        text);
     const int k = primitive ? hx_model_primitive(m, in->ids[0]) : hx_model_joint(m, in->ids[0]);
     if (k < 0)
@@ -58,16 +63,24 @@ static int link_reaction(hx_expr_program *p, hx_expr_input *in, const hx_model *
 /* SFORCE, VFORCE, VTORQ, GFORCE, BUSHING, FIELD (id, jflag, comp, rm): the
  * force element (model/marker_elements.h) and rm. */
 static int link_load(hx_expr_program *p, hx_expr_input *in, const hx_model *m, const char *text,
-                     int output, hx_message *msg)
+                     int where, hx_message *msg)
 {
-    if (!output)
-        return fail_at(p, msg, in->line, in->column, "%s: another element's force: the order of"
-                       " evaluation would decide it (REQUEST and Post_Request expressions may"
-                       " read it)", text);
+    if (where == LINK_STATE)
+        return fail_at(p, msg, in->line, in->column, "%s: another element's force: here it"
+                       " would close an algebraic loop, which the harness solves for forces,"
+                       " variables and Control_Diff rates only (REQUEST and Post_Request"
+                       " expressions may read it)", text);
     char what[256];
-    if (hx_marker_element_find(m, in->function, in->ids[0], &in->index[1], &in->index[0], what,
+    int force;
+    if (hx_marker_element_find(m, in->function, in->ids[0], &force, &in->index[0], what,
                                sizeof what) != 0)
         return fail_at(p, msg, in->line, in->column, "%s: no %s", text, what);
+    in->index[1] = force;
+    if (where == LINK_LOOP && (in->function != HX_FN_SFORCE || force))
+        return fail_at(p, msg, in->line, in->column, "%s: another element's force: a force,"
+                       " variable or Control_Diff rate reads an SFORCE by an expression's force"
+                       " alone (the algebraic loop), not a user routine's or another element's"
+                       " (REQUEST and Post_Request expressions may read it)", text);
     in->index[3] = in->ids[3] == 0 ? -1 : hx_model_marker(m, in->ids[3]);
     if (in->ids[3] != 0 && in->index[3] < 0)
         return fail_at(p, msg, in->line, in->column, "%s: rm (argument 4): no Reference_Marker"
@@ -78,14 +91,14 @@ static int link_load(hx_expr_program *p, hx_expr_input *in, const hx_model *m, c
 /* FX .. TM (I[, J[, K]]): the markers, and no element acting between I and J
  * whose force the harness does not sum. */
 static int link_marker_force(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
-                             const char *text, int output, hx_message *msg)
+                             const char *text, int where, hx_message *msg)
 {
-    if (!output)
+    if (where != LINK_OUTPUT)
         return fail_at(p, msg, in->line, in->column, "%s: the forces at a marker are known only"
                        " once the accelerations are, after the forces and variables: a force or"
                        " variable that reads them closes an algebraic loop, which the harness"
-                       " does not solve (REQUEST and Post_Request expressions may read them)",
-                       text);
+                       " solves for accelerations, joint reactions and SFORCE forces only"
+                       " (REQUEST and Post_Request expressions may read them)", text);
     for (int k = 0; k < 3; ++k) {
         in->index[k] = in->ids[k] == 0 ? -1 : hx_model_marker(m, in->ids[k]);
         if (in->ids[k] != 0 && in->index[k] < 0)
@@ -100,24 +113,25 @@ static int link_marker_force(hx_expr_program *p, hx_expr_input *in, const hx_mod
     return 0;
 }
 
-static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, int output,
+static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, int where,
                       hx_message *msg)
 {
     char text[96];
     hx_expr_input_text(in, text, sizeof text);
     const int id = in->ids[0];
     in->variable = -1;
+    in->loop = -1;
     switch (in->kind) {
     case HX_EXPR_INPUT_TIME: return 0;
-    case HX_EXPR_INPUT_REACTION: return link_reaction(p, in, m, text, output, msg);
-    case HX_EXPR_INPUT_LOAD: return link_load(p, in, m, text, output, msg);
-    case HX_EXPR_INPUT_MARKER_FORCE: return link_marker_force(p, in, m, text, output, msg);
+    case HX_EXPR_INPUT_REACTION: return link_reaction(p, in, m, text, where, msg);
+    case HX_EXPR_INPUT_LOAD: return link_load(p, in, m, text, where, msg);
+    case HX_EXPR_INPUT_MARKER_FORCE: return link_marker_force(p, in, m, text, where, msg);
     case HX_EXPR_INPUT_ACCELERATION:
-        if (!output)
+        if (where == LINK_STATE)
             return fail_at(p, msg, in->line, in->column, "%s: an acceleration is known only once"
-                           " the forces are: a force or variable that reads it closes an"
-                           " algebraic loop, which the harness does not solve (REQUEST and"
-                           " Post_Request expressions may read it)", text);
+                           " the forces are: here it would close an algebraic loop, which the"
+                           " harness solves for forces, variables and Control_Diff rates only"
+                           " (REQUEST and Post_Request expressions may read it)", text);
         /* its markers are linked as a measure's */
         /* fall through */
     case HX_EXPR_INPUT_MEASURE: {
@@ -173,7 +187,7 @@ static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, 
     }
 }
 
-static int link_program(hx_expr_program *p, const hx_model *m, int output, hx_message *msg)
+static int link_program(hx_expr_program *p, const hx_model *m, int where, hx_message *msg)
 {
     p->model = NULL;
     for (int k = 0; k < p->nops; ++k) {
@@ -204,7 +218,7 @@ static int link_program(hx_expr_program *p, const hx_model *m, int output, hx_me
         }
     }
     for (int k = 0; k < p->ninputs; ++k)
-        if (link_input(p, &p->inputs[k], m, output, msg) != 0)
+        if (link_input(p, &p->inputs[k], m, where, msg) != 0)
             return -1;
     p->model = m;
     return 0;
@@ -212,10 +226,20 @@ static int link_program(hx_expr_program *p, const hx_model *m, int output, hx_me
 
 int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg)
 {
-    return link_program(p, m, 0, msg);
+    return link_program(p, m, LINK_STATE, msg);
+}
+
+int hx_expr_link_loop(hx_expr_program *p, const hx_model *m, hx_message *msg)
+{
+    return link_program(p, m, LINK_LOOP, msg);
 }
 
 int hx_expr_link_output(hx_expr_program *p, const hx_model *m, hx_message *msg)
 {
-    return link_program(p, m, 1, msg);
+    return link_program(p, m, LINK_OUTPUT, msg);
+}
+
+void hx_expr_set_loop(hx_expr_program *p, int k, int slot)
+{
+    p->inputs[k].loop = slot;
 }

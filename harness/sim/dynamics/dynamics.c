@@ -1,6 +1,7 @@
 /* The dynamics' model and data, and one evaluation (dynamics.h). */
 #include "sim/dynamics/dynamics.h"
 #include "host/variable_values.h"
+#include "sim/dynamics/algebraic_loop.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraint_matrix.h"
 #include "sim/dynamics/constraints.h"
@@ -138,7 +139,8 @@ int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message
     dd->stateeqn_work = malloc(sizeof(double) * (size_t)hx_stateeqns_work_size(d));
     dd->implicit_start = calloc((size_t)d->nimplicit + 1, sizeof(double));
     dd->implicit_work = calloc(hx_implicit_diffs_work_size(d), sizeof(double));
-    if (!dd->implicit_start || !dd->implicit_work ||
+    dd->loop_work = calloc(hx_algebraic_loop_work_size(d) + 1, sizeof(double));
+    if (!dd->implicit_start || !dd->implicit_work || !dd->loop_work ||
         !dd->force || !dd->torque || !dd->element_outputs || !dd->element_load ||
         !dd->element_partials || !dd->stateeqn_outputs || !dd->free_accelerations ||
         !dd->lambda || !dd->turn || !dd->turn_rate || !dd->constraint_work ||
@@ -169,6 +171,7 @@ void hx_dynamics_data_free(hx_dynamics_data *dd)
     free(dd->stateeqn_work);
     free(dd->implicit_start);
     free(dd->implicit_work);
+    free(dd->loop_work);
     hx_frames_free(&dd->frames);
     hx_frames_free(&dd->moved);
     memset(dd, 0, sizeof *dd);
@@ -183,11 +186,10 @@ void hx_dynamics_kinematics(const hx_dynamics *d, hx_dynamics_data *dd, double t
     hx_frames_update(&dd->frames);
 }
 
-int hx_dynamics_evaluate(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
-                         double *ydot, unsigned ask)
+int hx_dynamics_stages(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                       double *ydot, unsigned ask)
 {
     const int nb = d->m->nbodies;
-    hx_dynamics_kinematics(d, dd, t, y);
     if (d->m->variables_read) { /* the variables the loads read, each once */
         hx_message msg;
         if (hx_variables_values(&dd->frames, dd->frames.variables, &msg) != 0)
@@ -206,6 +208,16 @@ int hx_dynamics_evaluate(const hx_dynamics *d, hx_dynamics_data *dd, double t, c
         if (hx_constraints_apply(d, dd, t, y, ydot + d->nq, &ydot[d->load_work]) != 0)
             return -1;
     }
+    return 0;
+}
+
+int hx_dynamics_evaluate(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                         double *ydot, unsigned ask)
+{
+    hx_dynamics_kinematics(d, dd, t, y);
+    if (d->m->nloop_inputs > 0 ? hx_algebraic_loop_solve(d, dd, t, y, ydot, ask) != 0
+                               : hx_dynamics_stages(d, dd, t, y, ydot, ask) != 0)
+        return -1;
     if (d->m->nroutines > 0 && hx_routines_apply(d, dd, y, ydot) != 0)
         return -1;
     return 0;

@@ -18,6 +18,10 @@
  *   accelerations  the bodies' Newton-Euler accelerations        bodies.c
  *   constraints  the joints' and couplers' multipliers           constraints.c
  *   routines     Control_Diff rates, driven joints                routines.c
+ * In a model with an algebraic loop (forces, variables or Control_Diff
+ * rates that read accelerations, reactions or SFORCE forces) the stages
+ * from the variables to the constraints run until the values they read
+ * are those they give (algebraic_loop.c); in any other model once.
  *
  * Bodies are free (position, unit quaternion, velocity, body-axis angular
  * velocity) or hinged/slid to ground by their only joint (the joint coordinate
@@ -159,6 +163,9 @@ typedef struct hx_dynamics_data {
     /* the stages' scratch */
     double *constraint_work;      /* G and M^-1 G^T (12 a row), G M^-1 G^T, vectors */
     double *stateeqn_work;        /* one Force_StateEqn's inputs and its call's copies */
+    double *loop_work;            /* the algebraic loop's Newton iterates, its matrix and the
+                                   * outputs it reads back (algebraic_loop.h); one double
+                                   * in a model without a loop */
     hx_frames moved;              /* frames with bodies placed elsewhere (element_at.h) */
     double *implicit_start;       /* per implicit Control_Diff: where Newton starts, the rate
                                    * of the last accepted step (implicit_diffs.h) */
@@ -194,6 +201,13 @@ int hx_dynamics_initial_y(const hx_dynamics *d, double *y, hx_message *msg);
  * a non-finite value, or the constraints are singular. */
 int hx_dynamics_evaluate(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
                          double *ydot, unsigned ask);
+/* The stages from the variables to the constraints at dd's kinematics
+ * (hx_dynamics_kinematics at (t, y)): ydot's velocities' and states' rates,
+ * not the routines'; once, with the algebraic loop's inputs as dd's frames
+ * hold them. 0, or -1 (dd->message). */
+int hx_dynamics_stages(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                       double *ydot, unsigned ask);
+
 /* The right-hand side alone: hx_dynamics_evaluate asking nothing more. */
 int hx_dynamics_rhs(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
                     double *ydot);

@@ -159,6 +159,22 @@ int hx_load_bodies(const hx_model *m, int k, int *bodies)
     return n;
 }
 
+int hx_loads_output(const hx_dynamics *d, const hx_dynamics_data *dd, int k, double out[12],
+                    hx_message *msg)
+{
+    for (int j = 0; j < 12; ++j)
+        out[j] = 0.0;
+    if (d->load_off[k])
+        return 0; /* switched off: it puts nothing on the bodies */
+    hx_load_share share;
+    if (hx_load_share_at(d->m, &dd->frames, k, &share, msg) != 0)
+        return -1;
+    for (int s = 0; s < share.count; ++s)
+        for (int j = 0; j < 3; ++j)
+            out[6 * s + j] = share.F[s][j], out[6 * s + 3 + j] = share.T[s][j];
+    return 0;
+}
+
 int hx_loads_apply(const hx_dynamics *d, hx_dynamics_data *dd, double *power)
 {
     const hx_model *m = d->m;

@@ -39,6 +39,13 @@ int hx_load_bodies(const hx_model *m, int k, int *bodies);
  * (slots holds HX_LOAD_BODIES_MAX). */
 int hx_load_diffs(const hx_model *m, int k, int *slots);
 
+/* Load k's force at dd's frames as the outputs give it (expr/evaluate.h's
+ * hx_expr_outputs.loads), twelve values: on I at I's origin, then on J where
+ * the load puts its reaction (zeros for an action-only or a switched-off
+ * load). 0, or -1 with an expression's fault in msg. */
+int hx_loads_output(const hx_dynamics *d, const hx_dynamics_data *dd, int k, double out[12],
+                    hx_message *msg);
+
 /* The forces stage's gravity and loads at dd->frames, onto the bodies, and
  * their power; 0, or -1 with the failure recorded in dd (an expression's
  * fault). */

@@ -85,12 +85,40 @@ void hx_jacobian_free(hx_jacobian *jac)
     memset(jac, 0, sizeof *jac);
 }
 
+/* A model with an algebraic loop: every column by central differences of
+ * the right-hand side, the loop solved at each (its loads' rows depend on y
+ * through the loop's values too, which no element's partials hold). */
+static int loop_build(hx_jacobian *jac, double t, const double *y, double *values)
+{
+    const hx_dynamics *d = jac->d;
+    hx_dynamics_data *dd = &jac->dd;
+    memcpy(jac->y, y, sizeof(double) * (size_t)jac->n);
+    for (int c = 0; c < jac->n; ++c) {
+        const double h = hx_jacobian_step(y, c);
+        jac->y[c] = y[c] + h;
+        int status = hx_dynamics_rhs(d, dd, t, jac->y, jac->f_plus);
+        jac->y[c] = y[c] - h;
+        status = status != 0 ? status : hx_dynamics_rhs(d, dd, t, jac->y, jac->f_minus);
+        jac->y[c] = y[c];
+        jac->evaluations += 2;
+        if (status != 0)
+            return -1;
+        for (int i = jac->pattern.colptr[c]; i < jac->pattern.colptr[c + 1]; ++i) {
+            const int r = jac->pattern.rowind[i];
+            values[i] = (jac->f_plus[r] - jac->f_minus[r]) / (2.0 * h);
+        }
+    }
+    return 0;
+}
+
 int hx_jacobian_build(hx_jacobian *jac, double t, const double *y, const double *fy,
                       double *values)
 {
     (void)fy; /* the elements' partials come with their outputs, which fy does not hold */
     const hx_dynamics *d = jac->d;
     hx_dynamics_data *dd = &jac->dd;
+    if (d->m->nloop_inputs > 0)
+        return loop_build(jac, t, y, values);
     jac->evaluations++;
     if (hx_dynamics_evaluate(d, dd, t, y, jac->f_plus, HX_EVALUATE_PARTIALS) != 0)
         return -1;
@@ -112,6 +140,13 @@ int hx_jacobian_build(hx_jacobian *jac, double t, const double *y, const double 
 
 void hx_jacobian_describe(const hx_jacobian *jac, char *text, size_t size)
 {
+    const int nz = jac->d->m->nloop_inputs;
+    if (nz > 0) {
+        snprintf(text, size, "Jacobian by central differences of the whole right-hand side:"
+                 " the model's loads read %d input%s of an algebraic loop"
+                 " (docs/interface.md §8.8)", nz, nz == 1 ? "" : "s");
+        return;
+    }
     int counts[3] = {0, 0, 0};
     for (int k = 0; k < jac->nf; ++k)
         counts[jac->source[k]]++;

@@ -191,6 +191,11 @@ int hx_jacobian_pattern(hx_jacobian *jac, int widen, hx_message *msg)
         if (d->motion_state[k] >= 0)
             add(&p, d->motion_state[k], d->motion_state[k] + 1);
     coupled_rows(&p, jac);
+    /* an algebraic loop joins whatever its loads read to whatever moves the
+     * values they read: the whole matrix, by differences (jacobian.c) */
+    for (int c = 0; m->nloop_inputs > 0 && c < jac->n; ++c)
+        for (int r = 0; r < jac->n; ++r)
+            add(&p, r, c);
     hx_sparsity built = {0};
     const int status =
         p.failed ? -1 : hx_sparsity_from_pairs(&built, jac->n, p.rows, p.cols, p.count);

@@ -139,21 +139,9 @@ int hx_requests_values(const hx_frames *fr, int k, const double *variables,
 int hx_requests_loads(const hx_dynamics *d, const hx_dynamics_data *dd, double *out,
                       hx_message *msg)
 {
-    const hx_model *m = d->m;
-    for (int k = 0; k < m->nloads; ++k) {
-        double *at = out + 12 * k;
-        for (int j = 0; j < 12; ++j)
-            at[j] = 0.0;
-        if (d->load_off[k])
-            continue; /* switched off: it puts nothing on the bodies */
-        hx_load_share share;
-        if (hx_load_share_at(m, &dd->frames, k, &share, msg) != 0)
+    for (int k = 0; k < d->m->nloads; ++k)
+        if (hx_loads_output(d, dd, k, out + 12 * k, msg) != 0)
             return -1;
-        for (int s = 0; s < share.count; ++s) {
-            for (int j = 0; j < 3; ++j)
-                at[6 * s + j] = share.F[s][j], at[6 * s + 3 + j] = share.T[s][j];
-        }
-    }
     return 0;
 }
 
