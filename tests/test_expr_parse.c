@@ -319,8 +319,8 @@ static void link_errors_name_the_id(void **state)
                     "m.xml:10:9: COUPLER is not answered by the harness yet: the harness does"
                     " not split");
     assert_contains(expr_link_error(&fixture, "1 + VFORCE(1, 0, 2, 0)", &msg),
-                    "m.xml:10:9: VFORCE(1,0,2,0): another element's force: the order of"
-                    " evaluation would decide it");
+                    "m.xml:10:9: VFORCE(1,0,2,0): another element's force: here it would"
+                    " close an algebraic loop");
     assert_contains(expr_link_error(&fixture, "1 + SFORCE(1, 0, 2, 0)", &msg),
                     "m.xml:10:9: SFORCE(1,0,2,0): another element's force: here it would"
                     " close an algebraic loop");

@@ -303,7 +303,8 @@ static void refusals(void **state)
         {"SFORCE/9, TRANSLATION, I=20, J=10, FUNCTION=2*FX(20)",
          "bad.adm:8:47:", "FX(20): the forces at a marker are known only once the accelerations"},
         {"VARIABLE/1, FUNCTION=1+VFORCE(2,0,2,0)",
-         "bad.adm:8:24:", "VFORCE(2,0,2,0): another element's force"},
+         "bad.adm:8:24:", "VFORCE(2,0,2,0): another element's force: a force, variable or"
+         " Control_Diff rate reads an SFORCE by an expression's force alone"},
         {"REQUEST/1, F2=VFORCE(9,0,2,0)",
          "bad.adm:8:15:", "VFORCE(9,0,2,0): no Force_Vector_TwoBody or Force_Vector_OneBody"
          " (VFORCE, VTORQUE, GFORCE) 9 in the model"},
