@@ -11,6 +11,7 @@
 #include "sim/dynamics/reactions.h"
 #include "sim/jacobian/jacobian.h"
 #include "sim/simulation/requests.h"
+#include "sim_support.h"
 #include "test_support.h"
 
 void open_model(model *m, const char *path)
@@ -86,6 +87,24 @@ double model_diff_state(const model *m, const double *y, int id)
     const int k = hx_model_routine(mm, HX_ROUTINE_DIFF, id);
     assert_true(k >= 0);
     return y[m->d.diff_offset + mm->routines[k].slot];
+}
+
+double *model_diffs_jacobian_checked(const char *name, const char *text, const char *what,
+                                     int first, int last, model *m)
+{
+    double *y = model_run_text(name, text, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, 1e-9, 0.4, m);
+    long outside = 0;
+    const double worst = jacobian_against_differences(&m->d, 0.4, y, what, &outside);
+    if (outside != 0 || !(worst < 1e-6))
+        fail_msg("%s: the Jacobian against differences: worst %.3g, %ld outside its sparsity",
+                 what, worst, outside);
+    model f;
+    double *yf = model_run_text(name, text, HX_METHOD_BDF, HX_JACOBIAN_FD, 1e-9, 0.4, &f);
+    for (int id = first; id <= last; ++id)
+        assert_close(model_diff_state(m, y, id), model_diff_state(&f, yf, id), 1e-6, 1e-9);
+    free(yf);
+    close_model(&f);
+    return y;
 }
 
 /* Largest difference of positions and velocities, relative to the largest

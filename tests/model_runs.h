@@ -43,6 +43,15 @@ double *model_run_text(const char *name, const char *text, hx_method method,
 /* The state of Control_Diff id in y (fails the test when there is none). */
 double model_diff_state(const model *m, const double *y, int id);
 
+/* text (name in the temporary folder) run with BDF on its own Jacobian to
+ * t = 0.4 at rtol 1e-9 into m: the Jacobian there against differences of the
+ * whole right-hand side (no entry outside its sparsity, the worst below
+ * 1e-6; what names it in the printed line), and the same run with BDF's
+ * differences ending with Control_Diffs first .. last within 1e-6 of it.
+ * Fails the test otherwise; the end state (the caller frees it). */
+double *model_diffs_jacobian_checked(const char *name, const char *text, const char *what,
+                                     int first, int last, model *m);
+
 /* Largest difference of positions and velocities, relative to the largest
  * of each kind (translations, quaternions, velocities, angular velocities and
  * joint coordinates apart): excursions from y0, and velocities at the end or

@@ -88,18 +88,8 @@ static void jacobian_row_against_differences(void **state)
                  "SFORCE/7, TRANSLATION, I=20, J=10, FUNCTION=-40*(DM(20,10) - 5) - "
                  "2*VR(20,10)\nEND\n";
     model m;
-    double *y = model_run_text("jacobian.adm", text, HX_METHOD_BDF,
-                               HX_JACOBIAN_ANALYTIC, 1e-9, 0.4, &m);
-    long outside = 0;
-    const double worst = jacobian_against_differences(&m.d, 0.4, y, "diffs", &outside);
-    assert_int_equal(outside, 0);
-    assert_true(worst < 1e-6);
-    model f;
-    double *yf = model_run_text("jacobian.adm", text, HX_METHOD_BDF, HX_JACOBIAN_FD, 1e-9, 0.4, &f);
-    for (int id = 1; id <= 2; ++id)
-        assert_close(model_diff_state(&m, y, id), model_diff_state(&f, yf, id), 1e-6, 1e-9);
-    free(y), free(yf);
-    close_model(&m), close_model(&f);
+    free(model_diffs_jacobian_checked("jacobian.adm", text, "diffs", 1, 2, &m));
+    close_model(&m);
 }
 
 /* A rate read by DIF1 whose own rate depends on the body: DIFF 3's rate reads
@@ -118,19 +108,8 @@ static void rate_read_by_dif1_in_the_jacobian(void **state)
                  "SFORCE/7, TRANSLATION, I=20, J=10, FUNCTION=-40*(DM(20,10) - 5) - "
                  "2*VR(20,10) + 3*DIF(3)\nEND\n";
     model m;
-    double *y = model_run_text("rate.adm", text, HX_METHOD_BDF,
-                               HX_JACOBIAN_ANALYTIC, 1e-9, 0.4, &m);
-    long outside = 0;
-    const double worst = jacobian_against_differences(&m.d, 0.4, y, "DIF1", &outside);
-    printf("a rate read by DIF1: worst %.3g against differences, %ld outside\n", worst, outside);
-    assert_int_equal(outside, 0);
-    assert_true(worst < 1e-6);
-    model f;
-    double *yf = model_run_text("rate.adm", text, HX_METHOD_BDF, HX_JACOBIAN_FD, 1e-9, 0.4, &f);
-    for (int id = 2; id <= 3; ++id)
-        assert_close(model_diff_state(&m, y, id), model_diff_state(&f, yf, id), 1e-6, 1e-9);
-    free(y), free(yf);
-    close_model(&m), close_model(&f);
+    free(model_diffs_jacobian_checked("rate.adm", text, "a rate read by DIF1", 2, 3, &m));
+    close_model(&m);
 }
 
 /* Forces reading DIF, directly and through a variable: a spring whose

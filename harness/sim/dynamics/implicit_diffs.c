@@ -111,8 +111,7 @@ static int worst(const double *F, int n)
     return w;
 }
 
-int hx_implicit_diffs_solve(const hx_dynamics *d, hx_dynamics_data *dd, const double *start,
-                            double *ydot)
+int hx_implicit_diffs_solve(const hx_dynamics *d, hx_dynamics_data *dd, double *ydot)
 {
     const int n = d->nimplicit;
     if (n == 0)
@@ -121,7 +120,7 @@ int hx_implicit_diffs_solve(const hx_dynamics *d, hx_dynamics_data *dd, const do
     double *x = dd->implicit_work, *F = x + n, *step = F + n, *J = step + n,
            *partials = J + n * n, *scratch = partials + HX_EXPR_MAX_INPUTS;
     for (int i = 0; i < n; ++i)
-        x[i] = start != NULL ? start[i] : dd->implicit_start[i];
+        x[i] = dd->implicit_start[i];
     for (int it = 0; it < NEWTON_ITERATIONS; ++it) {
         if (residuals(d, dd, x, F, J, partials, scratch) != 0)
             return -1;

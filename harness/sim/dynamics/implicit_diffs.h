@@ -25,13 +25,11 @@ size_t hx_implicit_diffs_work_size(const hx_dynamics *d);
 void hx_implicit_diffs_restart(const hx_dynamics *d, hx_dynamics_data *dd);
 
 /* The implicit rates solved at dd->frames (the kinematics, the variables and
- * the DIFSUB rates set there) from start (d->nimplicit values, in the order
- * of d->implicit; NULL: dd->implicit_start), into dd->frames's DIF1 and, when
+ * the DIFSUB rates set there) from dd->implicit_start, into dd->frames's DIF1 and, when
  * ydot is not NULL, into ydot. 0, or -1 with "file:line: Control_Diff ID:
  * ..." (the residual, and why: Newton did not converge, dF/dDIF1 singular)
  * in dd->message. */
-int hx_implicit_diffs_solve(const hx_dynamics *d, hx_dynamics_data *dd, const double *start,
-                            double *ydot);
+int hx_implicit_diffs_solve(const hx_dynamics *d, hx_dynamics_data *dd, double *ydot);
 
 /* The rates of dd->frames (DIF1, from the last evaluation) become where
  * Newton starts next: an accepted step's (the run's accept hook, after the

@@ -174,7 +174,7 @@ static int diff_expressions(const hx_dynamics *d, hx_dynamics_data *dd, double *
             return hx_dynamics_fail(dd, "%s", msg.text);
     }
     /* the implicit rates first: the explicit ones may read them (DIF1) */
-    if (hx_implicit_diffs_solve(d, dd, NULL, ydot) != 0)
+    if (hx_implicit_diffs_solve(d, dd, ydot) != 0)
         return -1;
     for (int i = 0; i < m->ndiff_programs; ++i) {
         const int k = m->diff_order[i];

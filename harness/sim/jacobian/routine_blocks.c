@@ -172,7 +172,7 @@ static int implicit_rates(hx_jacobian *jac)
     for (int i = 0; i < d->nimplicit; ++i)
         if (read_rates(jac, d->implicit[i]) != 0)
             return -1;
-    return hx_implicit_diffs_solve(d, &jac->dd, NULL, NULL);
+    return hx_implicit_diffs_solve(d, &jac->dd, NULL);
 }
 
 static int read_rates(hx_jacobian *jac, int k)
