@@ -16,6 +16,7 @@
 #include "cmd/commands.h"
 #include "tools/bench/linear_reference.h"
 #include "tools/bench/long_run.h"
+#include "tools/bench/rhs_cost.h"
 #include "sim_support.h"
 #include "tools/bench/stability.h"
 #include "test_support.h"
@@ -333,6 +334,35 @@ static void the_quick_bench_runs(void **state)
     csv_free(&t);
 }
 
+/* The split's two shares are differences of separately timed rounds: on a
+ * loaded machine either can come out at or below zero, which bench says is
+ * below the noise instead of printing a negative cost. */
+static void the_cost_split_never_prints_a_negative_cost(void **state)
+{
+    (void)state;
+    char text[512];
+    const hx_rhs_cost plain = {.rhs_ns = 812.0, .harness_ns = 212.0, .user_ns = 600.0,
+                               .user_calls = 4};
+    hx_rhs_cost_text(&plain, text, sizeof text);
+    assert_string_equal(text, "right-hand side: 812.0 ns per evaluation: the 4 user entry calls"
+                              " in it 600.0 ns, the harness's own share 212.0 ns (35 % of the"
+                              " user entries)");
+    const hx_rhs_cost user_lost = {.rhs_ns = 500.0, .harness_ns = 530.0, .user_ns = -30.0,
+                                   .user_calls = 2};
+    hx_rhs_cost_text(&user_lost, text, sizeof text);
+    assert_non_null(strstr(text, "in it below the noise of the timings"));
+    assert_non_null(strstr(text, "own share 530.0 ns"));
+    assert_null(strstr(text, "-30"));
+    const hx_rhs_cost harness_lost = {.rhs_ns = 500.0, .harness_ns = -4.0, .user_ns = 504.0,
+                                      .user_calls = 2};
+    hx_rhs_cost_text(&harness_lost, text, sizeof text);
+    assert_non_null(strstr(text, "in it 504.0 ns, the harness's own share below the noise"));
+    assert_null(strstr(text, "-4"));
+    const hx_rhs_cost none = {.rhs_ns = 90.0};
+    hx_rhs_cost_text(&none, text, sizeof text);
+    assert_string_equal(text, "right-hand side: 90.0 ns per evaluation (no user entries)");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -345,6 +375,7 @@ int main(void)
         cmocka_unit_test(long_runs_keep_energy_and_constraints),
         cmocka_unit_test(outputs_land_on_the_end_time),
         cmocka_unit_test(the_quick_bench_runs),
+        cmocka_unit_test(the_cost_split_never_prints_a_negative_cost),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

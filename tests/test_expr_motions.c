@@ -181,24 +181,46 @@ static void time_derivatives_at_the_start(void **state)
  * driven by 10D*TIME against the torque and gravity: its coordinate is
  * 10 deg/s times t, to rounding (the rate 10D is integrated exactly by any
  * Runge-Kutta method). */
+typedef double (*closed_form)(double t);
+
+/* The pendulum driven by `motion` (a Motion_Joint on its revolute, joint 1)
+ * written to file and run by DOPRI5 at 1e-10 to `end`: its coordinate and
+ * rate at every output row against the closed forms q_of and u_of, within
+ * tol_q and tol_u. The run is left in s for the caller's own checks. */
+static void run_driven_pendulum(sim *s, const char *file, const char *motion, double end,
+                                closed_form q_of, closed_form u_of, double tol_q, double tol_u)
+{
+    sim_run(s, test_write_file(file, pendulum_model(motion)), HX_METHOD_DOPRI5, 1e-10, end, 0.1);
+    const int q = sim_joint_q(s, 1), u = sim_joint_u(s, 1);
+    for (int row = 0; row < s->path.rows; ++row) {
+        const double t = s->path.t[row];
+        assert_close(sim_state(s, row, q), q_of(t), 0, tol_q);
+        assert_close(sim_state(s, row, u), u_of(t), 0, tol_u);
+    }
+    assert_true(s->path.t[s->path.rows - 1] > end - 0.01);
+}
+
+static double ten_degrees_a_second(double t)
+{
+    return 10.0 * M_PI / 180.0 * t;
+}
+
+static double ten_degrees(double t)
+{
+    (void)t;
+    return 10.0 * M_PI / 180.0;
+}
+
 static void revolute_to_ground_by_expression(void **state)
 {
     (void)state;
-    const char *path = test_write_file(
-        "motion_revolute.xml",
-        pendulum_model("<Motion_Joint id=\"1\" type=\"EXPRESSION\" joint_id=\"1\" val_type=\"D\""
-                   " expr=\"10D*TIME\"/>\n"));
     sim s;
-    sim_run(&s, path, HX_METHOD_DOPRI5, 1e-10, 2.0, 0.1);
+    run_driven_pendulum(&s, "motion_revolute.xml",
+                        "<Motion_Joint id=\"1\" type=\"EXPRESSION\" joint_id=\"1\" val_type=\"D\""
+                        " expr=\"10D*TIME\"/>\n",
+                        2.0, ten_degrees_a_second, ten_degrees, 1e-14, 1e-15);
     assert_int_equal(s.dynamics.dof[1].kind, HX_DOF_REVOLUTE);
     assert_int_equal(s.dynamics.driver[1], 0);
-    const int q = sim_joint_q(&s, 1), u = sim_joint_u(&s, 1);
-    for (int row = 0; row < s.path.rows; ++row) {
-        const double t = s.path.t[row];
-        assert_close(sim_state(&s, row, q), 10.0 * M_PI / 180.0 * t, 0, 1e-14);
-        assert_close(sim_state(&s, row, u), 10.0 * M_PI / 180.0, 0, 1e-15);
-    }
-    assert_true(s.path.t[s.path.rows - 1] > 1.99);
     sim_close(&s);
 }
 
@@ -295,21 +317,24 @@ static void expression_against_motsub(void **state)
 
 /* A velocity motion on the revolute to ground: f = 2 t from ic_disp = 0.5,
  * so q = 0.5 + t^2, u = 2 t (integrated exactly by DOPRI5). */
+static double half_plus_t_squared(double t)
+{
+    return 0.5 + t * t;
+}
+
+static double two_t(double t)
+{
+    return 2.0 * t;
+}
+
 static void velocity_motion_integrated(void **state)
 {
     (void)state;
-    const char *path = test_write_file(
-        "motion_velocity.xml",
-        pendulum_model("<Motion_Joint id=\"1\" type=\"EXPRESSION\" joint_id=\"1\" val_type=\"V\""
-                   " ic_disp=\"0.5\" expr=\"2*TIME\"/>\n"));
     sim s;
-    sim_run(&s, path, HX_METHOD_DOPRI5, 1e-10, 1.0, 0.1);
-    const int q = sim_joint_q(&s, 1), u = sim_joint_u(&s, 1);
-    for (int row = 0; row < s.path.rows; ++row) {
-        const double t = s.path.t[row];
-        assert_close(sim_state(&s, row, q), 0.5 + t * t, 0, 1e-13);
-        assert_close(sim_state(&s, row, u), 2.0 * t, 0, 1e-13);
-    }
+    run_driven_pendulum(&s, "motion_velocity.xml",
+                        "<Motion_Joint id=\"1\" type=\"EXPRESSION\" joint_id=\"1\" val_type=\"V\""
+                        " ic_disp=\"0.5\" expr=\"2*TIME\"/>\n",
+                        1.0, half_plus_t_squared, two_t, 1e-13, 1e-13);
     sim_close(&s);
 }
 
@@ -524,24 +549,27 @@ static void acceleration_motion_on_a_revolute_between_bodies(void **state)
 /* An acceleration motion on a revolute to ground (a reduced joint) runs as
  * before: the body's own coordinate and rate integrate f from ic_disp and
  * ic_vel (no row, no states of the motion's own). */
+static double pendulum_accel_displacement(double t)
+{
+    return accel_displacement(0.05, -0.1, t);
+}
+
+static double pendulum_accel_velocity(double t)
+{
+    return accel_velocity(-0.1, t);
+}
+
 static void acceleration_motion_to_ground(void **state)
 {
     (void)state;
-    const char *path = test_write_file(
-        "motion_pendulum_acceleration.xml",
-        pendulum_model("<Motion_Joint id=\"1\" type=\"EXPRESSION\" joint_id=\"1\" val_type=\"A\""
-                       " ic_disp=\"0.05\" ic_vel=\"-0.1\" expr=\"0.2*SIN(2*PI*TIME)\"/>\n"));
     sim s;
-    sim_run(&s, path, HX_METHOD_DOPRI5, 1e-10, 1.0, 0.1);
+    run_driven_pendulum(&s, "motion_pendulum_acceleration.xml",
+                        "<Motion_Joint id=\"1\" type=\"EXPRESSION\" joint_id=\"1\" val_type=\"A\""
+                        " ic_disp=\"0.05\" ic_vel=\"-0.1\" expr=\"0.2*SIN(2*PI*TIME)\"/>\n",
+                        1.0, pendulum_accel_displacement, pendulum_accel_velocity, 1e-10, 1e-10);
     assert_int_equal(s.dynamics.nmotions, 0);
     assert_int_equal(s.dynamics.nmotion_states, 0);
     assert_int_equal(s.dynamics.driver[1], 0);
-    const int q = sim_joint_q(&s, 1), u = sim_joint_u(&s, 1);
-    for (int row = 0; row < s.path.rows; ++row) {
-        const double t = s.path.t[row];
-        assert_close(sim_state(&s, row, q), accel_displacement(0.05, -0.1, t), 0, 1e-10);
-        assert_close(sim_state(&s, row, u), accel_velocity(-0.1, t), 0, 1e-10);
-    }
     sim_close(&s);
 }
 

@@ -110,13 +110,9 @@ static int costs_section(hx_session *s, const bench_options *o)
     }
     printf("cost per call (median of %d batches):\n", o->repeats);
     hx_print_entry_costs(stdout, costs, n);
-    if (rc.user_calls == 0)
-        printf("right-hand side: %.1f ns per evaluation (no user entries)\n", rc.rhs_ns);
-    else
-        printf("right-hand side: %.1f ns per evaluation: the %d user entry calls in it %.1f ns,"
-               " the harness's own share %.1f ns (%.0f %% of the user entries)\n", rc.rhs_ns,
-               rc.user_calls, rc.user_ns, rc.harness_ns,
-               rc.user_ns > 0.0 ? 100.0 * rc.harness_ns / rc.user_ns : 0.0);
+    char split[512];
+    hx_rhs_cost_text(&rc, split, sizeof split);
+    printf("%s\n", split);
     for (int k = 0; k < o->ncompare; ++k) {
         const hx_entry_cost *base = cost_of(costs, n, o->compare[k].base);
         const hx_entry_cost *other = cost_of(costs, n, o->compare[k].other);

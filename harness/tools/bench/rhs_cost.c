@@ -2,6 +2,7 @@
 #include "tools/bench/rhs_cost.h"
 
 #include <stddef.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -297,4 +298,28 @@ int hx_measure_rhs_cost(hx_session *s, int repeats, hx_entry_cost *costs, int ca
     hx_dynamics_data_free(&dd);
     hx_dynamics_free(&d);
     return status;
+}
+
+void hx_rhs_cost_text(const hx_rhs_cost *rc, char *text, size_t size)
+{
+    if (rc->user_calls == 0) {
+        snprintf(text, size, "right-hand side: %.1f ns per evaluation (no user entries)",
+                 rc->rhs_ns);
+        return;
+    }
+    const char *noise = "below the noise of the timings (a loaded machine: measure again)";
+    char user[96], harness[160];
+    if (rc->user_ns > 0.0)
+        snprintf(user, sizeof user, "%.1f ns", rc->user_ns);
+    else
+        snprintf(user, sizeof user, "%s", noise);
+    if (rc->harness_ns <= 0.0)
+        snprintf(harness, sizeof harness, "%s", noise);
+    else if (rc->user_ns > 0.0)
+        snprintf(harness, sizeof harness, "%.1f ns (%.0f %% of the user entries)", rc->harness_ns,
+                 100.0 * rc->harness_ns / rc->user_ns);
+    else
+        snprintf(harness, sizeof harness, "%.1f ns", rc->harness_ns);
+    snprintf(text, size, "right-hand side: %.1f ns per evaluation: the %d user entry calls in it"
+             " %s, the harness's own share %s", rc->rhs_ns, rc->user_calls, user, harness);
 }
