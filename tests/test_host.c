@@ -146,7 +146,11 @@ static void angles_and_arrays(void **state)
     assert_true(a[0] == 1.5 && a[1] == -2.0 && a[2] == 7.0);
     const int missing[1] = {6};
     assert_int_equal(hx_answer_query(&s.frames, "ARRAY", missing, 1, 1, a), -1);
-    assert_int_equal(hx_answer_query(&s.frames, "ACC", ipar, 2, 1, a), -1);
+    /* an acceleration's ids are checked, its values are the loop's (zeros here) */
+    double acc[6] = {1, 1, 1, 1, 1, 1};
+    assert_int_equal(hx_answer_query(&s.frames, "ACC", ipar, 2, 1, acc), 6);
+    assert_true(acc[0] == 0.0 && acc[5] == 0.0);
+    assert_int_equal(hx_answer_query(&s.frames, "FX", ipar, 2, 0, a), -1);
     assert_int_equal(hx_answer_query(&s.frames, "YAW", ipar, 2, 1, a), -1); /* a scalar */
     hx_session_close(&s);
 }

@@ -143,6 +143,12 @@ static int acceleration(const hx_expr_context *c, const hx_expr_input *in, doubl
     return 0;
 }
 
+int hx_expr_acceleration_value(const hx_expr_context *c, const hx_expr_input *in,
+                               double *value, hx_expr_fault *fault)
+{
+    return acceleration(c, in, value, fault);
+}
+
 int hx_expr_operand_input(const hx_expr_program *p, const hx_expr_context *c, int k,
                           double *value, hx_expr_fault *fault)
 {

@@ -202,6 +202,23 @@ static int find_declared(hx_call *c, const hx_query *q)
     return -1;
 }
 
+/* An acceleration declared as query k, from the algebraic loop's values in
+ * the frames (host/loop_queries.h); 0, or -1 refused. */
+static int answer_loop(hx_call *c, const hx_query *q, int k, double *values, int count)
+{
+    for (int i = 0; i < count; ++i) {
+        const int slot = c->loop_slot != NULL ? c->loop_slot[k][i] : -1;
+        if (slot < 0 || c->frames->loop == NULL) {
+            report_refused(c, q, "the acceleration has no place among the algebraic loop's inputs"
+                           " (this call is not an element's within a right-hand side:"
+                           " docs/interface.md §5.1)");
+            return -1;
+        }
+        values[i] = c->frames->loop[slot];
+    }
+    return 0;
+}
+
 /* Common path of c_sysary and c_sysfnc: the number of values, or -1. */
 static int query(const char *fnc, const int *ipar, int nsize, double *values, int is_array)
 {
@@ -223,11 +240,11 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
     const int count = hx_answer(c->frames, &q, ipar, values);
     if (count < 0) {
         report_refused(c, &q, "not a function and argument list the harness answers (c_sysary: DISP TDISP"
-                       " RDISP VEL TVEL RVEL, ARRAY of an IC Reference_Array; c_sysfnc: DX DY DZ DM"
-                       " AX AY AZ PSI THETA PHI YAW PITCH ROLL INCANG VX VY VZ VM VR WX WY WZ WM,"
-                       " DIF DIF1 of a Control_Diff; existing ids). Accelerations (ACC, RACC, ACCX"
-                       " ...) and other elements' forces (FX ... TZ) are not answered:"
-                       " docs/interface.md §5.1");
+                       " RDISP VEL TVEL RVEL, ACC TACC RACC, ARRAY of an IC Reference_Array;"
+                       " c_sysfnc: DX DY DZ DM AX AY AZ PSI THETA PHI YAW PITCH ROLL INCANG VX VY VZ"
+                       " VM VR WX WY WZ WM, ACCX ACCY ACCZ ACCM WDTX WDTY WDTZ WDTM, DIF DIF1 of a"
+                       " Control_Diff; existing ids). Other elements' forces (FX ... TZ) are not"
+                       " answered: docs/interface.md §5.1");
         return -1;
     }
     if (c->dependency_pass) {
@@ -241,15 +258,24 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
         }
         return count;
     }
+    const int accelerations = hx_query_reads(&q) == HX_READS_ACCELERATIONS;
     if (c->declared != NULL) {
         const int k = find_declared(c, &q);
         if (k < 0) {
             report_undeclared(c, &q);
+            if (accelerations)
+                return -1; /* no place in the loop to answer it from */
         } else {
+            if (accelerations && answer_loop(c, &q, k, values, count) != 0)
+                return -1;
             c->used |= 1u << k;
             if (k == c->perturb_query && c->perturb_component < count)
                 values[c->perturb_component] += c->perturb_delta;
         }
+    } else if (accelerations) {
+        report_refused(c, &q, "an acceleration is answered only to a routine that declared it in"
+                       " its dependency pass (docs/interface.md §5.1)");
+        return -1;
     }
     return count;
 }

@@ -66,6 +66,7 @@ static int bind_one(const hx_model *m, hx_bindings *bs, hx_binding *b, const hx_
 {
     b->model = m;
     b->setup_bytes = -1;
+    memset(b->loop_slot, -1, sizeof b->loop_slot);
     b->npar = u->npar;
     b->par = malloc(sizeof(double) * (size_t)(u->npar > 0 ? u->npar : 1));
     if (b->par == NULL)
@@ -249,6 +250,7 @@ void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_fram
      * from time alone (docs/interface.md §1, §5.1) */
     call->may_query = b->kind == HX_BIND_FORCE || b->kind == HX_BIND_REQUEST ||
                       b->kind == HX_BIND_VARIABLE || b->kind == HX_BIND_DIFF;
+    call->loop_slot = b->loop_slot;
     call->reported_undeclared = &b->reported_undeclared;
     call->reported_refused = &b->reported_refused;
     call->reported_unoffered = &b->reported_unoffered;

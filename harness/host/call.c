@@ -29,6 +29,7 @@ void hx_call_init(hx_call *c, const char *element, int id, const char *routine,
     c->dependency_pass = dependency_pass;
     c->declared = declared;
     c->perturb_query = -1;
+    c->loop_slot = NULL;
     if (dependency_pass && declared != NULL)
         memset(declared, 0, sizeof *declared);
 }

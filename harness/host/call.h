@@ -56,6 +56,9 @@ typedef struct hx_call {
     unsigned long long non_finite, *reported_non_finite;
     unsigned used;             /* bit k: declared query k was asked */
     int next_declared;         /* where the look-up starts: libraries ask in order */
+    /* per declared query, per value: its slot among the algebraic loop's inputs
+     * (an acceleration, host/loop_queries.h), -1 elsewhere; NULL: none */
+    const int (*loop_slot)[6];
     int perturb_query;         /* -1, or the declared query whose answer is shifted */
     int perturb_component;
     double perturb_delta;

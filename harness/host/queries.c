@@ -6,17 +6,22 @@
 #include <string.h>
 
 #include "base/vecmath.h"
+#include "frames/acceleration_measures.h"
 #include "frames/measure_functions.h"
 #include "frames/measures.h"
 
 /* Function codes: the arrays, then the scalar measures (F_MEASURE plus the
- * measure, frames/measure_functions.h), then DIF and DIF1. */
+ * measure, frames/measure_functions.h), then DIF and DIF1, then the
+ * accelerations: the arrays ACC TACC RACC and the scalars (F_ACCX plus
+ * frames/acceleration_measures.h's measure). */
 enum {
     F_DISP, F_TDISP, F_RDISP, F_VEL, F_TVEL, F_RVEL, F_ARRAY,
     F_MEASURE,
     F_DIF = F_MEASURE + HX_MEASURE_COUNT, /* DIF, DIF1: a Control_Diff's state and its rate */
     F_DIF1,
-    F_COUNT
+    F_ACC, F_TACC, F_RACC,
+    F_ACCX,
+    F_COUNT = F_ACCX + HX_WDT_M + 1
 };
 /* the most ids each array function and DIF, DIF1 take */
 static const int array_nsize[F_MEASURE] = {3, 3, 2, 4, 4, 3, 1};
@@ -65,6 +70,17 @@ static int function_code(unsigned long long name)
     case PACK2('W', 'M'): return F_MEASURE + HX_MEASURE_WM;
     case PACK3('D', 'I', 'F'): return F_DIF;
     case PACK4('D', 'I', 'F', '1'): return F_DIF1;
+    case PACK3('A', 'C', 'C'): return F_ACC;
+    case PACK4('T', 'A', 'C', 'C'): return F_TACC;
+    case PACK4('R', 'A', 'C', 'C'): return F_RACC;
+    case PACK4('A', 'C', 'C', 'X'): return F_ACCX + HX_ACC_X;
+    case PACK4('A', 'C', 'C', 'Y'): return F_ACCX + HX_ACC_Y;
+    case PACK4('A', 'C', 'C', 'Z'): return F_ACCX + HX_ACC_Z;
+    case PACK4('A', 'C', 'C', 'M'): return F_ACCX + HX_ACC_M;
+    case PACK4('W', 'D', 'T', 'X'): return F_ACCX + HX_WDT_X;
+    case PACK4('W', 'D', 'T', 'Y'): return F_ACCX + HX_WDT_Y;
+    case PACK4('W', 'D', 'T', 'Z'): return F_ACCX + HX_WDT_Z;
+    case PACK4('W', 'D', 'T', 'M'): return F_ACCX + HX_WDT_M;
     default: return -1;
     }
 }
@@ -75,6 +91,8 @@ static void nsize_range(int code, int *least, int *most)
     *least = 1;
     if (code >= F_MEASURE && code < F_DIF)
         hx_measure_markers((hx_measure)(code - F_MEASURE), least, most);
+    else if (code >= F_ACC) /* (I[, J[, K[, L]]]); the magnitudes (I[, J[, L]]) */
+        *most = code == F_ACCX + HX_ACC_M || code == F_ACCX + HX_WDT_M ? 3 : 4;
     else
         *most = code < F_MEASURE ? array_nsize[code] : 1;
 }
@@ -103,6 +121,8 @@ int hx_query_reads(const hx_query *q)
         return -1;
     if (q->function == F_DIF || q->function == F_DIF1)
         return HX_READS_DIFF;
+    if (q->function >= F_ACC)
+        return HX_READS_ACCELERATIONS;
     return q->function == F_ARRAY ? HX_READS_ARRAY : HX_READS_MARKERS;
 }
 
@@ -154,10 +174,30 @@ int hx_query_capacity(const hx_model *m)
     return most;
 }
 
+int hx_query_accelerations(const hx_query *q, int measures[6])
+{
+    static const int acc[6] = {HX_ACC_X, HX_ACC_Y, HX_ACC_Z, HX_WDT_X, HX_WDT_Y, HX_WDT_Z};
+    switch (q->function) {
+    case F_ACC:
+    case F_TACC:
+        memcpy(measures, acc, sizeof acc);
+        return q->function == F_ACC ? 6 : 3;
+    case F_RACC:
+        memcpy(measures, acc + 3, 3 * sizeof *acc);
+        return 3;
+    default:
+        if (q->function < F_ACCX)
+            return 0;
+        measures[0] = q->function - F_ACCX;
+        return 1;
+    }
+}
+
 int hx_answer(const hx_frames *fr, const hx_query *q, const int *ipar, double *values)
 {
     const int code = q->function, nsize = q->nsize;
-    const int array_function = code >= F_DISP && code <= F_ARRAY;
+    const int array_function = (code >= F_DISP && code <= F_ARRAY) ||
+                               (code >= F_ACC && code <= F_RACC);
     int least = 1, most = 0;
     if (code >= 0)
         nsize_range(code, &least, &most);
@@ -182,6 +222,12 @@ int hx_answer(const hx_frames *fr, const hx_query *q, const int *ipar, double *v
                                                                  : marker_world(fr, id, &scratch[k]);
         if (f[k] == NULL)
             return -1;
+    }
+    int measures[6];
+    const int accelerations = hx_query_accelerations(q, measures);
+    if (accelerations > 0) { /* the ids are good; the values are the loop's (queries.h) */
+        memset(values, 0, sizeof *values * (size_t)accelerations);
+        return accelerations;
     }
     const hx_frame *I = f[0], *J = f[1], *K = f[2], *L = f[3];
     switch (code) {

@@ -17,6 +17,12 @@ static int same(const hx_expr_input *a, const hx_expr_input *b)
            memcmp(a->ids, b->ids, sizeof a->ids) == 0;
 }
 
+/* What slot li stands for. */
+static const hx_expr_input *input_of(const hx_loop_input *li)
+{
+    return li->program != NULL ? &hx_expr_inputs(li->program)[li->input] : &li->query;
+}
+
 /* Program p's loop inputs given their slots, new ones listed; 0 or -1. */
 static int add_program(hx_model *m, hx_expr_program *p, const char *element, int id,
                        int *capacity)
@@ -28,9 +34,7 @@ static int add_program(hx_model *m, hx_expr_program *p, const char *element, int
         if (!is_loop_input(&in[k]))
             continue;
         int slot = 0;
-        while (slot < m->nloop_inputs &&
-               !same(&hx_expr_inputs(m->loop_inputs[slot].program)
-                          [m->loop_inputs[slot].input], &in[k]))
+        while (slot < m->nloop_inputs && !same(input_of(&m->loop_inputs[slot]), &in[k]))
             ++slot;
         if (slot == m->nloop_inputs) {
             if (m->nloop_inputs == *capacity) {
@@ -72,11 +76,34 @@ int hx_draft_find_loop_inputs(hx_draft *d)
     return status;
 }
 
+int hx_model_loop_query(hx_model *m, const hx_expr_input *in, const char *text,
+                        const char *element)
+{
+    for (int slot = 0; slot < m->nloop_inputs; ++slot)
+        if (same(input_of(&m->loop_inputs[slot]), in))
+            return slot;
+    /* a few, once per session: grown one at a time */
+    hx_loop_input *more =
+        realloc(m->loop_inputs, sizeof *more * (size_t)(m->nloop_inputs + 1));
+    if (more == NULL)
+        return -1;
+    m->loop_inputs = more;
+    hx_loop_input *li = &m->loop_inputs[m->nloop_inputs];
+    memset(li, 0, sizeof *li);
+    li->query = *in;
+    snprintf(li->text, sizeof li->text, "%s", text);
+    snprintf(li->element, sizeof li->element, "%s", element);
+    return m->nloop_inputs++;
+}
+
 const char *hx_loop_input_text(const hx_model *m, int k, char *text, size_t size)
 {
     const hx_loop_input *li = &m->loop_inputs[k];
     char what[96];
-    hx_expr_input_text(&hx_expr_inputs(li->program)[li->input], what, sizeof what);
+    if (li->program != NULL)
+        hx_expr_input_text(&hx_expr_inputs(li->program)[li->input], what, sizeof what);
+    else
+        snprintf(what, sizeof what, "%s", li->text);
     snprintf(text, size, "%s (%s)", what, li->element);
     return text;
 }

@@ -15,9 +15,16 @@
 #include "model/expr/expr.h"
 
 typedef struct hx_loop_input {
-    const hx_expr_program *program; /* the first program that reads it ... */
+    const hx_expr_program *program; /* the first program that reads it (NULL: a user
+                                     * routine's query, below) ... */
     int input;                      /* ... and its place among that program's inputs */
-    char element[48];               /* that program's element: "Force_Scalar_TwoBody 1" */
+    char element[64];               /* that program's element: "Force_Scalar_TwoBody 1";
+                                     * a routine's: "GFOSUB of Force_Vector_OneBody 5" */
+    /* program NULL: the acceleration a user routine asks (c_sysfnc ACCZ, one
+     * value of c_sysary ACC: host/loop_queries.h) as an expression's input
+     * would read it, linked (its markers' indices), and as asked: "ACC(20)[3]" */
+    hx_expr_input query;
+    char text[40];
 } hx_loop_input;
 
 /* Gives every loop input of the loads', variables' and Control_Diffs'
@@ -25,6 +32,13 @@ typedef struct hx_loop_input {
  * function of the same ids is read, and lists them in model->loop_inputs;
  * 0, or -1 with the draft failed (out of memory). */
 int hx_draft_find_loop_inputs(hx_draft *d);
+
+/* The slot of acceleration `in` (linked) that a user routine's query reads,
+ * the one an expression's same acceleration has, or a new one (with text
+ * and element); -1 out of memory. After hx_draft_find_loop_inputs, by
+ * whoever knows the routines' queries (host/loop_queries.h). */
+int hx_model_loop_query(hx_model *m, const hx_expr_input *in, const char *text,
+                        const char *element);
 
 /* "ACCZ(10) (Force_Scalar_TwoBody 1)" for slot k into text; returns text. */
 const char *hx_loop_input_text(const hx_model *m, int k, char *text, size_t size);

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "host/dependency_pass.h"
+#include "host/loop_queries.h"
 
 int hx_session_open(hx_session *s, const char *model_path, FILE *messages, hx_message *msg)
 {
@@ -38,6 +39,21 @@ int hx_session_open(hx_session *s, const char *model_path, FILE *messages, hx_me
                 s->messages.stop_message);
         hx_session_close(s);
         return -1;
+    }
+    /* the accelerations the routines declared join the algebraic loop: the
+     * frames made before then get room for them */
+    const int loop_inputs = s->model->nloop_inputs;
+    if (hx_bind_loop_queries(s->model, &s->bindings, msg) != 0) {
+        hx_session_close(s);
+        return -1;
+    }
+    if (s->model->nloop_inputs != loop_inputs) {
+        hx_frames_free(&s->frames);
+        if (hx_frames_init(&s->frames, s->model) != 0) {
+            hx_fail(msg, "out of memory");
+            hx_session_close(s);
+            return -1;
+        }
     }
     return 0;
 }

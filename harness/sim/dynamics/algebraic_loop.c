@@ -46,6 +46,12 @@ static int loop_g(const hx_dynamics *d, hx_dynamics_data *dd, double t, const do
     const hx_expr_context c = {&dd->frames, dd->frames.variables, &outputs};
     for (int i = 0; i < nz; ++i) {
         const hx_loop_input *li = &m->loop_inputs[i];
+        hx_expr_fault fault;
+        if (li->program == NULL) { /* a user routine's acceleration (host/loop_queries.h) */
+            if (hx_expr_acceleration_value(&c, &li->query, &gz[i], &fault) != 0)
+                return hx_dynamics_fail(dd, "%s of %s: %s", li->text, li->element, fault.what);
+            continue;
+        }
         const hx_expr_input *in = &hx_expr_inputs(li->program)[li->input];
         hx_message msg;
         if (in->kind == HX_EXPR_INPUT_REACTION)
@@ -53,7 +59,6 @@ static int loop_g(const hx_dynamics *d, hx_dynamics_data *dd, double t, const do
         else if (in->kind == HX_EXPR_INPUT_LOAD &&
                  hx_loads_output(d, dd, in->index[0], loads + 12 * in->index[0], &msg) != 0)
             return hx_dynamics_fail(dd, "%s", msg.text);
-        hx_expr_fault fault;
         if (hx_expr_input_value(li->program, &c, li->input, &gz[i], &fault) != 0) {
             hx_expr_fail(&msg, li->program, &fault, li->element);
             return hx_dynamics_fail(dd, "%s", msg.text);

@@ -1,7 +1,8 @@
 /*
  * The algebraic loop (docs/interface.md §8.8): a model whose forces,
  * variables or Control_Diff rates read accelerations (ACCX .. WDTM), joint
- * reactions (JOINT, JPRIM) or SFORCE forces (model/loop_inputs.h) has values
+ * reactions (JOINT, JPRIM) or SFORCE forces (model/loop_inputs.h), or whose
+ * user routines declared accelerations (host/loop_queries.h), has values
  * z that the stages compute only after the loads that read them. At each
  * right-hand side z is solved so that z = g(z), where g(z) runs the stages
  * from the variables to the constraints with the loads reading z

@@ -1,0 +1,74 @@
+/* The accelerations user routines ask, as loop inputs (loop_queries.h). */
+#include "host/loop_queries.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "model/expr/functions.h"
+#include "model/loop_inputs.h"
+
+/* The model line of b's element. */
+static int element_line(const hx_model *m, const hx_binding *b)
+{
+    switch (hx_binding_family_of(b->kind)) {
+    case HX_FAMILY_FORCE: return m->forces[b->index].line;
+    case HX_FAMILY_ROUTINE: return m->routines[b->index].line;
+    case HX_FAMILY_STATEEQN: return m->stateeqns[b->index].line;
+    default: return m->couplers[b->index].line;
+    }
+}
+
+/* Value `value` of query q (measure `measure`) as an expression's input. */
+static void as_input(const hx_model *m, const hx_query *q, int measure, hx_expr_input *in)
+{
+    memset(in, 0, sizeof *in);
+    in->kind = HX_EXPR_INPUT_ACCELERATION;
+    in->function = HX_FN_ACCX + measure; /* the same order: ACCX .. WDTM */
+    in->measure = measure;
+    in->nids = q->nsize;
+    for (int j = 0; j < 4; ++j) {
+        in->ids[j] = q->ipar[j];
+        in->index[j] = q->ipar[j] != 0 ? hx_model_marker(m, q->ipar[j]) : -1;
+    }
+    in->variable = in->loop = -1;
+}
+
+/* Binding b's declared query k given its slots; 0 or -1 with msg. */
+static int bind_query(hx_model *m, hx_binding *b, int k, hx_message *msg)
+{
+    const hx_query *q = &b->deps.query[k];
+    int measures[6];
+    const int count = hx_query_accelerations(q, measures);
+    if (count == 0)
+        return 0;
+    const char *routine = hx_binding_routine(b, 0);
+    char asked[40], text[48], element[64];
+    hx_query_text(q, asked, sizeof asked);
+    /* a request's REQSUB runs at output times, outside any right-hand side */
+    if (b->kind != HX_BIND_FORCE && b->kind != HX_BIND_VARIABLE && b->kind != HX_BIND_DIFF)
+        return hx_fail(msg, "%s:%d: %s %d (%s) declares %s in its dependency pass, which the host"
+                       " answers only to a force, variable or Control_Diff routine (within a"
+                       " right-hand side's algebraic loop): docs/interface.md §5.1", m->path,
+                       element_line(m, b), b->element, b->id, routine, asked);
+    snprintf(element, sizeof element, "%s of %s %d", routine, b->element, b->id);
+    for (int i = 0; i < count; ++i) {
+        hx_expr_input in;
+        as_input(m, q, measures[i], &in);
+        if (count > 1)
+            snprintf(text, sizeof text, "%s[%d]", asked, i + 1);
+        else
+            snprintf(text, sizeof text, "%s", asked);
+        if ((b->loop_slot[k][i] = hx_model_loop_query(m, &in, text, element)) < 0)
+            return hx_fail(msg, "out of memory");
+    }
+    return 0;
+}
+
+int hx_bind_loop_queries(hx_model *m, hx_bindings *bs, hx_message *msg)
+{
+    for (int n = 0; n < bs->count; ++n)
+        for (int k = 0; k < bs->items[n].deps.count; ++k)
+            if (bind_query(m, &bs->items[n], k, msg) != 0)
+                return -1;
+    return 0;
+}

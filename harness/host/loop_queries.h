@@ -1,0 +1,22 @@
+/*
+ * The accelerations user routines ask (docs/interface.md §5.1): a routine
+ * that declares c_sysfnc's ACCX .. WDTM or c_sysary's ACC TACC RACC in its
+ * dependency pass reads inputs of the model's algebraic loop, as an
+ * expression's ACCZ does (model/loop_inputs.h): each value gets its slot,
+ * and the routine's calls are answered from the frames' loop values, which
+ * the dynamics solves at each right-hand side (sim/dynamics/algebraic_loop.h).
+ * Only a force, a variable or a Control_Diff routine runs where the loop
+ * gives them; any other that declares one is refused.
+ */
+#ifndef HX_HOST_LOOP_QUERIES_H
+#define HX_HOST_LOOP_QUERIES_H
+
+#include "host/binding.h"
+
+/* After the dependency passes: every declared acceleration of bs's elements
+ * a slot of m's loop (hx_model_loop_query), kept in its binding's loop_slot.
+ * 0, or -1 with msg ("model.xml:12: Post_Request 3 (REQSUB) declares
+ * ACCZ(20), which ..."; out of memory). */
+int hx_bind_loop_queries(hx_model *m, hx_bindings *bs, hx_message *msg);
+
+#endif
