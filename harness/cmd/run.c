@@ -329,6 +329,13 @@ int hx_command_run(int argc, char **argv)
                            ? hx_simulate_segments(&d, &so, schedule.segments, schedule.nsegments,
                                                   NULL, &result)
                            : hx_simulate(&d, &so, NULL, &result);
+    /* the rows a static equilibrium changed, as the set-up's changes are said */
+    if (result.no_longer[0] != '\0')
+        fprintf(stderr, "run: note: the static equilibrium at t = %g moved the parts to where"
+                " %s, redundant before, is not: kept\n", result.t_redundancy, result.no_longer);
+    if (result.now[0] != '\0')
+        fprintf(stderr, "run: note: the static equilibrium at t = %g moved the parts to where"
+                " %s, not redundant before, is: removed\n", result.t_redundancy, result.now);
     hx_simulation_summary(stdout, &d, &so, &result);
     if (result.status == HX_INTEGRATION_UNSTABLE && limited)
         printf("  the step %g %s the stability limit %.3g of %s at t = 0 (|lambda| = %.4g)\n",

@@ -27,6 +27,8 @@ static int share(const hx_dynamics *d, int i, int j)
 int hx_constraint_matrix_plan(hx_dynamics *d, hx_message *msg)
 {
     const int n = d->nactive;
+    free(d->envelope_first), free(d->envelope_start); /* a set replaced: planned again */
+    d->envelope_first = NULL, d->envelope_start = NULL;
     if (n < HX_CONSTRAINT_MATRIX_ENVELOPE_ROWS)
         return 0;
     d->envelope_first = malloc(sizeof(int) * (size_t)n);

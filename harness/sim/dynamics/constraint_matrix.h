@@ -7,10 +7,11 @@
 
 #include "sim/dynamics/dynamics.h"
 
-/* After the redundant rows are known: from HX_CONSTRAINT_MATRIX_ENVELOPE_ROWS
- * active rows on, the matrix is kept and factored by its envelope
- * (d->envelope_first, envelope_start: each active row from the first it
- * shares a body with); below, solved by dense elimination. 0 or -1 with msg. */
+/* After the redundant rows are known (again when a run changes them): from
+ * HX_CONSTRAINT_MATRIX_ENVELOPE_ROWS active rows on, the matrix is kept and
+ * factored by its envelope (d->envelope_first, envelope_start: each active
+ * row from the first it shares a body with); below, solved by dense
+ * elimination. 0 or -1 with msg. */
 #define HX_CONSTRAINT_MATRIX_ENVELOPE_ROWS 32
 int hx_constraint_matrix_plan(hx_dynamics *d, hx_message *msg);
 

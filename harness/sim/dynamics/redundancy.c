@@ -162,16 +162,61 @@ static int listed(const int *list, int n, int row)
     return 0;
 }
 
-int hx_redundancy_change(const hx_dynamics *d, char *no_longer, char *now, size_t size)
+/* The rows of `before` not in d->removed into no_longer, those of d->removed
+ * not in `before` into now; how many. */
+static int name_changes(const hx_dynamics *d, const int *before, int nbefore, char *no_longer,
+                        char *now, size_t size)
 {
     no_longer[0] = now[0] = '\0';
     int count = 0;
-    for (int k = 0; k < d->nremoved_placed; ++k)
-        if (!listed(d->removed, d->nremoved, d->removed_placed[k]))
-            append_row(d, d->removed_placed[k], no_longer, size), count++;
+    for (int k = 0; k < nbefore; ++k)
+        if (!listed(d->removed, d->nremoved, before[k]))
+            append_row(d, before[k], no_longer, size), count++;
     for (int k = 0; k < d->nremoved; ++k)
-        if (!listed(d->removed_placed, d->nremoved_placed, d->removed[k]))
+        if (!listed(before, nbefore, d->removed[k]))
             append_row(d, d->removed[k], now, size), count++;
+    return count;
+}
+
+int hx_redundancy_change(const hx_dynamics *d, char *no_longer, char *now, size_t size)
+{
+    return name_changes(d, d->removed_placed, d->nremoved_placed, no_longer, now, size);
+}
+
+int hx_redundancy_use(hx_dynamics *d, const int *removed, int nremoved, hx_message *msg)
+{
+    if (removed != d->removed)
+        memmove(d->removed, removed, sizeof(int) * (size_t)nremoved);
+    d->nremoved = nremoved;
+    d->nactive = 0;
+    for (int i = 0; i < d->nrows; ++i)
+        if (!listed(removed, nremoved, i))
+            d->active[d->nactive++] = i;
+    return hx_constraint_matrix_plan(d, msg); /* G M^-1 G^T's envelope over the new rows */
+}
+
+int hx_redundancy_reexamine(hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                            char *no_longer, char *now, size_t size, hx_message *msg)
+{
+    no_longer[0] = now[0] = '\0';
+    if (d->nrows == 0)
+        return 0;
+    const size_t n = (size_t)d->nrows;
+    int *kept = malloc(sizeof(int) * (n + 1)), *removed = malloc(sizeof(int) * (n + 1));
+    int *before = malloc(sizeof(int) * (n + 1)), nkept, nremoved, count = -1;
+    if (kept == NULL || removed == NULL || before == NULL)
+        hx_fail(msg, "out of memory");
+    else if (rank_at(d, dd, t, y, kept, &nkept, removed, &nremoved, msg) != 0)
+        count = -1;
+    else if (!lists_differ(removed, nremoved, d->removed, d->nremoved))
+        count = 0;
+    else {
+        const int nbefore = d->nremoved;
+        memcpy(before, d->removed, sizeof(int) * (size_t)nbefore);
+        if (hx_redundancy_use(d, removed, nremoved, msg) == 0)
+            count = name_changes(d, before, nbefore, no_longer, now, size);
+    }
+    free(kept), free(removed), free(before);
     return count;
 }
 

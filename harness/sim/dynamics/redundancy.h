@@ -38,6 +38,20 @@ int hx_redundancy_reassess(hx_dynamics *d, hx_dynamics_data *dd, hx_message *msg
  * size each); returns how many rows changed (0: the same set). */
 int hx_redundancy_change(const hx_dynamics *d, char *no_longer, char *now, size_t size);
 
+/* The run's set replaced: removed (ascending, nremoved) the redundant rows,
+ * every other row active, G M^-1 G^T's envelope planned again. A run puts
+ * back the set it started with this way. 0, or -1 with msg. */
+int hx_redundancy_use(hx_dynamics *d, const int *removed, int nremoved, hx_message *msg);
+
+/* The rank test again at y (at t), where a run's static equilibrium moved the
+ * parts (equilibrium.h): when the set differs there it replaces the run's
+ * (hx_redundancy_use), and the rows redundant before and not at y go into
+ * no_longer, those redundant at y and not before into now (names separated
+ * by ", ", size each). Returns how many rows changed (0: the same set), or
+ * -1 with msg. */
+int hx_redundancy_reexamine(hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
+                            char *no_longer, char *now, size_t size, hx_message *msg);
+
 /* Row i's name, e.g. "JOINT/4 REVOLUTE: equation 5 (z_I . y_J)" or
  * "COUPLER/3"; returns text. */
 const char *hx_redundancy_name_row(const hx_dynamics *d, int row, char *text, size_t size);

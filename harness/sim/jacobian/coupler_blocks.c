@@ -48,11 +48,12 @@ int hx_coupler_blocks_init(hx_jacobian *jac, hx_message *msg)
         free(parent), free(group), free(order);
         return hx_fail(msg, "out of memory");
     }
-    /* the velocities a row touches are one group */
+    /* the velocities a row touches are one group; every row's, active or not (a static
+     * equilibrium may make a redundant row active for the run: redundancy.h) */
     for (int u = 0; u < nu; ++u)
         parent[u] = u, group[u] = -1;
-    for (int a = 0; a < d->nactive; ++a) {
-        const hx_constraint_row *r = &d->rows[d->active[a]];
+    for (int i = 0; i < d->nrows; ++i) {
+        const hx_constraint_row *r = &d->rows[i];
         for (int b = 0; b < r->nblocks; ++b)
             for (int c = 0; c < r->width[b]; ++c) {
                 const int x = find_root(parent, r->u[0]), y = find_root(parent, r->u[b] + c);

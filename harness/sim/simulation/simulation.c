@@ -10,12 +10,13 @@
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/joint_turns.h"
+#include "sim/dynamics/redundancy.h"
 #include "sim/dynamics/implicit_diffs.h"
 #include "sim/jacobian/jacobian.h"
 #include "sim/simulation/equilibrium.h"
 
 typedef struct run_context {
-    const hx_dynamics *d;
+    hx_dynamics *d;           /* its redundant rows follow a static equilibrium */
     hx_dynamics_data *dd;     /* the run's evaluations */
     const hx_simulation_options *opt;
     hx_simulation_result *result;
@@ -152,13 +153,49 @@ static void switch_segment(const run_context *rc, const hx_segment *g)
         hx_variable_definitions_apply(g->variables != NULL ? g->variables : rc->own, d->m);
 }
 
-/* y moved to the static equilibrium at t (equilibrium.h); the energy balance
- * is counted from there. */
+/* names appended to text (size) after ", " when both have some. */
+static void join_names(char *text, size_t size, const char *names)
+{
+    const size_t used = strlen(text);
+    if (names[0] != '\0' && used < size)
+        snprintf(text + used, size - used, "%s%s", used > 0 ? ", " : "", names);
+}
+
+/* y moved to the static equilibrium at t (equilibrium.h) and the redundant
+ * rows found again where it left the parts (redundancy.h): when the set
+ * changes, the equilibrium again with the new set from there, as the
+ * set-up's assembly does (up to HX_REDUNDANCY_PASSES times); the rows changed
+ * named in the result. An equilibrium that does not converge is looked at
+ * too: one where rows become redundant (the pivots of a four-bar collinear)
+ * stalls with them active, their multipliers a near-singular solve. The
+ * energy balance is counted from there. */
 static int find_equilibrium(run_context *rc, double t, double *y)
 {
     hx_simulation_result *result = rc->result;
-    hx_message msg;
-    if (hx_equilibrium_solve(rc->d, rc->dd, t, y, &result->equilibrium, &msg) != 0) {
+    hx_message msg, failure;
+    int status = 0;
+    for (int pass = 0; pass <= HX_REDUNDANCY_PASSES; ++pass) {
+        char no_longer[sizeof result->no_longer], now[sizeof result->now];
+        const int solved = hx_equilibrium_solve(rc->d, rc->dd, t, y, &result->equilibrium,
+                                                &failure) == 0;
+        status = solved ? 0 : -1;
+        if (rc->opt->keep_redundant || pass == HX_REDUNDANCY_PASSES)
+            break;
+        const int changed = hx_redundancy_reexamine(rc->d, rc->dd, t, y, no_longer, now,
+                                                    sizeof now, &msg);
+        if (changed < 0) {
+            failure = msg, status = -1;
+            break;
+        }
+        if (changed == 0)
+            break;
+        join_names(result->no_longer, sizeof result->no_longer, no_longer);
+        join_names(result->now, sizeof result->now, now);
+        result->redundancy_changes += changed;
+        result->t_redundancy = t;
+    }
+    if (status != 0) {
+        msg = failure;
         snprintf(result->message, sizeof result->message, "%s", msg.text);
         result->status = HX_INTEGRATION_FAILED;
         return -1;
@@ -173,7 +210,7 @@ static int find_equilibrium(run_context *rc, double t, double *y)
 static int simulate(run_context *rc, const hx_segment *segments, int nsegments, double *y,
                     double *y_end)
 {
-    const hx_dynamics *d = rc->d;
+    hx_dynamics *d = rc->d;
     hx_dynamics_data *dd = rc->dd;
     const hx_simulation_options *opt = rc->opt;
     hx_simulation_result *result = rc->result;
@@ -271,7 +308,7 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
     return result->status == HX_INTEGRATION_OK ? 0 : -1;
 }
 
-int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
+int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
                 hx_simulation_result *result)
 {
     const hx_segment whole = {opt->integration.t_end, opt->integration.output_interval,
@@ -298,7 +335,7 @@ static int widen(hx_jacobian *jac, const hx_segment *segments, int nsegments,
     return status;
 }
 
-int hx_simulate_segments(const hx_dynamics *d, const hx_simulation_options *opt,
+int hx_simulate_segments(hx_dynamics *d, const hx_simulation_options *opt,
                          const hx_segment *segments, int nsegments, double *y_end,
                          hx_simulation_result *result)
 {
@@ -309,11 +346,16 @@ int hx_simulate_segments(const hx_dynamics *d, const hx_simulation_options *opt,
     hx_message msg;
     memset(&jac, 0, sizeof jac);
     double *y = malloc(sizeof(double) * (size_t)d->n);
+    /* the redundant rows the run starts with: a static equilibrium may change them */
+    const int nremoved = d->nremoved;
+    int *removed = malloc(sizeof(int) * ((size_t)d->nremoved + 1));
     int status = -1;
-    if (y == NULL) {
+    if (y == NULL || removed == NULL) {
+        free(y), free(removed);
         snprintf(result->message, sizeof result->message, "out of memory");
         return -1;
     }
+    memcpy(removed, d->removed, sizeof(int) * (size_t)nremoved);
     /* the model's own variables, kept when a segment redefines one */
     hx_variable_definitions own = {0};
     int redefines = 0;
@@ -330,9 +372,12 @@ int hx_simulate_segments(const hx_dynamics *d, const hx_simulation_options *opt,
                           redefines ? &own : NULL};
         status = simulate(&rc, segments, nsegments, y, y_end);
     }
-    /* every load on again, the model's gravity and variables, as the model has them,
-     * however the run ended: the next run on d starts from the model */
+    /* every load on again, the model's gravity, variables and redundant rows, as the
+     * set-up has them, however the run ended: the next run on d starts from the model */
     memset(d->load_off, 0, (size_t)d->m->nloads);
+    if (result->redundancy_changes > 0 && hx_redundancy_use(d, removed, nremoved, &msg) != 0)
+        status = -1; /* out of memory: the run's message stands */
+    free(removed);
     memcpy(d->gravity, d->m->gravity, 3 * sizeof(double));
     if (redefines && own.program != NULL)
         hx_variable_definitions_apply(&own, d->m);

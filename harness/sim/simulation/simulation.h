@@ -30,6 +30,8 @@ typedef struct hx_simulation_options {
     void *observer_ctx;
     int skip_energy;         /* no energy at the output times (timed runs; no CSV) */
     int static_start;        /* the static equilibrium first (run --static, equilibrium.h) */
+    int keep_redundant;      /* the redundant rows not found again at a static
+                              * equilibrium (tests: what the re-examination changes) */
 } hx_simulation_options;
 
 typedef struct hx_simulation_result {
@@ -49,13 +51,20 @@ typedef struct hx_simulation_result {
     int n;                    /* the state's size */
     int statics;              /* static equilibria found (SIMULATE/STATIC, run --static) */
     hx_equilibrium_result equilibrium; /* the last one's */
+    int redundancy_changes;  /* redundant rows a static equilibrium changed (redundancy.h) */
+    double t_redundancy;     /* the last equilibrium that changed them */
+    char no_longer[1024], now[1024]; /* their names: redundant before and not at the
+                                      * equilibrium, and the other way round */
     char message[1024];
 } hx_simulation_result;
 
 /* Integrates from the model's initial state (its static equilibrium with
  * opt->static_start); y_end (may be NULL) receives
- * the final state (d->n values). */
-int hx_simulate(const hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
+ * the final state (d->n values). A static equilibrium finds d's redundant
+ * rows again where it leaves the parts and the run goes on with that set
+ * (result's redundancy_changes, no_longer, now); d has the set-up's set
+ * again after the run. */
+int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
                 hx_simulation_result *result);
 
 /* One segment of a run (a command file's SIMULATE/DYNAMIC, docs/interface.md
@@ -80,7 +89,7 @@ typedef struct hx_segment {
  * that starts with the static equilibrium writes its row there); one CSV and
  * one result, counts summed. opt's t_end is the progress line's; the
  * segments' own times and tolerances are those integrated. */
-int hx_simulate_segments(const hx_dynamics *d, const hx_simulation_options *opt,
+int hx_simulate_segments(hx_dynamics *d, const hx_simulation_options *opt,
                          const hx_segment *segments, int nsegments, double *y_end,
                          hx_simulation_result *result);
 
