@@ -8,6 +8,7 @@
 
 #include "model/expr/expr.h"
 #include "sim/dynamics/accelerations.h"
+#include "sim/dynamics/constraint_forces.h"
 #include "sim/dynamics/reactions.h"
 #include "sim/jacobian/jacobian.h"
 #include "sim/simulation/requests.h"
@@ -219,13 +220,19 @@ void evaluate_path(evaluated *e, const char *path)
     if (hx_requests_loads(&e->m.d, &e->m.data, e->loads, &msg) != 0)
         fail_msg("%s", msg.text);
     hx_requests_forces(&e->m.d, &e->m.data, e->forces);
+    e->constraints = calloc(hx_constraint_forces_size(&e->m.d) + 1, sizeof(double));
+    assert_non_null(e->constraints);
+    if (hx_constraint_forces_all(&e->m.d, &e->m.data, 0.0, e->y, e->ydot, e->constraints) != 0)
+        fail_msg("%s", e->m.data.message);
     e->outputs.reactions = e->r, e->outputs.accelerations = e->a;
     e->outputs.loads = e->loads, e->outputs.forces = e->forces;
+    e->outputs.constraints = e->constraints;
 }
 
 void release(evaluated *e)
 {
     free(e->y), free(e->ydot), free(e->r), free(e->a), free(e->loads), free(e->forces);
+    free(e->constraints);
     close_model(&e->m);
 }
 
@@ -242,4 +249,18 @@ double output(const evaluated *e, const char *text)
         fail_msg("%s: fault %s %s", text, fault.function, fault.what);
     hx_expr_free(p);
     return value;
+}
+
+void expect_read_errors(const char *name, const char *head, const char *const (*cases)[3],
+                        size_t count)
+{
+    for (size_t k = 0; k < count; ++k) {
+        char text[2048];
+        snprintf(text, sizeof text, "%s%s\nEND\n", head, cases[k][0]);
+        hx_message msg;
+        hx_model *m = hx_model_parse(text, strlen(text), name, NULL, &msg);
+        if (m != NULL)
+            fail_msg("read: %s", cases[k][0]);
+        assert_contains(msg.text, cases[k][1], cases[k][2]);
+    }
 }

@@ -74,10 +74,11 @@ double *bdf_on(const char *path, double rtol, double t_end, hx_simulation_result
                hx_partials_source *source, char *description);
 
 /* A model evaluated at its initial state, with what an output time knows
- * there: its reactions, accelerations, loads and force elements' forces. */
+ * there: its reactions, accelerations, loads, force elements' forces and
+ * the other constraint elements' forces. */
 typedef struct evaluated {
     model m;
-    double *y, *ydot, *r, *a, *loads, *forces;
+    double *y, *ydot, *r, *a, *loads, *forces, *constraints;
     hx_expr_outputs outputs;
 } evaluated;
 
@@ -89,6 +90,11 @@ void evaluate_path(evaluated *e, const char *path);
 void release(evaluated *e);
 /* An output expression's value at e's state; fails the test on an error. */
 double output(const evaluated *e, const char *text);
+
+/* Each case's model (head, the case's statements [0], END) refused when read
+ * as `name`, its message holding [1] and [2]. */
+void expect_read_errors(const char *name, const char *head, const char *const (*cases)[3],
+                        size_t count);
 
 #define EXPECT(e, text, want, tol)                                                              \
     do {                                                                                        \

@@ -316,8 +316,8 @@ static void link_errors_name_the_id(void **state)
     assert_string_equal(expr_link_error(&fixture, "CURVE(0, 0, 1, 5)", &msg),
                         "m.xml:10:5: CURVE: no curve 5 in the model");
     assert_contains(expr_link_error(&fixture, "1 + COUPLER(1, 0, 2, 0)", &msg),
-                    "m.xml:10:9: COUPLER is not answered by the harness yet: the harness does"
-                    " not split");
+                    "m.xml:10:9: COUPLER(1,0,2,0): a constraint element's force is known only"
+                    " once the accelerations are");
     assert_contains(expr_link_error(&fixture, "1 + VFORCE(1, 0, 2, 0)", &msg),
                     "m.xml:10:9: VFORCE(1,0,2,0): another element's force: here it would"
                     " close an algebraic loop");

@@ -424,7 +424,7 @@ static void dataset_request_and_force(void **state)
     evaluate_text(&e, "request.adm", text);
     double out[8];
     hx_message msg;
-    const hx_expr_outputs given = {e.r, NULL, NULL, NULL};
+    const hx_expr_outputs given = {e.r, NULL, NULL, NULL, NULL};
     assert_int_equal(hx_requests_values(&e.m.data.frames, 0, NULL, &given, out, &msg), 0);
     assert_close(out[1], 0.0, 0, TOL);
     assert_close(out[2], 31.62, 0, TOL);

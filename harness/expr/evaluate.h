@@ -34,6 +34,11 @@ typedef struct hx_expr_outputs {
                                   * origin, then on J at its origin (at I's for a
                                   * Force_Vector's floating J), world axes; zeros on J for a
                                   * Force_Vector_OneBody; SFORCE, VFORCE, ..., FIELD read them */
+    const double *constraints;   /* the motions', couplers' and general constraints' forces,
+                                  * twelve a slot (expr/marker_forces.h's
+                                  * hx_marker_forces_slot): on I at I's origin, then on J at
+                                  * J's origin, world axes (sim/dynamics/constraint_forces.h);
+                                  * MOTION, COUPLER, GCON read them */
 } hx_expr_outputs;
 
 typedef struct hx_expr_context {

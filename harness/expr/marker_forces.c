@@ -2,7 +2,22 @@
 #include "expr/marker_forces.h"
 
 #include "base/vecmath.h"
+#include "model/expr/functions.h"
 #include "model/marker_elements.h"
+
+int hx_marker_forces_slots(const hx_model *m)
+{
+    return m->nroutines + 3 * m->ncouplers + m->ngcons;
+}
+
+int hx_marker_forces_slot(const hx_model *m, int function, int index, int joint)
+{
+    if (function == HX_FN_MOTION)
+        return index;
+    if (function == HX_FN_COUPLER)
+        return m->nroutines + 3 * index + joint;
+    return m->nroutines + 3 * m->ncouplers + index;
+}
 
 void hx_marker_forces_joint_on_j(const hx_frames *fr, int k, const double on_i[6],
                                  double on_j[6])
@@ -47,7 +62,8 @@ int hx_marker_forces_sum(const hx_frames *fr, const hx_expr_outputs *s, int i, i
     const hx_model *m = fr->model;
     v3_set(F, 0, 0, 0), v3_set(T, 0, 0, 0);
     if (s == NULL || (m->nloads > 0 && s->loads == NULL) ||
-        (m->nforces > 0 && s->forces == NULL) || (m->njoints > 0 && s->reactions == NULL))
+        (m->nforces > 0 && s->forces == NULL) || (m->njoints > 0 && s->reactions == NULL) ||
+        (hx_marker_forces_slots(m) > 0 && s->constraints == NULL))
         return missing(fault, "no forces were given to read it from (they are known at output"
                        " times only)");
     for (int k = 0; k < m->nloads; ++k) {
@@ -70,5 +86,23 @@ int hx_marker_forces_sum(const hx_frames *fr, const hx_expr_outputs *s, int i, i
         hx_marker_forces_joint_on_j(fr, k, at, at + 6);
         add_element(at, jt->i_marker, jt->j_marker, 0, i, j, 0, F, T);
     }
+    for (int k = 0; k < m->nroutines && !action_only; ++k) {
+        const hx_routine *r = &m->routines[k];
+        if (r->kind == HX_ROUTINE_MOTION && r->joint >= 0)
+            add_element(s->constraints + 12 * hx_marker_forces_slot(m, HX_FN_MOTION, k, 0),
+                        m->joints[r->joint].i_marker, m->joints[r->joint].j_marker, 0, i, j, 0,
+                        F, T);
+    }
+    for (int k = 0; k < m->ncouplers && !action_only; ++k)
+        for (int n = 0; n < m->couplers[k].njoints; ++n) {
+            const hx_joint *jt = &m->joints[m->couplers[k].joint[n]];
+            add_element(s->constraints + 12 * hx_marker_forces_slot(m, HX_FN_COUPLER, k, n),
+                        jt->i_marker, jt->j_marker, 0, i, j, 0, F, T);
+        }
+    /* a general constraint's at its I marker alone, as an action-only force's */
+    for (int k = 0; k < m->ngcons; ++k)
+        if (m->gcons[k].i_marker >= 0)
+            add_element(s->constraints + 12 * hx_marker_forces_slot(m, HX_FN_GCON, k, 0),
+                        m->gcons[k].i_marker, -1, 1, i, j, action_only, F, T);
     return 0;
 }

@@ -81,11 +81,25 @@ static int load(const hx_expr_context *c, const hx_expr_input *in, double *value
 
 /* JOINT(id, jflag, comp, rm), JPRIM(...) (docs/interface.md §7.14): jflag 0 the
  * reaction on I at I, 1 the one on J at J (-F, and -(T + (x_I - x_J) x F));
- * comp 1..8 FM, FX, FY, FZ, TM, TX, TY, TZ, the components in rm's axes. */
+ * comp 1..8 FM, FX, FY, FZ, TM, TX, TY, TZ, the components in rm's axes.
+ * MOTION, COUPLER (jflag 2k, 2k + 1 at its joint k + 1's I and J) and GCON
+ * (§8.3) the same, from the slots an output time keeps. */
 static int reaction(const hx_expr_context *c, const hx_expr_input *in, double *value,
                     hx_expr_fault *fault)
 {
     const char *name = hx_expr_function_at(in->function)->name;
+    if (in->function == HX_FN_MOTION || in->function == HX_FN_COUPLER ||
+        in->function == HX_FN_GCON) {
+        if (c->outputs == NULL || c->outputs->constraints == NULL)
+            return fault_of(fault, HX_EXPR_FAULT_INPUT, name, "no constraint forces were given"
+                            " to read it from (they are known at output times only)", 0, 0.0);
+        const int joint = in->function == HX_FN_COUPLER ? in->ids[1] / 2 : 0;
+        const double *at = c->outputs->constraints + 6 * (in->ids[1] % 2) +
+                           12 * hx_marker_forces_slot(c->frames->model, in->function,
+                                                      in->index[0], joint);
+        *value = component(c, in->ids[2], in->index[3], at, at + 3);
+        return 0;
+    }
     if (c->outputs == NULL || c->outputs->reactions == NULL)
         return fault_of(fault, HX_EXPR_FAULT_INPUT, name, "no joint reactions were given to read"
                         " it from (they are known at output times only)", 0, 0.0);

@@ -71,31 +71,14 @@ int hx_marker_unsummed(const hx_model *m, int i, int j, char *what, size_t size)
             return 1;
         }
     }
-    for (int k = 0; k < m->ncouplers; ++k) {
-        const hx_coupler *c = &m->couplers[k];
-        for (int n = 0; n < c->njoints; ++n) {
-            const hx_joint *jt = &m->joints[c->joint[n]];
-            if (hx_marker_between(jt->i_marker, jt->j_marker, i, j)) {
-                snprintf(what, size, "Constraint_Coupler %d (line %d)", c->id, c->line);
-                return 1;
-            }
-        }
-    }
-    for (int k = 0; k < m->nroutines; ++k) {
-        const hx_routine *r = &m->routines[k];
-        if (r->kind != HX_ROUTINE_MOTION || r->joint < 0)
-            continue;
-        const hx_joint *jt = &m->joints[r->joint];
-        if (hx_marker_between(jt->i_marker, jt->j_marker, i, j)) {
-            snprintf(what, size, "Motion_Joint %d (line %d)", r->id, r->line);
-            return 1;
-        }
-    }
-    for (int k = 0; k < m->ngcons && j < 0; ++k)
-        if (m->gcons[k].i_marker == i) {
+    /* a general constraint's force is read on a free body alone (model/expr/link.c) */
+    for (int k = 0; k < m->ngcons && j < 0; ++k) {
+        const int body = m->gcons[k].i_marker == i ? m->markers[i].body : -1;
+        if (body >= 0 && (m->bodies[body].is_ground || m->bodies[body].joint >= 0)) {
             snprintf(what, size, "Constraint_General %d (line %d)", m->gcons[k].id,
                      m->gcons[k].line);
             return 1;
         }
+    }
     return 0;
 }

@@ -23,7 +23,8 @@ typedef struct hx_expr_source {
 
 /* What a program reads (docs/interface.md §8.6): TIME, a measure of markers,
  * a Reference_Variable's value, a Control_Diff's state or rate, a
- * component of a Reference_Array, a joint's reaction (JOINT, JPRIM), a
+ * component of a Reference_Array, a constraint element's force (JOINT,
+ * JPRIM, MOTION, COUPLER, GCON), a
  * marker's acceleration (ACCX .. WDTM), a force element's force (SFORCE,
  * VFORCE, VTORQ, GFORCE, FIELD) or the net force at a marker (FX .. TM; these
  * in output expressions only, hx_expr_link_output). Each distinct one is
@@ -54,9 +55,11 @@ typedef struct hx_expr_input {
                        * origin and axes; ORIENT's I and J first, its system and
                        * component in ids[0], ids[1]);
                        * VARVAL: the variable's index; DIF, DIF1: the Control_Diff's slot;
-                       * ARYVAL: the array's index; REACTION: the joint's index (model
-                       * order, primitives among them), its I and J markers' and rm's
-                       * (-1: the world's axes); LOAD: the element's index, in
+                       * ARYVAL: the array's index; REACTION: the element's index (a
+                       * joint's in model order, primitives among them; a motion's in
+                       * m->routines, a coupler's, a general constraint's), the I and J
+                       * markers its jflag reads (J -1 for GCON) and rm's (-1: the
+                       * world's axes); LOAD: the element's index, in
                        * model->loads (index[1] 0) or model->forces (index[1] 1),
                        * index[3] rm's; MARKER_FORCE: I's, J's (-1: left out or 0,
                        * every element acting at I) and K's (-1: the world's axes) */

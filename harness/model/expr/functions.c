@@ -4,16 +4,10 @@
 #include <string.h>
 
 #define ALL_IDS 0xFu
-#define CONSTRAINT_WHY \
-    "the harness does not split the constraint system's multipliers into this element's" \
-    " force yet (a joint's reaction is JOINT() or JPRIM())"
-#define MOTION_WHY \
-    "the harness does not take a motion's force out of its joint's balance or rows yet" \
-    " (the joint's reaction is JOINT())"
 #define ELEMENT_FORCE(NAME) \
     {NAME, HX_FK_LOAD, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", NULL}
-#define CONSTRAINT_FORCE(NAME, WHY) \
-    {NAME, HX_FK_UNANSWERED, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", WHY}
+#define CONSTRAINT_FORCE(NAME) \
+    {NAME, HX_FK_REACTION, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", NULL}
 #define MARKER_FORCE(NAME, MOST, ARGUMENTS) \
     {NAME, HX_FK_MARKER_FORCE, 1, MOST, ALL_IDS, ARGUMENTS, NULL}
 
@@ -103,17 +97,17 @@ static const hx_expr_function table[HX_FN_COUNT] = {
     [HX_FN_TY] = MARKER_FORCE("TY", 3, "(I[, J[, K]])"),
     [HX_FN_TZ] = MARKER_FORCE("TZ", 3, "(I[, J[, K]])"),
     [HX_FN_TM] = MARKER_FORCE("TM", 2, "(I[, J])"),
-    [HX_FN_JOINT] = {"JOINT", HX_FK_REACTION, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", NULL},
+    [HX_FN_JOINT] = CONSTRAINT_FORCE("JOINT"),
     [HX_FN_SFORCE] = ELEMENT_FORCE("SFORCE"),
     [HX_FN_VFORCE] = ELEMENT_FORCE("VFORCE"),
     [HX_FN_VTORQ] = ELEMENT_FORCE("VTORQ"),
     [HX_FN_GFORCE] = ELEMENT_FORCE("GFORCE"),
-    [HX_FN_MOTION] = CONSTRAINT_FORCE("MOTION", MOTION_WHY),
+    [HX_FN_MOTION] = CONSTRAINT_FORCE("MOTION"),
     [HX_FN_BUSHING] = ELEMENT_FORCE("BUSHING"),
     [HX_FN_FIELD] = ELEMENT_FORCE("FIELD"),
-    [HX_FN_COUPLER] = CONSTRAINT_FORCE("COUPLER", CONSTRAINT_WHY),
-    [HX_FN_JPRIM] = {"JPRIM", HX_FK_REACTION, 4, 4, ALL_IDS, "(id, jflag, comp, rm)", NULL},
-    [HX_FN_GCON] = CONSTRAINT_FORCE("GCON", CONSTRAINT_WHY),
+    [HX_FN_COUPLER] = CONSTRAINT_FORCE("COUPLER"),
+    [HX_FN_JPRIM] = CONSTRAINT_FORCE("JPRIM"),
+    [HX_FN_GCON] = CONSTRAINT_FORCE("GCON"),
     [HX_FN_ORIENT] = {"ORIENT", HX_FK_MEASURE, 3, 4, ALL_IDS, "(system, component, I[, J])",
                       NULL},
 };

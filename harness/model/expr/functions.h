@@ -28,11 +28,10 @@ typedef enum hx_expr_function_code {
     /* values the caller keeps or the model holds */
     HX_FN_VARVAL, HX_FN_DIF, HX_FN_DIF1, HX_FN_ARYVAL,
     /* accelerations (HX_FK_ACCELERATION), the forces at a marker (FX .. TM:
-     * HX_FK_MARKER_FORCE), the joints' reactions (JOINT, JPRIM: HX_FK_REACTION) and
-     * the force elements' forces (HX_FK_LOAD), answered in output expressions only;
-     * the rest parsed, not answered yet: the other constraints' forces (MOTION,
-     * COUPLER, GCON); but ORIENT, a measure (HX_FK_MEASURE) of its own arguments
-     * (system, component, I[, J]) */
+     * HX_FK_MARKER_FORCE), the constraint elements' forces (JOINT, JPRIM, MOTION,
+     * COUPLER, GCON: HX_FK_REACTION) and the force elements' forces (HX_FK_LOAD),
+     * answered in output expressions (and some in the algebraic loop); but ORIENT, a
+     * measure (HX_FK_MEASURE) of its own arguments (system, component, I[, J]) */
     HX_FN_ACCX, HX_FN_ACCY, HX_FN_ACCZ, HX_FN_ACCM, HX_FN_WDTX, HX_FN_WDTY, HX_FN_WDTZ,
     HX_FN_WDTM, HX_FN_FX, HX_FN_FY, HX_FN_FZ, HX_FN_FM, HX_FN_TX, HX_FN_TY, HX_FN_TZ,
     HX_FN_TM, HX_FN_JOINT, HX_FN_SFORCE, HX_FN_VFORCE, HX_FN_VTORQ, HX_FN_GFORCE,
@@ -52,13 +51,14 @@ typedef enum hx_expr_function_kind {
     HX_FK_DIF,        /* a Control_Diff's state */
     HX_FK_DIF1,       /* a Control_Diff's rate */
     HX_FK_ARYVAL,     /* a component of a Reference_Array */
-    HX_FK_REACTION,   /* a joint's reaction (JOINT, JPRIM): output expressions only */
+    HX_FK_REACTION,   /* a constraint element's force (JOINT, JPRIM, MOTION, COUPLER, GCON:
+                       * id, jflag, comp, rm) */
     HX_FK_ACCELERATION, /* a marker's acceleration (ACCX .. WDTM): output expressions only */
     HX_FK_LOAD,       /* an element's force (SFORCE, VFORCE, VTORQ, GFORCE, BUSHING, FIELD:
                        * id, jflag, comp, rm): output expressions only */
     HX_FK_MARKER_FORCE, /* the net force or torque at a marker (FX .. TM: I[, J[, K]]): output
                        * expressions only */
-    HX_FK_UNANSWERED  /* parsed, not answered yet */
+    HX_FK_UNANSWERED  /* parsed, not answered yet (no function of the table today) */
 } hx_expr_function_kind;
 
 typedef struct hx_expr_function {

@@ -2,10 +2,10 @@
  * A program's ids resolved against a model (expr.h): markers, variables,
  * Control_Diffs, arrays, splines and curves by id to their indices, each id
  * the model does not define named with its place in the text; a function
- * the harness does not answer yet is refused here, and so are a joint's
- * reaction, a marker's acceleration, a force element's force and the forces
- * at a marker anywhere but in an output expression or, for the first three
- * (an SFORCE by expressions' alone of the force elements), one linked as a
+ * the harness does not answer yet is refused here, and so are a constraint
+ * element's force, a marker's acceleration, a force element's force and the
+ * forces at a marker anywhere but in an output expression or, for a joint's
+ * reaction, an acceleration and an SFORCE by expressions, one linked as a
  * loop's (a force's, a variable's, a Control_Diff's: hx_expr_link_loop).
  */
 #include <stdarg.h>
@@ -35,24 +35,83 @@ static int fail_at(hx_expr_program *p, hx_message *msg, int line, int column, co
     return hx_fail(msg, "%s:%d:%d: %s", p->file, line, column, what);
 }
 
-/* JOINT(id, jflag, comp, rm), JPRIM(...): the joint, its markers and rm. */
+/* The element a constraint function names: 0 with its index in in->index[0]
+ * and the markers its jflag reads at in index[1] (I) and index[2] (J, -1:
+ * none), or -1 with what the model lacks in `what`. */
+static int constraint_element(hx_expr_input *in, const hx_model *m, char *what, size_t size)
+{
+    const int id = in->ids[0];
+    int k = -1, joint = -1;
+    switch (in->function) {
+    case HX_FN_JOINT:
+    case HX_FN_JPRIM:
+        k = joint = in->function == HX_FN_JPRIM ? hx_model_primitive(m, id) : hx_model_joint(m, id);
+        snprintf(what, size, "no %s %d in the model", in->function == HX_FN_JPRIM
+                 ? "Constraint_Jprim (JPRIM)" : "Constraint_Joint (JOINT)", id);
+        break;
+    case HX_FN_MOTION:
+        k = hx_model_routine(m, HX_ROUTINE_MOTION, id);
+        joint = k >= 0 ? m->routines[k].joint : -1;
+        snprintf(what, size, "no Motion_Joint (MOTION) %d in the model", id);
+        break;
+    case HX_FN_COUPLER:
+        for (int c = 0; c < m->ncouplers && k < 0; ++c)
+            if (m->couplers[c].id == id)
+                k = c;
+        snprintf(what, size, "no Constraint_Coupler (COUPLER) %d in the model", id);
+        if (k >= 0 && in->ids[1] / 2 >= m->couplers[k].njoints) {
+            snprintf(what, size, "jflag (argument 2) is %d: Constraint_Coupler %d couples %d"
+                     " joints (jflag 0 to %d)", in->ids[1], id, m->couplers[k].njoints,
+                     2 * m->couplers[k].njoints - 1);
+            return -1;
+        }
+        joint = k >= 0 ? m->couplers[k].joint[in->ids[1] / 2] : -1;
+        break;
+    default: /* HX_FN_GCON: its force on its I marker's body, a free body's */
+        for (int g = 0; g < m->ngcons && k < 0; ++g)
+            if (m->gcons[g].id == id)
+                k = g;
+        snprintf(what, size, "no Constraint_General (GCON) %d in the model", id);
+        if (k < 0)
+            return -1;
+        in->index[0] = k, in->index[1] = m->gcons[k].i_marker, in->index[2] = -1;
+        const int body = in->index[1] < 0 ? -1 : m->markers[in->index[1]].body;
+        if (body < 0 || m->bodies[body].is_ground || m->bodies[body].joint >= 0) {
+            snprintf(what, size, "Constraint_General %d (line %d) %s: its force is read on its"
+                     " I marker's body, a free body (docs/interface.md §7.16)", id,
+                     m->gcons[k].line, body < 0 ? "names no I marker"
+                     : m->bodies[body].is_ground ? "has its I marker on ground"
+                     : "has its I marker on a body moving in one joint's coordinate");
+            return -1;
+        }
+        return 0;
+    }
+    if (k < 0)
+        return -1;
+    in->index[0] = k;
+    in->index[1] = m->joints[joint].i_marker, in->index[2] = m->joints[joint].j_marker;
+    return 0;
+}
+
+/* JOINT, JPRIM, MOTION, COUPLER, GCON (id, jflag, comp, rm): the element, its
+ * markers and rm. */
 static int link_reaction(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
                          const char *text, int where, hx_message *msg)
 {
-    const int primitive = in->function == HX_FN_JPRIM;
+    const int joint = in->function == HX_FN_JOINT || in->function == HX_FN_JPRIM;
     if (where == LINK_STATE)
-        return fail_at(p, msg, in->line, in->column, "%s: a joint's reaction is known only"
-                       " once the accelerations are: here it would close an algebraic loop,"
-                       " which the harness solves for forces, variables and Control_Diff"
-                       " rates only (REQUEST and Post_Request expressions may read it)",
-                       text);
-    const int k = primitive ? hx_model_primitive(m, in->ids[0]) : hx_model_joint(m, in->ids[0]);
-    if (k < 0)
-        return fail_at(p, msg, in->line, in->column, "%s: no %s %d in the model", text,
-                       primitive ? "Constraint_Jprim (JPRIM)" : "Constraint_Joint (JOINT)",
-                       in->ids[0]);
-    in->index[0] = k;
-    in->index[1] = m->joints[k].i_marker, in->index[2] = m->joints[k].j_marker;
+        return fail_at(p, msg, in->line, in->column, "%s: a constraint element's force is known"
+                       " only once the accelerations are: here it would close an algebraic"
+                       " loop, which the harness solves for forces, variables and Control_Diff"
+                       " rates only (REQUEST and Post_Request expressions may read it)", text);
+    if (where == LINK_LOOP && !joint)
+        return fail_at(p, msg, in->line, in->column, "%s: a motion's, coupler's or general"
+                       " constraint's force: a force, variable or Control_Diff rate reads a"
+                       " joint's reaction (JOINT, JPRIM) in the algebraic loop, not these"
+                       " (REQUEST and Post_Request expressions may read them)", text);
+    char what[256];
+    if (constraint_element(in, m, what, sizeof what) != 0)
+        return fail_at(p, msg, in->line, in->column, "%s: %s", text, what);
     in->index[3] = in->ids[3] == 0 ? -1 : hx_model_marker(m, in->ids[3]);
     if (in->ids[3] != 0 && in->index[3] < 0)
         return fail_at(p, msg, in->line, in->column, "%s: rm (argument 4): no Reference_Marker"

@@ -303,7 +303,15 @@ static int known_call(parser *p, int code, const hx_expr_token *name)
         return k;
     case HX_FK_LOAD:
     case HX_FK_REACTION: /* (id, jflag, comp, rm) */
-        if (ids[1] > 1)
+        /* a coupler's jflag 2k, 2k + 1: the I and J markers of its joint k + 1 */
+        if (code == HX_FN_COUPLER && ids[1] > 5)
+            return fail_at(p, places[2], places[3], "COUPLER: jflag (argument 2) is %d: 0 to 5"
+                           " (on the I or J marker of the coupler's first, second or third"
+                           " joint, at it)", ids[1]);
+        if (code == HX_FN_GCON && ids[1] != 0)
+            return fail_at(p, places[2], places[3], "GCON: jflag (argument 2) is %d: 0 (on its"
+                           " I marker, at it; a general constraint has no J marker)", ids[1]);
+        if (code != HX_FN_COUPLER && ids[1] > 1)
             return fail_at(p, places[2], places[3], "%s: jflag (argument 2) is %d: 0 (on the I"
                            " marker, at it) or 1 (on the J marker, at it)", f->name, ids[1]);
         if (ids[2] < 1 || ids[2] > 8)

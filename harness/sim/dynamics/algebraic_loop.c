@@ -42,7 +42,7 @@ static int loop_g(const hx_dynamics *d, hx_dynamics_data *dd, double t, const do
     double *reactions = accelerations + 6 * m->nbodies, *loads = reactions + 6 * m->njoints;
     hx_accelerations_bodies(d, dd, ydot, accelerations);
     /* a loop reads an SFORCE by expression alone (model/expr/link.c): no user forces */
-    const hx_expr_outputs outputs = {reactions, accelerations, loads, NULL};
+    const hx_expr_outputs outputs = {reactions, accelerations, loads, NULL, NULL};
     const hx_expr_context c = {&dd->frames, dd->frames.variables, &outputs};
     for (int i = 0; i < nz; ++i) {
         const hx_loop_input *li = &m->loop_inputs[i];

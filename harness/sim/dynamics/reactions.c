@@ -51,8 +51,8 @@ static void from_rows(const hx_dynamics *d, const hx_dynamics_data *dd, int k, d
     v3_copy(out, F), v3_copy(out + 3, T);
 }
 
-static void from_balance(const hx_dynamics *d, const hx_dynamics_data *dd, const double *ydot,
-                         int k, double out[6])
+void hx_reactions_balance(const hx_dynamics *d, const hx_dynamics_data *dd, const double *ydot,
+                          int k, double out[6])
 {
     const hx_joint *j = &d->m->joints[k];
     const hx_marker *mi = &d->m->markers[j->i_marker];
@@ -88,12 +88,17 @@ static void from_balance(const hx_dynamics *d, const hx_dynamics_data *dd, const
     v3_sub(r, x, f->p);
     v3_cross(rxF, r, F);
     v3_sub(T, T, rxF);
-    /* along the axis: a coupler's or a motion's, not the joint's */
-    if (dof->kind == HX_DOF_REVOLUTE)
-        v3_axpy(T, -v3_dot(T, a), a);
-    else
-        v3_axpy(F, -v3_dot(F, a), a);
     v3_copy(out, F), v3_copy(out + 3, T);
+}
+
+static void from_balance(const hx_dynamics *d, const hx_dynamics_data *dd, const double *ydot,
+                         int k, double out[6])
+{
+    hx_reactions_balance(d, dd, ydot, k, out);
+    const hx_body_dof *dof = &d->dof[d->m->markers[d->m->joints[k].i_marker].body];
+    /* along the axis: a coupler's or a motion's, not the joint's */
+    double *along = dof->kind == HX_DOF_REVOLUTE ? out + 3 : out;
+    v3_axpy(along, -v3_dot(along, dof->axis), dof->axis);
 }
 
 void hx_reactions_joint(const hx_dynamics *d, const hx_dynamics_data *dd, const double *ydot,

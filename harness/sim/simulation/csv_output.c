@@ -2,6 +2,7 @@
 #include <stdlib.h>
 
 #include "sim/dynamics/accelerations.h"
+#include "sim/dynamics/constraint_forces.h"
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/reactions.h"
@@ -114,7 +115,8 @@ int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
     const hx_model *m = d->m;
     double *ydot = malloc(sizeof(double) * ((size_t)d->n + 6 * (size_t)m->njoints +
                                             6 * (size_t)m->nbodies + 12 * (size_t)m->nloads +
-                                            12 * (size_t)m->nforces));
+                                            12 * (size_t)m->nforces +
+                                            hx_constraint_forces_size(d)));
     if (ydot == NULL || hx_dynamics_rhs(d, dd, t, y, ydot) != 0) {
         free(ydot);
         return -1;
@@ -129,9 +131,13 @@ int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
         free(ydot);
         return hx_dynamics_fail(dd, "%s", msg.text);
     }
-    double *forces = loads + 12 * m->nloads;
+    double *forces = loads + 12 * m->nloads, *constraints = forces + 12 * m->nforces;
     hx_requests_forces(d, dd, forces);
-    const hx_expr_outputs s = {reactions, accelerations, loads, forces};
+    if (m->nrequests > 0 && hx_constraint_forces_all(d, dd, t, y, ydot, constraints) != 0) {
+        free(ydot);
+        return -1;
+    }
+    const hx_expr_outputs s = {reactions, accelerations, loads, forces, constraints};
     const int status = row(f, d, dd, t, y, energy, energy0, &s);
     free(ydot);
     return status;
