@@ -166,9 +166,9 @@ static void join_names(char *text, size_t size, const char *names)
  * changes, the equilibrium again with the new set from there, as the
  * set-up's assembly does (up to HX_REDUNDANCY_PASSES times); the rows changed
  * named in the result. An equilibrium that does not converge is looked at
- * too: one where rows become redundant (the pivots of a four-bar collinear)
- * stalls with them active, their multipliers a near-singular solve. The
- * energy balance is counted from there. */
+ * too: one leaving a pose where a row was redundant finds no step that keeps
+ * it removed (docs/architecture.md, the constraint system). The energy
+ * balance is counted from there. */
 static int find_equilibrium(run_context *rc, double t, double *y)
 {
     hx_simulation_result *result = rc->result;
