@@ -42,7 +42,7 @@ static int bind_query(hx_model *m, hx_binding *b, int k, hx_message *msg)
     if (count == 0)
         return 0;
     const char *routine = hx_binding_routine(b, 0);
-    char asked[40], text[48], element[64];
+    char asked[40], text[64], element[64];
     hx_query_text(q, asked, sizeof asked);
     /* a request's REQSUB runs at output times, outside any right-hand side */
     if (b->kind != HX_BIND_FORCE && b->kind != HX_BIND_VARIABLE && b->kind != HX_BIND_DIFF)
