@@ -156,9 +156,16 @@ static void switch_segment(const run_context *rc, const hx_segment *g)
 /* names appended to text (size) after ", " when both have some. */
 static void join_names(char *text, size_t size, const char *names)
 {
-    const size_t used = strlen(text);
-    if (names[0] != '\0' && used < size)
-        snprintf(text + used, size - used, "%s%s", used > 0 ? ", " : "", names);
+    size_t used = strlen(text);
+    if (names[0] == '\0')
+        return;
+    /* copied by hand: as snprintf would, cut at size, which some builds' -Wformat-truncation
+     * refuses to see as meant */
+    for (const char *p = used > 0 ? ", " : ""; *p != '\0' && used + 1 < size; ++p)
+        text[used++] = *p;
+    for (const char *p = names; *p != '\0' && used + 1 < size; ++p)
+        text[used++] = *p;
+    text[used] = '\0';
 }
 
 /* y moved to the static equilibrium at t (equilibrium.h) and the redundant
