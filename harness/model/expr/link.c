@@ -1,8 +1,7 @@
 /*
  * A program's ids resolved against a model (expr.h): markers, variables,
  * Control_Diffs, arrays, splines and curves by id to their indices, each id
- * the model does not define named with its place in the text; a function
- * the harness does not answer yet is refused here, and so are a constraint
+ * the model does not define named with its place in the text; a constraint
  * element's force, a marker's acceleration, a force element's force and the
  * forces at a marker anywhere but in an output expression or, for a joint's
  * reaction, an acceleration and an SFORCE by expressions, one linked as a
@@ -253,11 +252,6 @@ static int link_program(hx_expr_program *p, const hx_model *m, int where, hx_mes
         const hx_expr_op *op = &p->ops[k];
         const hx_expr_place *at = &p->places[k];
         const hx_expr_function *f = hx_expr_function_at(op->function);
-        if (op->code == HX_OP_UNANSWERED) {
-            fail_at(p, msg, at->line, at->column, "%s is not answered by the harness yet: %s",
-                    f->name, f->why);
-            return HX_EXPR_UNANSWERED;
-        }
         if (op->code != HX_OP_SPLINE && op->code != HX_OP_CURVE)
             continue;
         hx_expr_model_call *c = &p->calls[op->a];
