@@ -114,10 +114,11 @@ int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg);
  * algebraic loop, or depend on the order of evaluation). */
 int hx_expr_link_output(hx_expr_program *p, const hx_model *m, hx_message *msg);
 /* The same for a force's, a variable's or a Control_Diff's expression,
- * evaluated within a right-hand side: the accelerations (ACCX .. WDTM), the
- * reactions (JOINT, JPRIM) and the SFORCE forces it reads are the inputs of
- * an algebraic loop the dynamics solves (sim/dynamics/algebraic_loop.h), each
- * given its slot by hx_expr_set_loop once the model is read. */
+ * evaluated within a right-hand side: the accelerations, the constraint
+ * elements' and force elements' forces and the forces at markers it reads
+ * (all hx_expr_link_output takes) are the inputs of an algebraic loop the
+ * dynamics solves (sim/dynamics/algebraic_loop.h), each given its slot by
+ * hx_expr_set_loop once the model is read. */
 int hx_expr_link_loop(hx_expr_program *p, const hx_model *m, hx_message *msg);
 /* Input k's slot among the model's loop inputs (model/loop_inputs.c). */
 void hx_expr_set_loop(hx_expr_program *p, int k, int slot);

@@ -119,8 +119,13 @@ static int gcon_force(const hx_dynamics *d, hx_dynamics_data *dd, double t, cons
     return 0;
 }
 
+size_t hx_constraint_forces_work_size(const hx_dynamics *d)
+{
+    return d->m->ngcons == 0 ? 0 : hx_expression_rows_work_size(d) + (size_t)d->row_values;
+}
+
 int hx_constraint_forces_all(const hx_dynamics *d, hx_dynamics_data *dd, double t,
-                             const double *y, const double *ydot, double *out)
+                             const double *y, const double *ydot, double *work, double *out)
 {
     const hx_model *m = d->m;
     memset(out, 0, hx_constraint_forces_size(d) * sizeof(double));
@@ -147,14 +152,14 @@ int hx_constraint_forces_all(const hx_dynamics *d, hx_dynamics_data *dd, double 
     }
     if (m->ngcons == 0)
         return 0;
-    double *work = malloc(sizeof(double) * (hx_expression_rows_work_size(d) +
-                                            (size_t)d->row_values));
-    if (work == NULL)
+    double *own = work == NULL ? malloc(sizeof(double) * hx_constraint_forces_work_size(d))
+                               : NULL;
+    if (work == NULL && (work = own) == NULL)
         return hx_dynamics_fail(dd, "GCON: out of memory");
     int status = 0;
     for (int k = 0; k < m->ngcons && status == 0; ++k)
         status = gcon_force(d, dd, t, y, k, work + d->row_values, work,
                             out + 12 * hx_marker_forces_slot(m, HX_FN_GCON, k, 0));
-    free(work);
+    free(own);
     return status;
 }
