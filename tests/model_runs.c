@@ -223,8 +223,7 @@ void evaluate_path(evaluated *e, const char *path)
     hx_element_outputs_forces(&e->m.d, &e->m.data, e->forces);
     e->constraints = calloc(hx_constraint_forces_size(&e->m.d) + 1, sizeof(double));
     assert_non_null(e->constraints);
-    if (hx_constraint_forces_all(&e->m.d, &e->m.data, 0.0, e->y, e->ydot, NULL,
-                                 e->constraints) != 0)
+    if (hx_constraint_forces_all(&e->m.d, &e->m.data, 0.0, e->y, e->ydot, e->constraints) != 0)
         fail_msg("%s", e->m.data.message);
     e->outputs.reactions = e->r, e->outputs.accelerations = e->a;
     e->outputs.loads = e->loads, e->outputs.forces = e->forces;

@@ -66,7 +66,7 @@ static int constraint_element(hx_expr_input *in, const hx_model *m, char *what, 
         }
         joint = k >= 0 ? m->couplers[k].joint[in->ids[1] / 2] : -1;
         break;
-    default: /* HX_FN_GCON: its force on its I marker's body, a free body's */
+    default: /* HX_FN_GCON: its force on its I marker's body, a moving body's */
         for (int g = 0; g < m->ngcons && k < 0; ++g)
             if (m->gcons[g].id == id)
                 k = g;
@@ -75,12 +75,11 @@ static int constraint_element(hx_expr_input *in, const hx_model *m, char *what, 
             return -1;
         in->index[0] = k, in->index[1] = m->gcons[k].i_marker, in->index[2] = -1;
         const int body = in->index[1] < 0 ? -1 : m->markers[in->index[1]].body;
-        if (body < 0 || m->bodies[body].is_ground || m->bodies[body].joint >= 0) {
+        if (body < 0 || m->bodies[body].is_ground) {
             snprintf(what, size, "Constraint_General %d (line %d) %s: its force is read on its"
-                     " I marker's body, a free body (docs/interface.md §7.16)", id,
+                     " I marker's body, a moving body (docs/interface.md §7.16)", id,
                      m->gcons[k].line, body < 0 ? "names no I marker"
-                     : m->bodies[body].is_ground ? "has its I marker on ground"
-                     : "has its I marker on a body moving in one joint's coordinate");
+                     : "has its I marker on ground");
             return -1;
         }
         return 0;

@@ -28,11 +28,10 @@ size_t hx_algebraic_loop_work_size(const hx_dynamics *d)
     if (nz == 0)
         return 0;
     /* z, g(z), g moved, the step; I - dg/dz and its copy the solve takes; the
-     * outputs g reads z back from, the general constraints' work and the
-     * driven bodies' free accelerations */
+     * outputs g reads z back from and the driven bodies' free accelerations */
     return 4 * nz + 2 * nz * nz + 6 * (size_t)m->nbodies + 6 * (size_t)m->njoints +
            12 * (size_t)m->nloads + 12 * (size_t)m->nforces + hx_constraint_forces_size(d) +
-           hx_constraint_forces_work_size(d) + (size_t)m->nbodies;
+           (size_t)m->nbodies;
 }
 
 /* Which outputs the loop's inputs read beyond the accelerations: every one
@@ -103,8 +102,7 @@ static int loop_values(const hx_dynamics *d, hx_dynamics_data *dd, double t, con
     if (r.all || r.users)
         hx_element_outputs_forces(d, dd, forces);
     if ((r.all || r.constraints) &&
-        hx_constraint_forces_all(d, dd, t, y, ydot, constraints + hx_constraint_forces_size(d),
-                                 constraints) != 0)
+        hx_constraint_forces_all(d, dd, t, y, ydot, constraints) != 0)
         return -1;
     const hx_expr_outputs outputs = {reactions, accelerations, loads, forces, constraints};
     const hx_expr_context c = {&dd->frames, dd->frames.variables, &outputs};
@@ -142,8 +140,7 @@ static int loop_g(const hx_dynamics *d, hx_dynamics_data *dd, double t, const do
         return -1;
     double *accelerations = dd->loop_work + 4 * nz + 2 * nz * nz;
     double *free_udot = accelerations + 6 * m->nbodies + 6 * m->njoints + 12 * m->nloads +
-                        12 * m->nforces + hx_constraint_forces_size(d) +
-                        hx_constraint_forces_work_size(d);
+                        12 * m->nforces + hx_constraint_forces_size(d);
     if (driven(d, dd, ydot, free_udot, 0) != 0)
         return -1;
     const int status = loop_values(d, dd, t, y, ydot, accelerations, gz);

@@ -15,17 +15,12 @@
  * (expr/marker_forces.h's hx_marker_forces_slots). */
 size_t hx_constraint_forces_size(const hx_dynamics *d);
 
-/* The doubles of work hx_constraint_forces_all takes (the general
- * constraints' rows; 0 without any). */
-size_t hx_constraint_forces_work_size(const hx_dynamics *d);
-
 /* Every slot's twelve values (on I's body at I's origin, then on J's body at
  * J's origin, world axes; zeros in a slot no element has) into out, from
  * dd's evaluation at (t, y): ydot = hx_dynamics_rhs(d, dd, t, y, ydot) just
- * before (or the algebraic loop's stages). work: the size above, or NULL
- * (allocated here: an output time's). 0, or -1 (dd->message) when a
+ * before (or the algebraic loop's stages). 0, or -1 (dd->message) when a
  * coupler's routine fails. */
 int hx_constraint_forces_all(const hx_dynamics *d, hx_dynamics_data *dd, double t,
-                             const double *y, const double *ydot, double *work, double *out);
+                             const double *y, const double *ydot, double *out);
 
 #endif

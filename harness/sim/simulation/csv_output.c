@@ -134,7 +134,7 @@ int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
     }
     double *forces = loads + 12 * m->nloads, *constraints = forces + 12 * m->nforces;
     hx_element_outputs_forces(d, dd, forces);
-    if (m->nrequests > 0 && hx_constraint_forces_all(d, dd, t, y, ydot, NULL, constraints) != 0) {
+    if (m->nrequests > 0 && hx_constraint_forces_all(d, dd, t, y, ydot, constraints) != 0) {
         free(ydot);
         return -1;
     }
