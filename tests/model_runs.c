@@ -11,6 +11,7 @@
 #include "sim/dynamics/constraint_forces.h"
 #include "sim/dynamics/reactions.h"
 #include "sim/jacobian/jacobian.h"
+#include "sim/dynamics/element_outputs.h"
 #include "sim/simulation/requests.h"
 #include "sim_support.h"
 #include "test_support.h"
@@ -217,9 +218,9 @@ void evaluate_path(evaluated *e, const char *path)
     hx_reactions_all(&e->m.d, &e->m.data, e->ydot, e->r);
     hx_accelerations_bodies(&e->m.d, &e->m.data, e->ydot, e->a);
     hx_message msg;
-    if (hx_requests_loads(&e->m.d, &e->m.data, e->loads, &msg) != 0)
+    if (hx_element_outputs_loads(&e->m.d, &e->m.data, e->loads, &msg) != 0)
         fail_msg("%s", msg.text);
-    hx_requests_forces(&e->m.d, &e->m.data, e->forces);
+    hx_element_outputs_forces(&e->m.d, &e->m.data, e->forces);
     e->constraints = calloc(hx_constraint_forces_size(&e->m.d) + 1, sizeof(double));
     assert_non_null(e->constraints);
     if (hx_constraint_forces_all(&e->m.d, &e->m.data, 0.0, e->y, e->ydot, e->constraints) != 0)

@@ -21,6 +21,7 @@
 #include "model/marker_elements.h"
 #include "model/expr/functions.h"
 #include "model_runs.h"
+#include "sim/dynamics/element_outputs.h"
 #include "sim/simulation/requests.h"
 #include "sim_support.h"
 #include "test_support.h"
@@ -283,7 +284,7 @@ static void user_routines_forces(void **state)
     const double load[6] = {1, 2, 3, 4, 5, 6};
     memcpy(e.m.data.element_load + 6 * field, load, sizeof load);
     memcpy(e.m.data.element_load + 6 * vector, load, sizeof load);
-    hx_requests_forces(&e.m.d, &e.m.data, e.forces);
+    hx_element_outputs_forces(&e.m.d, &e.m.data, e.forces);
     EXPECT(&e, "FIELD(2, 1, 2, 0)", -1.0, tol);
     EXPECT(&e, "FIELD(2, 1, 6, 0)", 3.0, tol);
     EXPECT(&e, "FIELD(2, 1, 7, 0)", -2.5, tol);
@@ -293,18 +294,19 @@ static void user_routines_forces(void **state)
     release(&e);
 }
 
-/* Refused where they are written: in a force or variable (an algebraic loop,
- * or the order of evaluation), an id the model does not define, a marker
- * where an element acts whose force the harness does not sum. */
+/* Refused where they are written: in a general constraint (an algebraic loop
+ * the harness does not solve there), an id the model does not define, a
+ * marker where an element acts whose force the harness does not sum. */
 static void refusals(void **state)
 {
     (void)state;
     static const char *const cases[][3] = {
-        {"SFORCE/9, TRANSLATION, I=20, J=10, FUNCTION=2*FX(20)",
-         "bad.adm:8:47:", "FX(20): the forces at a marker are known only once the accelerations"},
-        {"VARIABLE/1, FUNCTION=1+VFORCE(2,0,2,0)",
-         "bad.adm:8:24:", "VFORCE(2,0,2,0): another element's force: a force, variable or"
-         " Control_Diff rate reads an SFORCE by an expression's force alone"},
+        {"GCON/1, I=20, FUNCTION=2*FX(20)",
+         "bad.adm:8:26:", "FX(20): the forces at a marker are known only once the accelerations"
+         " are: here they would close an algebraic loop"},
+        {"GCON/1, I=20, FUNCTION=1+VFORCE(2,0,2,0)",
+         "bad.adm:8:26:", "VFORCE(2,0,2,0): another element's force: here it would close an"
+         " algebraic loop"},
         {"REQUEST/1, F2=VFORCE(9,0,2,0)",
          "bad.adm:8:15:", "VFORCE(9,0,2,0): no Force_Vector_TwoBody or Force_Vector_OneBody"
          " (VFORCE, VTORQUE, GFORCE) 9 in the model"},

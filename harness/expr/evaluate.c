@@ -85,12 +85,6 @@ int hx_expr_eval(const hx_expr_program *p, const hx_expr_context *c, double *val
             break;
         }
         case HX_OP_JUMP: pc = op->a; continue;
-        default: { /* HX_OP_UNANSWERED: refused when linked; kept refused here */
-            const hx_expr_function *f = hx_expr_function_at(op->function);
-            fault->kind = HX_EXPR_FAULT_UNANSWERED, fault->function = f->name;
-            fault->what = "not answered by the harness yet", fault->has_argument = 0;
-            return hx_expr_operand_fault(p, c, pc, fault);
-        }
         }
         ++pc;
     }

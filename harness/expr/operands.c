@@ -208,6 +208,10 @@ int hx_expr_operand_input(const hx_expr_program *p, const hx_expr_context *c, in
             return -1;
         break;
     case HX_EXPR_INPUT_MARKER_FORCE:
+        if (c->outputs == NULL && in->loop >= 0) {
+            *value = fr->loop[in->loop]; /* as above */
+            break;
+        }
         if (marker_force(c, in, value, fault) != 0)
             return -1;
         break;

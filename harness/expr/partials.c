@@ -61,15 +61,6 @@ static int partial_fault(const hx_expr_program *p, const hx_expr_context *c, int
     return hx_expr_operand_fault(p, c, pc, fault);
 }
 
-static int unanswered(const hx_expr_program *p, const hx_expr_context *c, int pc,
-                      hx_expr_fault *fault)
-{
-    fault->kind = HX_EXPR_FAULT_UNANSWERED;
-    fault->function = hx_expr_function_at(p->ops[pc].function)->name;
-    fault->what = "not answered by the harness yet", fault->has_argument = 0;
-    return hx_expr_operand_fault(p, c, pc, fault);
-}
-
 /* The partials summed over an input's uses may overflow where each term is
  * finite: 0, or -1 with the fault at the input's first place. */
 static int partials_finite(const hx_expr_program *p, const hx_expr_context *c,
@@ -159,7 +150,6 @@ int hx_expr_eval_partials(const hx_expr_program *p, const hx_expr_context *c, do
             continue;
         }
         case HX_OP_JUMP: pc = op->a; continue;
-        case HX_OP_UNANSWERED: return unanswered(p, c, pc, fault);
         case HX_OP_CONST:
             stack[sp] = p->constants[op->a], varies[sp] = 0;
             t.input[entries] = -1, t.count[entries] = 0;
@@ -249,7 +239,6 @@ int hx_expr_eval_partials_forward(const hx_expr_program *p, const hx_expr_contex
             continue;
         }
         case HX_OP_JUMP: pc = op->a; continue;
-        case HX_OP_UNANSWERED: return unanswered(p, c, pc, fault);
         case HX_OP_CONST: stack[sp] = p->constants[op->a], varies[sp++] = 0; break;
         case HX_OP_INPUT: {
             if (!(have >> op->a & 1u)) {

@@ -125,7 +125,7 @@ static int link_one(hx_draft *d, const hx_load *l, hx_expr_program *p, const cha
         if (in[k].kind == HX_EXPR_INPUT_DIF)
             continue; /* a Control_Diff's state, set before the forces (§7.10) */
         if (in[k].kind == HX_EXPR_INPUT_ACCELERATION || in[k].kind == HX_EXPR_INPUT_REACTION ||
-            in[k].kind == HX_EXPR_INPUT_LOAD)
+            in[k].kind == HX_EXPR_INPUT_LOAD || in[k].kind == HX_EXPR_INPUT_MARKER_FORCE)
             continue; /* an algebraic loop's input (model/loop_inputs.h) */
         if (in[k].kind != HX_EXPR_INPUT_MEASURE) {
             /* a rate (DIF1) is computed after the forces; an IC array is refused as

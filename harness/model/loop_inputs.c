@@ -8,7 +8,7 @@
 static int is_loop_input(const hx_expr_input *in)
 {
     return in->kind == HX_EXPR_INPUT_ACCELERATION || in->kind == HX_EXPR_INPUT_REACTION ||
-           in->kind == HX_EXPR_INPUT_LOAD;
+           in->kind == HX_EXPR_INPUT_LOAD || in->kind == HX_EXPR_INPUT_MARKER_FORCE;
 }
 
 static int same(const hx_expr_input *a, const hx_expr_input *b)

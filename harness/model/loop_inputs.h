@@ -1,7 +1,9 @@
 /*
  * The inputs of a model's algebraic loop (docs/interface.md §8.8): each
- * distinct acceleration (ACCX .. WDTM), joint reaction (JOINT, JPRIM) or
- * SFORCE force that a force, a variable or a Control_Diff rate reads. They
+ * distinct acceleration (ACCX .. WDTM), constraint element's force (JOINT,
+ * JPRIM, MOTION, COUPLER, GCON), force element's force (SFORCE .. FIELD) or
+ * force at a marker (FX .. TM) that a force, a variable or a Control_Diff
+ * rate reads. They
  * are known only once the forces and the accelerations are, which they feed:
  * the dynamics solves for their values at each right-hand side
  * (sim/dynamics/algebraic_loop.h). Found once, after every program is

@@ -71,10 +71,10 @@ int hx_marker_unsummed(const hx_model *m, int i, int j, char *what, size_t size)
             return 1;
         }
     }
-    /* a general constraint's force is read on a free body alone (model/expr/link.c) */
+    /* a general constraint's force is read on a moving body alone (model/expr/link.c) */
     for (int k = 0; k < m->ngcons && j < 0; ++k) {
         const int body = m->gcons[k].i_marker == i ? m->markers[i].body : -1;
-        if (body >= 0 && (m->bodies[body].is_ground || m->bodies[body].joint >= 0)) {
+        if (body >= 0 && m->bodies[body].is_ground) {
             snprintf(what, size, "Constraint_General %d (line %d)", m->gcons[k].id,
                      m->gcons[k].line);
             return 1;

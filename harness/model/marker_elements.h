@@ -27,8 +27,7 @@ int hx_marker_element_find(const hx_model *m, int function, int id, int *force, 
 
 /* The first element acting at marker i between i and j (j < 0: any) whose
  * force the harness does not sum at a marker: a Force_StateEqn, or a
- * Constraint_General whose I marker is i on ground or on a body moving in
- * one joint's coordinate (j < 0 only). 1 with "Force_StateEqn 3 (line 12)"
+ * Constraint_General whose I marker is i on ground (j < 0 only). 1 with "Force_StateEqn 3 (line 12)"
  * in what, else 0. */
 int hx_marker_unsummed(const hx_model *m, int i, int j, char *what, size_t size);
 

@@ -190,24 +190,10 @@ int hx_draft_resolve_requests(hx_draft *d)
         }
         for (int j = 0; j < 8; ++j) {
             hx_message why;
-            const int linked = q->f[j] != NULL ? hx_expr_link_output(q->f[j], m, &why) : 0;
-            if (linked == 0)
-                continue;
-            if (linked != HX_EXPR_UNANSWERED) {
+            if (q->f[j] != NULL && hx_expr_link_output(q->f[j], m, &why) != 0) {
                 fail_at_place(d, q, j, &why);
                 return -1;
             }
-            /* output only, and the function is one the harness will answer: the
-             * model is still read (a published dataset's ORIENT request) */
-            char name[16];
-            component_name(q, j, name, sizeof name);
-            hx_draft_warn(d, q->line, "%s is not written: %s: %s", q->label, name, why.text);
-            for (int i = 0; i < 8; ++i)
-                hx_expr_free(q->f[i]);
-            memmove(q, q + 1, sizeof *q * (size_t)(m->nrequests - k - 1));
-            --m->nrequests;
-            --k;
-            break;
         }
     }
     return 0;

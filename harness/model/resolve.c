@@ -425,8 +425,11 @@ int hx_draft_resolve(hx_draft *r)
             return -1;
     if (build_marker_index(r) != 0 || resolve_bodies(r) != 0 || resolve_joints(r) != 0 ||
         resolve_couplers(r) != 0 || resolve_forces(r) != 0 || hx_draft_resolve_stateeqns(r) != 0 ||
+        /* the general constraints' I markers before the programs that read GCON or
+         * FX .. TM (model/expr/link.c) */
+        hx_draft_link_gcons(r) != 0 ||
         hx_draft_resolve_routines(r) != 0 || hx_draft_link_variables(r) != 0 ||
-        hx_draft_link_loads(r) != 0 || hx_draft_link_gcons(r) != 0 ||
+        hx_draft_link_loads(r) != 0 ||
         hx_draft_find_loop_inputs(r) != 0 ||
         hx_draft_resolve_requests(r) != 0) /* last: FX .. TM ask what acts at a marker */
         return -1;

@@ -208,9 +208,8 @@ static int node(emitter *e, int k)
             return -1;
         return emit(e, n, n->kind == HX_NODE_SPLINE ? HX_OP_SPLINE : HX_OP_CURVE, n->count, 1,
                     n->function, index) < 0 ? -1 : 0;
-    default: /* HX_NODE_UNANSWERED */
-        return emit(e, n, HX_OP_UNANSWERED, 0, 1, n->function, 0) < 0 ? -1 : 0;
     }
+    return -1; /* every kind returns above */
 }
 
 hx_expr_program *hx_expr_parse(const char *text, size_t length, const hx_expr_source *where,

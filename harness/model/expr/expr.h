@@ -80,7 +80,6 @@ typedef enum hx_expr_fault_kind {
     HX_EXPR_FAULT_NOT_FINITE,      /* a result that is not finite (overflow) */
     HX_EXPR_FAULT_INPUT,           /* an input that is not finite, or not given */
     HX_EXPR_FAULT_PARTIAL,         /* a partial derivative that is not finite */
-    HX_EXPR_FAULT_UNANSWERED,      /* a function the harness does not answer yet */
     HX_EXPR_FAULT_NOT_LINKED       /* evaluated before hx_expr_link, or with another model */
 } hx_expr_fault_kind;
 
@@ -104,10 +103,8 @@ hx_expr_program *hx_expr_parse(const char *text, size_t length, const hx_expr_so
 
 /* Resolves the program's ids against model m (marker, variable, Control_Diff,
  * array, spline and curve ids to indices). Returns 0; -1 with
- * "file:line:column: what" naming the id that m does not define; or
- * HX_EXPR_UNANSWERED with the same naming a function the harness parses
- * but does not answer yet. The program then evaluates with frames of m only. */
-#define HX_EXPR_UNANSWERED (-2)
+ * "file:line:column: what" naming the id that m does not define. The
+ * program then evaluates with frames of m only. */
 int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg);
 /* The same for an expression evaluated at output times only, after the
  * accelerations (a request's): it may read the joints' reactions (JOINT,
@@ -117,10 +114,11 @@ int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg);
  * algebraic loop, or depend on the order of evaluation). */
 int hx_expr_link_output(hx_expr_program *p, const hx_model *m, hx_message *msg);
 /* The same for a force's, a variable's or a Control_Diff's expression,
- * evaluated within a right-hand side: the accelerations (ACCX .. WDTM), the
- * reactions (JOINT, JPRIM) and the SFORCE forces it reads are the inputs of
- * an algebraic loop the dynamics solves (sim/dynamics/algebraic_loop.h), each
- * given its slot by hx_expr_set_loop once the model is read. */
+ * evaluated within a right-hand side: the accelerations, the constraint
+ * elements' and force elements' forces and the forces at markers it reads
+ * (all hx_expr_link_output takes) are the inputs of an algebraic loop the
+ * dynamics solves (sim/dynamics/algebraic_loop.h), each given its slot by
+ * hx_expr_set_loop once the model is read. */
 int hx_expr_link_loop(hx_expr_program *p, const hx_model *m, hx_message *msg);
 /* Input k's slot among the model's loop inputs (model/loop_inputs.c). */
 void hx_expr_set_loop(hx_expr_program *p, int k, int slot);

@@ -56,9 +56,8 @@ typedef enum hx_expr_function_kind {
     HX_FK_ACCELERATION, /* a marker's acceleration (ACCX .. WDTM): output expressions only */
     HX_FK_LOAD,       /* an element's force (SFORCE, VFORCE, VTORQ, GFORCE, BUSHING, FIELD:
                        * id, jflag, comp, rm): output expressions only */
-    HX_FK_MARKER_FORCE, /* the net force or torque at a marker (FX .. TM: I[, J[, K]]): output
+    HX_FK_MARKER_FORCE  /* the net force or torque at a marker (FX .. TM: I[, J[, K]]): output
                        * expressions only */
-    HX_FK_UNANSWERED  /* parsed, not answered yet (no function of the table today) */
 } hx_expr_function_kind;
 
 typedef struct hx_expr_function {
@@ -68,7 +67,6 @@ typedef struct hx_expr_function {
     unsigned ids;              /* bit k: argument k is an id or a whole-number option,
                                 * written as a whole number, not an expression */
     const char *arguments;     /* its arguments for messages: "(x, x0, h0, x1, h1)" */
-    const char *why;           /* HX_FK_UNANSWERED: why the harness does not answer it */
 } hx_expr_function;
 
 /* The function with this code. */

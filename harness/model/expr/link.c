@@ -1,12 +1,11 @@
 /*
  * A program's ids resolved against a model (expr.h): markers, variables,
  * Control_Diffs, arrays, splines and curves by id to their indices, each id
- * the model does not define named with its place in the text; a function
- * the harness does not answer yet is refused here, and so are a constraint
+ * the model does not define named with its place in the text; a constraint
  * element's force, a marker's acceleration, a force element's force and the
- * forces at a marker anywhere but in an output expression or, for a joint's
- * reaction, an acceleration and an SFORCE by expressions, one linked as a
- * loop's (a force's, a variable's, a Control_Diff's: hx_expr_link_loop).
+ * forces at a marker are refused anywhere but in an output expression or one
+ * linked as a loop's (a force's, a variable's, a Control_Diff's:
+ * hx_expr_link_loop).
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -67,7 +66,7 @@ static int constraint_element(hx_expr_input *in, const hx_model *m, char *what, 
         }
         joint = k >= 0 ? m->couplers[k].joint[in->ids[1] / 2] : -1;
         break;
-    default: /* HX_FN_GCON: its force on its I marker's body, a free body's */
+    default: /* HX_FN_GCON: its force on its I marker's body, a moving body's */
         for (int g = 0; g < m->ngcons && k < 0; ++g)
             if (m->gcons[g].id == id)
                 k = g;
@@ -76,12 +75,11 @@ static int constraint_element(hx_expr_input *in, const hx_model *m, char *what, 
             return -1;
         in->index[0] = k, in->index[1] = m->gcons[k].i_marker, in->index[2] = -1;
         const int body = in->index[1] < 0 ? -1 : m->markers[in->index[1]].body;
-        if (body < 0 || m->bodies[body].is_ground || m->bodies[body].joint >= 0) {
+        if (body < 0 || m->bodies[body].is_ground) {
             snprintf(what, size, "Constraint_General %d (line %d) %s: its force is read on its"
-                     " I marker's body, a free body (docs/interface.md §7.16)", id,
+                     " I marker's body, a moving body (docs/interface.md §7.16)", id,
                      m->gcons[k].line, body < 0 ? "names no I marker"
-                     : m->bodies[body].is_ground ? "has its I marker on ground"
-                     : "has its I marker on a body moving in one joint's coordinate");
+                     : "has its I marker on ground");
             return -1;
         }
         return 0;
@@ -98,17 +96,11 @@ static int constraint_element(hx_expr_input *in, const hx_model *m, char *what, 
 static int link_reaction(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
                          const char *text, int where, hx_message *msg)
 {
-    const int joint = in->function == HX_FN_JOINT || in->function == HX_FN_JPRIM;
     if (where == LINK_STATE)
         return fail_at(p, msg, in->line, in->column, "%s: a constraint element's force is known"
                        " only once the accelerations are: here it would close an algebraic"
                        " loop, which the harness solves for forces, variables and Control_Diff"
                        " rates only (REQUEST and Post_Request expressions may read it)", text);
-    if (where == LINK_LOOP && !joint)
-        return fail_at(p, msg, in->line, in->column, "%s: a motion's, coupler's or general"
-                       " constraint's force: a force, variable or Control_Diff rate reads a"
-                       " joint's reaction (JOINT, JPRIM) in the algebraic loop, not these"
-                       " (REQUEST and Post_Request expressions may read them)", text);
     char what[256];
     if (constraint_element(in, m, what, sizeof what) != 0)
         return fail_at(p, msg, in->line, in->column, "%s: %s", text, what);
@@ -135,11 +127,6 @@ static int link_load(hx_expr_program *p, hx_expr_input *in, const hx_model *m, c
                                sizeof what) != 0)
         return fail_at(p, msg, in->line, in->column, "%s: no %s", text, what);
     in->index[1] = force;
-    if (where == LINK_LOOP && (in->function != HX_FN_SFORCE || force))
-        return fail_at(p, msg, in->line, in->column, "%s: another element's force: a force,"
-                       " variable or Control_Diff rate reads an SFORCE by an expression's force"
-                       " alone (the algebraic loop), not a user routine's or another element's"
-                       " (REQUEST and Post_Request expressions may read it)", text);
     in->index[3] = in->ids[3] == 0 ? -1 : hx_model_marker(m, in->ids[3]);
     if (in->ids[3] != 0 && in->index[3] < 0)
         return fail_at(p, msg, in->line, in->column, "%s: rm (argument 4): no Reference_Marker"
@@ -152,12 +139,11 @@ static int link_load(hx_expr_program *p, hx_expr_input *in, const hx_model *m, c
 static int link_marker_force(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
                              const char *text, int where, hx_message *msg)
 {
-    if (where != LINK_OUTPUT)
+    if (where == LINK_STATE)
         return fail_at(p, msg, in->line, in->column, "%s: the forces at a marker are known only"
-                       " once the accelerations are, after the forces and variables: a force or"
-                       " variable that reads them closes an algebraic loop, which the harness"
-                       " solves for accelerations, joint reactions and SFORCE forces only"
-                       " (REQUEST and Post_Request expressions may read them)", text);
+                       " once the accelerations are: here they would close an algebraic loop,"
+                       " which the harness solves for forces, variables and Control_Diff rates"
+                       " only (REQUEST and Post_Request expressions may read them)", text);
     for (int k = 0; k < 3; ++k) {
         in->index[k] = in->ids[k] == 0 ? -1 : hx_model_marker(m, in->ids[k]);
         if (in->ids[k] != 0 && in->index[k] < 0)
@@ -253,11 +239,6 @@ static int link_program(hx_expr_program *p, const hx_model *m, int where, hx_mes
         const hx_expr_op *op = &p->ops[k];
         const hx_expr_place *at = &p->places[k];
         const hx_expr_function *f = hx_expr_function_at(op->function);
-        if (op->code == HX_OP_UNANSWERED) {
-            fail_at(p, msg, at->line, at->column, "%s is not answered by the harness yet: %s",
-                    f->name, f->why);
-            return HX_EXPR_UNANSWERED;
-        }
         if (op->code != HX_OP_SPLINE && op->code != HX_OP_CURVE)
             continue;
         hx_expr_model_call *c = &p->calls[op->a];

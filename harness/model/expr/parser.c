@@ -344,13 +344,10 @@ static int known_call(parser *p, int code, const hx_expr_token *name)
         memcpy(p->tree->nodes[k].ids, ids, 4 * sizeof(int));
         p->tree->nodes[k].nids = count;
         return k;
-    default: /* HX_FK_UNANSWERED: its ids are its own (element ids, flags) */
-        if ((k = add_node(p, HX_NODE_UNANSWERED, code, line, column)) < 0)
-            return -1;
-        memcpy(p->tree->nodes[k].ids, ids, 4 * sizeof(int));
-        p->tree->nodes[k].nids = count;
-        return k;
+    case HX_FK_IF: /* if_call, above */
+        break;
     }
+    return -1;
 }
 
 /* A name: a constant, TIME, or a call. */

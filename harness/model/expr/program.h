@@ -24,8 +24,7 @@ typedef enum hx_expr_opcode {
     HX_OP_SPLINE,     /* pop x and z, push AKISPL or CUBSPL of calls[a] */
     HX_OP_CURVE,      /* pop alpha, push CURVE of calls[a] */
     HX_OP_IF,         /* pop c: c < 0 goes on, c == 0 jumps to a, c > 0 jumps to b */
-    HX_OP_JUMP,       /* go to a */
-    HX_OP_UNANSWERED  /* push: a function the harness does not answer yet (a fault) */
+    HX_OP_JUMP        /* go to a */
 } hx_expr_opcode;
 
 typedef struct hx_expr_op {

@@ -15,8 +15,7 @@ typedef enum hx_expr_node_kind {
     HX_NODE_IF,         /* IF of its four children */
     HX_NODE_INPUT,      /* a measure, VARVAL, DIF, DIF1 or ARYVAL of ids */
     HX_NODE_SPLINE,     /* AKISPL or CUBSPL of children x, z; ids: the spline, iord */
-    HX_NODE_CURVE,      /* CURVE of child alpha; ids: iord, comp, the curve */
-    HX_NODE_UNANSWERED  /* a function the harness does not answer yet */
+    HX_NODE_CURVE       /* CURVE of child alpha; ids: iord, comp, the curve */
 } hx_expr_node_kind;
 
 typedef struct hx_expr_node {

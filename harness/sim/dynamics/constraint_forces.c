@@ -10,21 +10,19 @@
  * (expr/marker_forces.h), as a joint's reaction's. A coupler's share on its
  * joint n is the generalized force dphi/da_n lambda along a_n's G. A
  * motion on a reduced joint has no row: its share of the body's balance
- * along the axis is what the couplers on that joint leave. A general
- * constraint's force is its row's block of its I marker's body (a free
- * body: the velocity, world, and omega, body axes), moved to I.
+ * along the axis is what the couplers and general constraints on that body
+ * leave. A general constraint's force is lambda times its row's world twist
+ * on its I marker's body (expression_rows.h), moved to I.
  */
 #include "sim/dynamics/constraint_forces.h"
 
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "base/vecmath.h"
 #include "expr/marker_forces.h"
 #include "model/expr/functions.h"
 #include "sim/dynamics/constraints.h"
-#include "sim/dynamics/expression_rows.h"
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/joint_coordinate.h"
 #include "sim/dynamics/reactions.h"
@@ -93,30 +91,26 @@ static void reduced_motion(const hx_dynamics *d, const hx_dynamics_data *dd, con
     hx_marker_forces_joint_on_j(&dd->frames, k, out, out + 6);
 }
 
-/* General constraint k's row block of its I marker's body, at I. */
-static int gcon_force(const hx_dynamics *d, hx_dynamics_data *dd, double t, const double *y,
-                      int k, double *work, double *G, double out[12])
+/* General constraint k's force on its I marker's body, at I: lambda times its
+ * row's world twist there (expression_rows.h), whatever the body's
+ * coordinates (a free body's six, a hinged or slid body's one). */
+static void gcon_force(const hx_dynamics *d, const hx_dynamics_data *dd, int k, double out[12])
 {
     const hx_model *m = d->m;
     memset(out, 0, 12 * sizeof(double));
     const int i = m->gcons[k].i_marker;
-    if (i < 0 || d->dof[m->markers[i].body].kind != HX_DOF_FREE)
-        return 0; /* not read: model/expr/link.c refuses it */
+    if (i < 0)
+        return; /* not read: model/expr/link.c refuses it */
     const hx_constraint_row *r = &d->rows[d->gcon_first + k];
-    memset(G, 0, sizeof(double) * (size_t)d->row_values);
-    double phi;
-    if (hx_expression_rows_eval(d, dd, k, t, y, work, &phi, G, NULL) != 0)
-        return -1;
     const double lambda = dd->lambda[d->gcon_first + k];
     for (int b = 0; b < r->nblocks; ++b)
         if (r->body[b] == m->markers[i].body) {
-            double F[3], T_body[3], T[3];
-            v3_scale(F, G + r->slot[b], lambda);
-            v3_scale(T_body, G + r->slot[b] + 3, lambda);
-            m3_apply(T, dd->frames.bodies[r->body[b]].R, T_body);
+            const double *tw = dd->gcon_twist + 6 * (HX_CONSTRAINT_ROW_BLOCKS * k + b);
+            double F[3], T[3];
+            v3_scale(F, tw, lambda);
+            v3_scale(T, tw + 3, lambda);
             at_marker(dd, &m->markers[i], F, T, out);
         }
-    return 0;
 }
 
 int hx_constraint_forces_all(const hx_dynamics *d, hx_dynamics_data *dd, double t,
@@ -145,16 +139,7 @@ int hx_constraint_forces_all(const hx_dynamics *d, hx_dynamics_data *dd, double 
             reduced_motion(d, dd, ydot, rt->joint, couplers,
                            out + 12 * hx_marker_forces_slot(m, HX_FN_MOTION, k, 0));
     }
-    if (m->ngcons == 0)
-        return 0;
-    double *work = malloc(sizeof(double) * (hx_expression_rows_work_size(d) +
-                                            (size_t)d->row_values));
-    if (work == NULL)
-        return hx_dynamics_fail(dd, "GCON: out of memory");
-    int status = 0;
-    for (int k = 0; k < m->ngcons && status == 0; ++k)
-        status = gcon_force(d, dd, t, y, k, work + d->row_values, work,
-                            out + 12 * hx_marker_forces_slot(m, HX_FN_GCON, k, 0));
-    free(work);
-    return status;
+    for (int k = 0; k < m->ngcons; ++k)
+        gcon_force(d, dd, k, out + 12 * hx_marker_forces_slot(m, HX_FN_GCON, k, 0));
+    return 0;
 }

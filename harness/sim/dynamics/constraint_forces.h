@@ -18,7 +18,8 @@ size_t hx_constraint_forces_size(const hx_dynamics *d);
 /* Every slot's twelve values (on I's body at I's origin, then on J's body at
  * J's origin, world axes; zeros in a slot no element has) into out, from
  * dd's evaluation at (t, y): ydot = hx_dynamics_rhs(d, dd, t, y, ydot) just
- * before. 0, or -1 (dd->message) when a coupler's routine fails. */
+ * before (or the algebraic loop's stages). 0, or -1 (dd->message) when a
+ * coupler's routine fails. */
 int hx_constraint_forces_all(const hx_dynamics *d, hx_dynamics_data *dd, double t,
                              const double *y, const double *ydot, double *out);
 

@@ -133,6 +133,7 @@ int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message
     dd->stateeqn_outputs = calloc(6 * (size_t)m->nstateeqns + 1, sizeof(double));
     dd->free_accelerations = calloc(nu + 1, sizeof(double));
     dd->lambda = calloc((size_t)d->nrows + 1, sizeof(double));
+    dd->gcon_twist = calloc(6 * HX_CONSTRAINT_ROW_BLOCKS * (size_t)m->ngcons + 1, sizeof(double));
     dd->turn = calloc((size_t)m->njoints + 1, sizeof(double));
     dd->turn_rate = calloc((size_t)m->njoints + 1, sizeof(double));
     dd->constraint_work = calloc(hx_constraints_work_size(d), sizeof(double));
@@ -143,7 +144,7 @@ int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message
     if (!dd->implicit_start || !dd->implicit_work || !dd->loop_work ||
         !dd->force || !dd->torque || !dd->element_outputs || !dd->element_load ||
         !dd->element_partials || !dd->stateeqn_outputs || !dd->free_accelerations ||
-        !dd->lambda || !dd->turn || !dd->turn_rate || !dd->constraint_work ||
+        !dd->lambda || !dd->gcon_twist || !dd->turn || !dd->turn_rate || !dd->constraint_work ||
         !dd->stateeqn_work ||
         hx_frames_clone(&dd->frames, &d->s->frames) != 0 ||
         hx_frames_clone(&dd->moved, &d->s->frames) != 0) {
@@ -165,6 +166,7 @@ void hx_dynamics_data_free(hx_dynamics_data *dd)
     free(dd->stateeqn_outputs);
     free(dd->free_accelerations);
     free(dd->lambda);
+    free(dd->gcon_twist);
     free(dd->turn);
     free(dd->turn_rate);
     free(dd->constraint_work);

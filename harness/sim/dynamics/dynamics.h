@@ -156,6 +156,11 @@ typedef struct hx_dynamics_data {
     double *free_accelerations;   /* nu: the bodies' udot before the couplers act */
     /* constraints */
     double *lambda;               /* per constraint row (the couplers' first) */
+    double *gcon_twist;           /* per general constraint and block of its row, six: phi's
+                                   * derivative in that body's motion (its origin's shift,
+                                   * its turn about it; world), the last row evaluated with G
+                                   * (expression_rows.h): lambda times it is the force it
+                                   * puts on that body */
     double *turn, *turn_rate;     /* per joint: the angle its rotation is unwrapped against
                                    * and its rate there (joint_turns.h): the model's
                                    * placement, and in a run the last accepted step's */

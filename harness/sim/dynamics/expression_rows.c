@@ -294,6 +294,9 @@ static int terms(const hx_dynamics *d, hx_dynamics_data *dd, int k, double *work
     }
     const hx_expr_input *in = hx_expr_inputs(g->program);
     double rate = 0.0, dt = 0.0;
+    double *twist = dd->gcon_twist + 6 * HX_CONSTRAINT_ROW_BLOCKS * k;
+    if (G != NULL)
+        memset(twist, 0, sizeof(double) * 6 * HX_CONSTRAINT_ROW_BLOCKS);
     for (int j = 0; j < n; ++j) {
         if (in[j].kind == HX_EXPR_INPUT_TIME) {
             dt += partials[j];
@@ -307,8 +310,11 @@ static int terms(const hx_dynamics *d, hx_dynamics_data *dd, int k, double *work
             if (!measure_twist(d->m, &dd->moved, &in[j], r->body[b], tw))
                 continue;
             rate += partials[j] * (v3_dot(tw, fb->v) + v3_dot(tw + 3, fb->w));
-            if (G != NULL)
-                add_block(d, r, b, fb, tw, partials[j], G);
+            if (G == NULL)
+                continue;
+            add_block(d, r, b, fb, tw, partials[j], G);
+            for (int e = 0; e < 6; ++e)
+                twist[6 * b + e] += partials[j] * tw[e];
         }
     }
     *phidot = rate + dt;

@@ -20,7 +20,8 @@ int hx_expression_rows_init(hx_dynamics *d, double length, hx_message *msg);
 size_t hx_expression_rows_work_size(const hx_dynamics *d);
 
 /* Constraint k's phi, its row G (d->row_values wide, its blocks' slots; G
- * zero on entry) and, when gamma is not NULL, its right-hand side of
+ * zero on entry; dd->gcon_twist's too, world, whatever the body's
+ * coordinates) and, when gamma is not NULL, its right-hand side of
  * G udot = gamma. 0, or -1 (dd->message: the expression faulted). */
 int hx_expression_rows_eval(const hx_dynamics *d, hx_dynamics_data *dd, int k, double t,
                             const double *y, double *work, double *phi, double *G,

@@ -14,9 +14,11 @@
  * Reduced: the body moves in its joint's coordinate alone, so what the
  * joint puts on it is what its motion needs beyond the applied loads:
  * F = m a_cm / ucf - F_applied and, about the centre of mass,
- * T = (I alpha + omega x I omega) / ucf - T_applied (world). The joint's own
- * axis carries no torque (revolute) or force (translational): what the
- * balance leaves along it is a coupler's or a motion's, removed.
+ * T = (I alpha + omega x I omega) / ucf - T_applied (world), less what the
+ * general constraints acting on the body put on it (their rows hold its
+ * coordinate). The joint's own axis carries no torque (revolute) or force
+ * (translational): what the balance leaves along it is a coupler's or a
+ * motion's, removed.
  */
 #include "sim/dynamics/reactions.h"
 
@@ -51,6 +53,26 @@ static void from_rows(const hx_dynamics *d, const hx_dynamics_data *dd, int k, d
     v3_copy(out, F), v3_copy(out + 3, T);
 }
 
+/* Less what the general constraints put on body b (lambda times their rows'
+ * world twists there, expression_rows.h), from F and T about its origin:
+ * their rows hold the body's coordinate too, so the balance holds their
+ * force, which is not the joint's. */
+static void general_constraints_on(const hx_dynamics *d, const hx_dynamics_data *dd, int b,
+                                   double F[3], double T[3])
+{
+    for (int k = 0; k < d->m->ngcons; ++k) {
+        const hx_constraint_row *r = &d->rows[d->gcon_first + k];
+        const double lambda = dd->lambda[d->gcon_first + k];
+        for (int blk = 0; blk < r->nblocks; ++blk) {
+            const double *tw = dd->gcon_twist + 6 * (HX_CONSTRAINT_ROW_BLOCKS * k + blk);
+            if (r->body[blk] != b)
+                continue;
+            v3_axpy(F, -lambda, tw);
+            v3_axpy(T, -lambda, tw + 3);
+        }
+    }
+}
+
 void hx_reactions_balance(const hx_dynamics *d, const hx_dynamics_data *dd, const double *ydot,
                           int k, double out[6])
 {
@@ -83,6 +105,7 @@ void hx_reactions_balance(const hx_dynamics *d, const hx_dynamics_data *dd, cons
     v3_scale(F, acc, body->mass / d->ucf);
     v3_sub(F, F, dd->force + 3 * b);
     v3_sub(T, T, dd->torque + 3 * b);
+    general_constraints_on(d, dd, b, F, T);
     double x[3], r[3], rxF[3];
     origin(dd, mi, x);
     v3_sub(r, x, f->p);

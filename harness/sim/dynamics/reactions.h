@@ -21,9 +21,10 @@ void hx_reactions_joint(const hx_dynamics *d, const hx_dynamics_data *dd, const 
                         int k, double out[6]);
 
 /* What reduced joint k and whatever drives or couples its coordinate put on
- * its body (six values as above): the body's balance, along the joint's axis
- * too (the torque about a revolute's, the force along a translational's:
- * a motion's and the couplers' share, which hx_reactions_joint leaves out). */
+ * its body (six values as above): the body's balance less the general
+ * constraints' forces on it, along the joint's axis too (the torque about a
+ * revolute's, the force along a translational's: a motion's and the
+ * couplers' share, which hx_reactions_joint leaves out). */
 void hx_reactions_balance(const hx_dynamics *d, const hx_dynamics_data *dd, const double *ydot,
                           int k, double out[6]);
 

@@ -7,6 +7,7 @@
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/reactions.h"
 #include "sim/dynamics/routines.h"
+#include "sim/dynamics/element_outputs.h"
 #include "sim/simulation/requests.h"
 #include "sim/simulation/simulation.h"
 #include "sim/dynamics/stateeqns.h"
@@ -127,12 +128,12 @@ int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
     hx_accelerations_bodies(d, dd, ydot, accelerations);
     double *loads = accelerations + 6 * m->nbodies;
     hx_message msg;
-    if (m->nrequests > 0 && hx_requests_loads(d, dd, loads, &msg) != 0) {
+    if (m->nrequests > 0 && hx_element_outputs_loads(d, dd, loads, &msg) != 0) {
         free(ydot);
         return hx_dynamics_fail(dd, "%s", msg.text);
     }
     double *forces = loads + 12 * m->nloads, *constraints = forces + 12 * m->nforces;
-    hx_requests_forces(d, dd, forces);
+    hx_element_outputs_forces(d, dd, forces);
     if (m->nrequests > 0 && hx_constraint_forces_all(d, dd, t, y, ydot, constraints) != 0) {
         free(ydot);
         return -1;

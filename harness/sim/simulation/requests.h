@@ -23,22 +23,6 @@
 int hx_requests_values(const hx_frames *fr, int k, const double *variables,
                        const hx_expr_outputs *s, double out[8], hx_message *msg);
 
-/* The loads' forces at dd's frames (at an output time), twelve a load of
- * d's model (expr/evaluate.h's hx_expr_outputs.loads): on I at I's origin,
- * then on J where the load puts its reaction (zeros for an action-only or a
- * switched-off load). 0, or -1 with an expression's fault in msg. */
-int hx_requests_loads(const hx_dynamics *d, const hx_dynamics_data *dd, double *out,
-                      hx_message *msg);
-
-/* The user force elements' forces at dd's frames (at an output time, after
- * the right-hand side there), twelve an element of d's model
- * (expr/evaluate.h's hx_expr_outputs.forces): the load the forces stage
- * applied, on I at I's origin, then on J: -F and -T for a Force_Vector's
- * floating J (at I's origin, where it floats), moved to J's origin for a
- * Force_Field's and a Force_Scalar_TwoBody's (-T - (x_I - x_J) x F); zeros
- * for a Force_Vector_OneBody's J. */
-void hx_requests_forces(const hx_dynamics *d, const hx_dynamics_data *dd, double *out);
-
 /* ",request5.1,...,request5.8" for each request, in the order read. */
 void hx_requests_csv_header(FILE *f, const hx_model *m);
 
