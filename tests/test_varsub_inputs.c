@@ -7,7 +7,8 @@
  * spring by VARSUB against the same spring by expression, with both
  * integrators; the order; a cycle through a VARSUB refused; the dataset's
  * VARIABLE, FUNCTION=USER; the BDF Jacobian against differences; and the
- * bad paths: a force routine that asks VARVAL, a VARSUB that turns NaN.
+ * bad paths: a force routine that asks VARVAL, a command file's VARIABLE
+ * redefining a VARSUB variable, a VARSUB that turns NaN.
  */
 #include <math.h>
 #include <stdio.h>
@@ -15,6 +16,7 @@
 #include <string.h>
 
 #include "model_runs.h"
+#include "sim/simulation/command_schedule.h"
 #include "test_support.h"
 
 /* A free body of mass 2 (inertia 0.1, 0.2, 0.4), its centre marker 20 at
@@ -56,6 +58,12 @@ static const char *body_model(const char *name, const char *elements)
 /* The spring law both ways: by expression, and by SPRING_VAR's USER list. */
 #define LAW "-40*(DM(21,10) - 1)"
 #define SPRING_VARSUB(id) VARSUB(id, "SPRING_VAR", "USER(21, 10, 40, 1)")
+
+/* A second free body, moving: its centre marker 30 at (0, -1, 0.5). */
+#define THIRD_BODY                                                                              \
+    "<Body_Rigid id=\"3\" cg_id=\"30\" mass=\"1\" inertia_xx=\"0.1\" inertia_yy=\"0.1\""        \
+    " inertia_zz=\"0.1\" v_ic_x=\"-0.4\" v_ic_y=\"0.6\"/>\n"                                     \
+    "<Reference_Marker id=\"30\" body_id=\"3\" pos_y=\"-1\" pos_z=\"0.5\"/>\n"
 
 #define T_END 0.4
 
@@ -110,17 +118,20 @@ static void a_force_reading_a_varsub_runs_as_its_expression(void **state)
     const char *varsub = body_model("varsub.xml", SPRING_VARSUB("5") SFORCE("VARVAL(5)"));
     same_runs(varsub, direct, 1e-12);
 
-    /* BDF on its own Jacobian: the force by differences on the columns the
-     * VARSUB declared (body 2's), against differences of the whole
-     * right-hand side (model_runs.h), and the run within the tolerance of
-     * the direct one */
+    /* BDF on its own Jacobian, the force on body 2 of a spring law of body
+     * 3's distance: the force by differences on the columns of the bodies
+     * its markers sit on and of those its VARSUB declared (body 3's),
+     * against differences of the whole right-hand side (model_runs.h), and
+     * the run within the tolerance of the direct one */
     model m;
-    double *y = model_diffs_jacobian_checked("bdf.xml", body_text(SPRING_VARSUB("5")
+    double *y = model_diffs_jacobian_checked("bdf.xml", body_text(THIRD_BODY
+                                             VARSUB("5", "SPRING_VAR", "USER(30, 10, 40, 1)")
                                              SFORCE("VARVAL(5)")), "varsub force", 1, 0, &m);
     double *y0 = model_state(&m);
     model_initial_state(&m, y0);
     int n = 0;
-    double *yd = run_path(direct, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, &n);
+    double *yd = run_path(body_model("direct_bdf.xml", THIRD_BODY SFORCE("-40*(DM(30,10) - 1)")),
+                          HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, &n);
     assert_int_equal(n, m.d.n);
     assert_true(state_difference(&m.d, y, yd, y0) < 1e-6);
     free(y), free(y0), free(yd);
@@ -197,15 +208,20 @@ static void a_control_diff_rate_reading_a_varsub(void **state)
     " usrsub_param_string=\"USER(0.05)\" usrsub_fnc_name=\"LAG_FORCE\""                         \
     " usrsub_dll_name=\"" VARSUB_LIBRARY "\"/>\n"
 
+/* Its input a spring law of body 3's distance: the input's columns are
+ * those its VARSUB declared, not the element's own bodies'. */
 static void a_state_equation_input_by_varsub(void **state)
 {
     (void)state;
-    const char *direct = body_model("direct.xml", "<Reference_Variable id=\"5\""
-                                    " type=\"EXPRESSION\" expr=\"" LAW "\"/>\n" STATEEQN);
-    const char *varsub = body_model("varsub.xml", SPRING_VARSUB("5") STATEEQN);
+    const char *direct = body_model("direct.xml", THIRD_BODY "<Reference_Variable id=\"5\""
+                                    " type=\"EXPRESSION\" expr=\"-40*(DM(30,10) - 1)\"/>\n"
+                                    STATEEQN);
+    const char *varsub = body_model("varsub.xml", THIRD_BODY VARSUB("5", "SPRING_VAR",
+                                    "USER(30, 10, 40, 1)") STATEEQN);
     same_runs(varsub, direct, 1e-12);
     model m; /* and its Jacobian against differences, as the force's */
-    free(model_diffs_jacobian_checked("stateeqn.xml", body_text(SPRING_VARSUB("5") STATEEQN),
+    free(model_diffs_jacobian_checked("stateeqn.xml", body_text(THIRD_BODY VARSUB("5",
+                                      "SPRING_VAR", "USER(30, 10, 40, 1)") STATEEQN),
                                       "stateeqn input", 1, 0, &m));
     close_model(&m);
 }
@@ -252,6 +268,22 @@ static void bad_paths(void **state)
     assert_non_null(strstr(msg.text, "force.xml:8: Force_Vector_TwoBody 3 (VARVAL_FORCE) declares"
                                      " VARVAL(5) in its dependency pass, which the host answers"
                                      " only to a VARSUB or a DIFSUB"));
+
+    /* a command file's VARIABLE may not take a VARSUB variable's value from it */
+    model c;
+    open_model(&c, body_model("redef.xml", SPRING_VARSUB("5") SFORCE("VARVAL(5)")));
+    static const char commands[] = "redef\n\nSIMULATE/DYNAMIC, END=0.5, STEPS=5\n"
+                                   "VARIABLE/5, FUNCTION = 1\nSIMULATE/DYNAMIC, END=1, STEPS=5\n";
+    hx_command_file *f = hx_command_file_parse(commands, strlen(commands), "redef.acf", &msg);
+    assert_non_null(f);
+    const hx_command_overrides none = {0};
+    hx_command_schedule schedule;
+    assert_int_equal(hx_command_schedule_make(f, "redef.acf", c.session.model, "redef.xml", 1e-9,
+                                              1e-9, &none, NULL, &schedule, &msg), -1);
+    assert_contains(msg.text, "redef.acf:4: VARIABLE/5: its value is its VARSUB's",
+                    "(FUNCTION=USER, line 7)");
+    hx_command_file_free(f);
+    close_model(&c);
 
     /* a VARSUB that turns NaN stops the run naming it */
     model m;
