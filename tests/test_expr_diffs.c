@@ -68,7 +68,7 @@ static void states_integrating_a_displacement(void **state)
     hx_dynamics_kinematics(&m.d, &m.data, 1.0, y);
     double values[1];
     hx_message msg;
-    assert_int_equal(hx_variables_values(&m.data.frames, values, &msg), 0);
+    assert_int_equal(hx_variables_values(&m.data.frames, m.d.routine_binding, values, &msg), 0);
     assert_close(values[0], 8.0, 0, 1e-8);
     free(y);
     close_model(&m);

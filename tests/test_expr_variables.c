@@ -154,7 +154,7 @@ static void jacobian_through_variables_equals_differences(void **state)
               &y);
     int bodies[HX_LOAD_BODIES_MAX];
     const hx_model *mm = m.session.model;
-    assert_int_equal(hx_load_bodies(mm, 0, bodies), 3); /* its own, body 3, the ground */
+    assert_int_equal(hx_load_bodies(&m.d, 0, bodies), 3); /* its own, body 3, the ground */
     assert_int_equal(bodies[1], hx_model_body(mm, 3));
     hx_simulation_result r = simulate(&m, HX_METHOD_BDF, HX_JACOBIAN_ANALYTIC, 1e-8, 0.3, y);
     assert_int_equal(r.status, HX_INTEGRATION_OK);
@@ -193,12 +193,12 @@ static void dataset_variables_and_requests(void **state)
     hx_dynamics_kinematics(&m.d, &m.data, 0.5, y);
     double values[2];
     hx_message msg;
-    assert_int_equal(hx_variables_values(&m.data.frames, values, &msg), 0);
+    assert_int_equal(hx_variables_values(&m.data.frames, m.d.routine_binding, values, &msg), 0);
     assert_close(values[0], 3.5, 0, 1e-15);
     char row[256] = "";
     FILE *f = tmpfile();
     assert_non_null(f);
-    assert_int_equal(hx_requests_csv_row(f, &m.data.frames, NULL, &msg), 0);
+    assert_int_equal(hx_requests_csv_row(f, &m.data.frames, m.d.routine_binding, NULL, &msg), 0);
     rewind(f);
     assert_non_null(fgets(row, sizeof row, f));
     fclose(f);

@@ -303,10 +303,9 @@ static void variable_errors_name_element_attribute_and_line(void **state)
     expect_refused("v_missing.xml", "<Reference_Variable id=\"3\" type=\"EXPRESSION\"/>\n",
                    "v_missing.xml:7:", "Reference_Variable 3", "attribute expr is missing");
     expect_refused("v_usersub.xml", "<Reference_Variable id=\"3\" type=\"USERSUB\""
-                   " usrsub_param_string=\"USER(1)\"/>\n<Reference_Array id=\"5\" type=\"U\""
-                   " num_element=\"1\" variable_id=\"3\"/>\n", "v_usersub.xml:8:",
-                   "Reference_Array 5", "variable 3 is a USERSUB Reference_Variable",
-                   "EXPRESSION variables only");
+                   " usrsub_param_string=\"USER(1)\"/>\n<Reference_Variable id=\"3\""
+                   " expr=\"1\"/>\n", "v_usersub.xml:8:",
+                   "Reference_Variable 3 is defined twice (line 7)");
     expect_refused("v_script.xml", "<Reference_Variable id=\"3\" type=\"SCRIPT\"/>\n",
                    "v_script.xml:7:", "Reference_Variable 3", "type \"SCRIPT\"",
                    "expected EXPRESSION or USERSUB");

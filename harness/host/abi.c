@@ -243,7 +243,7 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
                        " RDISP VEL TVEL RVEL, ACC TACC RACC, ARRAY of an IC Reference_Array;"
                        " c_sysfnc: DX DY DZ DM AX AY AZ PSI THETA PHI YAW PITCH ROLL INCANG VX VY VZ"
                        " VM VR WX WY WZ WM, ACCX ACCY ACCZ ACCM WDTX WDTY WDTZ WDTM, DIF DIF1 of a"
-                       " Control_Diff; existing ids). Other elements' forces (FX ... TZ) are not"
+                       " Control_Diff, VARVAL of a Reference_Variable; existing ids). Other elements' forces (FX ... TZ) are not"
                        " answered: docs/interface.md §5.1");
         return -1;
     }

@@ -229,6 +229,16 @@ hx_binding_family hx_binding_family_of(hx_binding_kind kind)
     }
 }
 
+int hx_binding_line(const hx_model *m, const hx_binding *b)
+{
+    switch (hx_binding_family_of(b->kind)) {
+    case HX_FAMILY_FORCE: return m->forces[b->index].line;
+    case HX_FAMILY_ROUTINE: return m->routines[b->index].line;
+    case HX_FAMILY_STATEEQN: return m->stateeqns[b->index].line;
+    default: return m->couplers[b->index].line;
+    }
+}
+
 hx_binding *hx_bindings_find(hx_bindings *bs, hx_binding_family family, int index)
 {
     for (int k = 0; k < bs->count; ++k)

@@ -135,6 +135,8 @@ hx_binding *hx_bindings_find(hx_bindings *bs, hx_binding_family family, int inde
 
 /* The family of a kind. */
 hx_binding_family hx_binding_family_of(hx_binding_kind kind);
+/* The model line of b's element. */
+int hx_binding_line(const hx_model *m, const hx_binding *b);
 
 /* The name of function `which` of b as the library exports it (the symbol
  * bound), or as the model names it when it is not exported. */

@@ -7,17 +7,6 @@
 #include "model/expr/functions.h"
 #include "model/loop_inputs.h"
 
-/* The model line of b's element. */
-static int element_line(const hx_model *m, const hx_binding *b)
-{
-    switch (hx_binding_family_of(b->kind)) {
-    case HX_FAMILY_FORCE: return m->forces[b->index].line;
-    case HX_FAMILY_ROUTINE: return m->routines[b->index].line;
-    case HX_FAMILY_STATEEQN: return m->stateeqns[b->index].line;
-    default: return m->couplers[b->index].line;
-    }
-}
-
 /* Value `value` of query q (measure `measure`) as an expression's input. */
 static void as_input(const hx_model *m, const hx_query *q, int measure, hx_expr_input *in)
 {
@@ -49,7 +38,7 @@ static int bind_query(hx_model *m, hx_binding *b, int k, hx_message *msg)
         return hx_fail(msg, "%s:%d: %s %d (%s) declares %s in its dependency pass, which the host"
                        " answers only to a force, variable or Control_Diff routine (within a"
                        " right-hand side's algebraic loop): docs/interface.md §5.1", m->path,
-                       element_line(m, b), b->element, b->id, routine, asked);
+                       hx_binding_line(m, b), b->element, b->id, routine, asked);
     snprintf(element, sizeof element, "%s of %s %d", routine, b->element, b->id);
     for (int i = 0; i < count; ++i) {
         hx_expr_input in;

@@ -19,6 +19,7 @@ enum {
     F_MEASURE,
     F_DIF = F_MEASURE + HX_MEASURE_COUNT, /* DIF, DIF1: a Control_Diff's state and its rate */
     F_DIF1,
+    F_VARVAL, /* a Reference_Variable's value, as the variables stage computed it */
     F_ACC, F_TACC, F_RACC,
     F_ACCX,
     F_COUNT = F_ACCX + HX_WDT_M + 1
@@ -70,6 +71,7 @@ static int function_code(unsigned long long name)
     case PACK2('W', 'M'): return F_MEASURE + HX_MEASURE_WM;
     case PACK3('D', 'I', 'F'): return F_DIF;
     case PACK4('D', 'I', 'F', '1'): return F_DIF1;
+    case PACK6('V', 'A', 'R', 'V', 'A', 'L'): return F_VARVAL;
     case PACK3('A', 'C', 'C'): return F_ACC;
     case PACK4('T', 'A', 'C', 'C'): return F_TACC;
     case PACK4('R', 'A', 'C', 'C'): return F_RACC;
@@ -121,6 +123,8 @@ int hx_query_reads(const hx_query *q)
         return -1;
     if (q->function == F_DIF || q->function == F_DIF1)
         return HX_READS_DIFF;
+    if (q->function == F_VARVAL)
+        return HX_READS_VARIABLE;
     if (q->function >= F_ACC)
         return HX_READS_ACCELERATIONS;
     return q->function == F_ARRAY ? HX_READS_ARRAY : HX_READS_MARKERS;
@@ -211,6 +215,13 @@ int hx_answer(const hx_frames *fr, const hx_query *q, const int *ipar, double *v
         if (k < 0)
             return -1;
         values[0] = fr->diffs[2 * fr->model->routines[k].slot + (code == F_DIF1)];
+        return 1;
+    }
+    if (code == F_VARVAL) {
+        const int k = hx_model_variable(fr->model, ipar[0]);
+        if (k < 0)
+            return -1;
+        values[0] = fr->variables != NULL ? fr->variables[k] : 0.0;
         return 1;
     }
     hx_frame scratch[4];

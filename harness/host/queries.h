@@ -25,8 +25,11 @@ typedef struct hx_query {
 void hx_query_make(hx_query *q, const char *fnc, const int *ipar, int nsize, int is_array);
 int hx_query_same(const hx_query *a, const hx_query *b);
 /* What a query's ids name: markers (the measures), a Control_Diff (DIF,
- * DIF1), an array (ARRAY); -1 for a query the host does not answer. */
-enum hx_query_reads { HX_READS_MARKERS, HX_READS_DIFF, HX_READS_ARRAY, HX_READS_ACCELERATIONS };
+ * DIF1), an array (ARRAY), the loop's accelerations, a Reference_Variable
+ * (VARVAL); -1 for a query the host does not answer. */
+enum hx_query_reads {
+    HX_READS_MARKERS, HX_READS_DIFF, HX_READS_ARRAY, HX_READS_ACCELERATIONS, HX_READS_VARIABLE
+};
 int hx_query_reads(const hx_query *q);
 /* "DISP(11,21,21)" */
 const char *hx_query_text(const hx_query *q, char *text, size_t size);

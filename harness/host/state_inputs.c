@@ -41,6 +41,10 @@ int hx_stateeqn_inputs(const hx_frames *fr, int element, double *u)
     int nknown = 0;
     for (int i = 0; i < f->ninput; ++i) {
         const hx_variable *v = &m->variables[f->inputs[i]];
+        if (v->varsub) { /* its VARSUB's, which the variables' stage computed at fr */
+            u[i] = fr->variables[f->inputs[i]];
+            continue;
+        }
         if (v->program != NULL) { /* an expression of TIME and measures (§7.10) */
             const hx_expr_context c = {fr, NULL, NULL};
             hx_expr_fault fault;

@@ -275,6 +275,8 @@ void hx_model_free(hx_model *m)
         hx_expr_free(m->variables[k].program);
     free(m->variables);
     free(m->variable_order);
+    free(m->varsub_read_start);
+    free(m->varsub_reads);
     free(m->loop_inputs);
     free(m->arrays);
     free(m->stateeqns);

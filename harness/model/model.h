@@ -151,6 +151,8 @@ typedef struct hx_variable {
     double sign;        /* -1 for a leading minus */
     double number;      /* the value of a plain number */
     hx_expr_program *program; /* an expression beyond one measure, linked; NULL: the above */
+    int varsub;         /* type USERSUB: its VARSUB computes the value (routines[routine]) */
+    int routine;
     int line;
 } hx_variable;
 
@@ -331,8 +333,14 @@ typedef struct hx_model {
     hx_variable *variables;
     int nvariables;
     int *variable_order;     /* the variables' indices, each after those it reads (VARVAL) */
-    int variables_read;      /* a load's expression reads a variable: the dynamics computes
-                              * their values at each evaluation (frames.h) */
+    int *varsub_read_start;  /* per variable, nvariables + 1: where in varsub_reads the
+                              * variables its VARSUB declared it reads (c_sysfnc VARVAL)
+                              * begin; NULL until the dependency passes (host/variable_reads.h) */
+    int *varsub_reads;
+    int variables_read;      /* a load's expression reads a variable, a Force_StateEqn's U
+                              * array names a VARSUB one, or a routine reads one by c_sysfnc
+                              * VARVAL (host/variable_reads.h): the dynamics computes their
+                              * values at each evaluation (frames.h) */
     struct hx_loop_input *loop_inputs; /* the algebraic loop's inputs (model/loop_inputs.h):
                               * each distinct acceleration, reaction or SFORCE force a
                               * force, variable or Control_Diff rate reads */

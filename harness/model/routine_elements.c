@@ -80,8 +80,16 @@ void hx_build_user_variable(hx_draft *d, const hx_element_read *e)
         return;
     }
     hx_routine *r = push_routine(d, e, HX_ROUTINE_VARIABLE, 1);
-    if (r != NULL)
-        r->ic[0] = hx_attr_number(e, "ic", 0.0);
+    if (r == NULL)
+        return;
+    r->ic[0] = hx_attr_number(e, "ic", 0.0);
+    /* a variable too, which VARVAL and the order of the variables find by its id */
+    const hx_variable v = {.id = e->id, .varsub = 1, .routine = (int)(r - d->m->routines),
+                           .line = e->line};
+    hx_variable *slot = hx_draft_push(d, (void **)&d->m->variables, &d->m->nvariables,
+                                      &d->cap_variables, sizeof *slot, NULL, 0);
+    if (slot != NULL)
+        *slot = v;
 }
 
 const hx_attr_spec hx_diff_attrs[] = {

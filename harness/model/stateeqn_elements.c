@@ -289,13 +289,6 @@ static int resolve_variables(hx_draft *d)
         }
         for (int i = 0; i < a->count; ++i)
             if ((a->variables[i] = hx_model_variable(m, a->variable_ids[i])) < 0) {
-                if (hx_model_routine(m, HX_ROUTINE_VARIABLE, a->variable_ids[i]) >= 0) {
-                    hx_draft_fail(d, a->line, "Reference_Array %d: variable %d is a USERSUB"
-                                  " Reference_Variable: the harness takes a Force_StateEqn's"
-                                  " inputs from EXPRESSION variables only", a->id,
-                                  a->variable_ids[i]);
-                    return -1;
-                }
                 hx_draft_fail(d, a->line, "Reference_Array %d: variable %d is not a"
                               " Reference_Variable", a->id, a->variable_ids[i]);
                 return -1;
@@ -401,6 +394,8 @@ static int resolve_arrays(hx_draft *d, hx_stateeqn *f, const raw_stateeqn *raw)
                               u->id, v->id, hx_expr_input_text(&in[j], name, sizeof name));
                 return -1;
             }
+        if (v->varsub) /* its VARSUB's value, by the variables' stage before the forces */
+            m->variables_read = 1;
         for (int j = 0; j < v->nmarkers; ++j) /* states keep the frames its inputs read */
             if (v->marker_ids[j] != 0)
                 m->markers[hx_model_marker(m, v->marker_ids[j])].tracked = 1;

@@ -32,6 +32,8 @@ int hx_variable_definitions_of(hx_variable_definitions *v, const hx_model *m, hx
         v->file[k] = m->path;
         v->line[k] = m->variables[k].line;
     }
+    v->read_start = m->varsub_read_start;
+    v->reads = m->varsub_reads;
     return 0;
 }
 
@@ -45,18 +47,30 @@ int hx_variable_definitions_copy(hx_variable_definitions *to, const hx_variable_
     memcpy(to->order, from->order, n * sizeof(int));
     memcpy(to->file, from->file, n * sizeof *to->file);
     memcpy(to->line, from->line, n * sizeof(int));
+    to->read_start = from->read_start;
+    to->reads = from->reads;
     return 0;
 }
 
-/* The variable index program k reads through its input j, or -1. */
+static int program_inputs(const hx_variable_definitions *v, int k)
+{
+    return v->program[k] == NULL ? 0 : hx_expr_input_count(v->program[k]);
+}
+
+/* The variable index variable k reads through its input j (its program's,
+ * then its VARSUB's declared VARVALs), or -1. */
 static int read_variable(const hx_variable_definitions *v, int k, int j)
 {
-    return hx_expr_inputs(v->program[k])[j].variable;
+    const int np = program_inputs(v, k);
+    if (j < np)
+        return hx_expr_inputs(v->program[k])[j].variable;
+    return v->reads[v->read_start[k] + j - np];
 }
 
 static int count_inputs(const hx_variable_definitions *v, int k)
 {
-    return v->program[k] == NULL ? 0 : hx_expr_input_count(v->program[k]);
+    const int declared = v->read_start != NULL ? v->read_start[k + 1] - v->read_start[k] : 0;
+    return program_inputs(v, k) + declared;
 }
 
 /* A cycle among the variables not ordered (each of which reads one not
@@ -89,9 +103,10 @@ static int refuse_cycle(const hx_variable_definitions *v, const hx_model *m,
     *first = k;
     do {
         used += (size_t)snprintf(text + used, used < sizeof text ? sizeof text - used : 0,
-                                 "%s%s:%d: Reference_Variable %d reads VARVAL(%d)",
+                                 "%s%s:%d: Reference_Variable %d%s reads VARVAL(%d)",
                                  k == *first ? "" : ", ", v->file[k], v->line[k],
-                                 m->variables[k].id, m->variables[next[k]].id);
+                                 m->variables[k].id, m->variables[k].varsub ? " (its VARSUB)" : "",
+                                 m->variables[next[k]].id);
         k = next[k];
     } while (k != *first && used < sizeof text);
     return hx_fail(msg, "a cycle of variables (an algebraic loop, which the harness does not"

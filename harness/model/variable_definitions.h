@@ -20,6 +20,8 @@ typedef struct hx_variable_definitions {
     int *order;                /* the variables' indices, each after those it reads */
     const char **file;         /* per variable: where it is defined (for a cycle's message) */
     int *line;
+    const int *read_start;     /* the model's varsub_read_start and varsub_reads (model.h): */
+    const int *reads;          /* what the VARSUBs read, which no redefinition changes */
 } hx_variable_definitions;
 
 /* The definitions in force in m now (the model's own, before a run); 0 or -1. */

@@ -8,6 +8,7 @@
 
 #include "host/dependency_pass.h"
 #include "host/loop_queries.h"
+#include "host/variable_reads.h"
 
 int hx_session_open(hx_session *s, const char *model_path, FILE *messages, hx_message *msg)
 {
@@ -43,7 +44,8 @@ int hx_session_open(hx_session *s, const char *model_path, FILE *messages, hx_me
     /* the accelerations the routines declared join the algebraic loop: the
      * frames made before then get room for them */
     const int loop_inputs = s->model->nloop_inputs;
-    if (hx_bind_loop_queries(s->model, &s->bindings, msg) != 0) {
+    if (hx_bind_loop_queries(s->model, &s->bindings, msg) != 0 ||
+        hx_bind_variable_reads(s->model, &s->bindings, msg) != 0) {
         hx_session_close(s);
         return -1;
     }

@@ -195,10 +195,6 @@ static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, 
     case HX_EXPR_INPUT_VARVAL:
         if ((in->index[0] = in->variable = hx_model_variable(m, id)) >= 0)
             return 0;
-        if (hx_model_routine(m, HX_ROUTINE_VARIABLE, id) >= 0)
-            return fail_at(p, msg, in->line, in->column, "%s: Reference_Variable %d is computed"
-                           " by a user subroutine (VARSUB), whose value expressions cannot read"
-                           " yet", text, id);
         return fail_at(p, msg, in->line, in->column, "%s: no Reference_Variable %d in the model",
                        text, id);
     case HX_EXPR_INPUT_DIF:

@@ -194,7 +194,7 @@ int hx_dynamics_stages(const hx_dynamics *d, hx_dynamics_data *dd, double t, con
     const int nb = d->m->nbodies;
     if (d->m->variables_read) { /* the variables the loads read, each once */
         hx_message msg;
-        if (hx_variables_values(&dd->frames, dd->frames.variables, &msg) != 0)
+        if (hx_variables_values(&dd->frames, d->routine_binding, dd->frames.variables, &msg) != 0)
             return hx_dynamics_fail(dd, "%s", msg.text);
     }
     memset(dd->force, 0, sizeof(double) * 3 * (size_t)nb);

@@ -7,6 +7,7 @@
 #include "expr/evaluate.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/failure.h"
+#include "sim/dynamics/varsub_reads.h"
 
 /* A component's value at fr: a component left out is 0. */
 static int value_at(const hx_load *l, const hx_expr_program *p, const hx_frames *fr,
@@ -89,15 +90,27 @@ static void add_body(int *bodies, int *n, int b)
         bodies[(*n)++] = b;
 }
 
-static void add_program_bodies(const hx_model *m, const hx_expr_program *p, int *bodies, int *n);
+static void add_program_bodies(const hx_dynamics *d, const hx_expr_program *p, int *bodies,
+                               int *n);
 
 /* The bodies variable k reads, through the variables it reads in turn (they
- * form no cycle: model/variable_programs.c). */
-static void add_variable_bodies(const hx_model *m, int k, int *bodies, int *n)
+ * form no cycle: model/variable_programs.c); a USERSUB variable's, those of
+ * the markers its VARSUB declared in its dependency pass. */
+static void add_variable_bodies(const hx_dynamics *d, int k, int *bodies, int *n)
 {
+    const hx_model *m = d->m;
     const hx_variable *v = &m->variables[k];
+    if (v->varsub) {
+        int markers[4 * HX_MAX_QUERIES];
+        const int count = hx_varsub_reads(d, k, HX_READS_MARKERS, markers, 4 * HX_MAX_QUERIES);
+        for (int i = 0; i < count; ++i)
+            add_body(bodies, n, m->markers[markers[i]].body);
+        for (int i = m->varsub_read_start[k]; i < m->varsub_read_start[k + 1]; ++i)
+            add_variable_bodies(d, m->varsub_reads[i], bodies, n);
+        return;
+    }
     if (v->program != NULL) {
-        add_program_bodies(m, v->program, bodies, n);
+        add_program_bodies(d, v->program, bodies, n);
         return;
     }
     for (int i = 0; i < v->nmarkers; ++i)
@@ -105,45 +118,75 @@ static void add_variable_bodies(const hx_model *m, int k, int *bodies, int *n)
             add_body(bodies, n, m->markers[hx_model_marker(m, v->marker_ids[i])].body);
 }
 
-static void add_program_bodies(const hx_model *m, const hx_expr_program *p, int *bodies, int *n)
+static void add_program_bodies(const hx_dynamics *d, const hx_expr_program *p, int *bodies,
+                               int *n)
 {
+    const hx_model *m = d->m;
     const hx_expr_input *in = hx_expr_inputs(p);
     for (int j = 0; j < hx_expr_input_count(p); ++j) {
         if (in[j].variable >= 0)
-            add_variable_bodies(m, in[j].variable, bodies, n);
+            add_variable_bodies(d, in[j].variable, bodies, n);
         for (int i = 0; i < in[j].nids && i < 4; ++i)
             if (in[j].kind == HX_EXPR_INPUT_MEASURE && in[j].index[i] >= 0)
                 add_body(bodies, n, m->markers[in[j].index[i]].body);
     }
 }
 
+static void add_program_diffs(const hx_dynamics *d, const hx_expr_program *p, int *slots, int *n);
+
+/* The Control_Diff slots variable k reads: its program's by DIF, its
+ * VARSUB's declared DIF, through the variables they read (no cycle). */
+static void add_variable_diffs(const hx_dynamics *d, int k, int *slots, int *n)
+{
+    const hx_model *m = d->m;
+    const hx_variable *v = &m->variables[k];
+    if (v->program != NULL)
+        add_program_diffs(d, v->program, slots, n);
+    if (!v->varsub)
+        return;
+    int read[HX_MAX_QUERIES];
+    const int count = hx_varsub_reads(d, k, HX_READS_DIFF, read, HX_MAX_QUERIES);
+    for (int i = 0; i < count; ++i)
+        add_body(slots, n, read[i]);
+    for (int i = m->varsub_read_start[k]; i < m->varsub_read_start[k + 1]; ++i)
+        add_variable_diffs(d, m->varsub_reads[i], slots, n);
+}
+
 /* The Control_Diff slots program p reads by DIF, through the variables it
- * reads too (they form no cycle). */
-static void add_program_diffs(const hx_model *m, const hx_expr_program *p, int *slots, int *n)
+ * reads too. */
+static void add_program_diffs(const hx_dynamics *d, const hx_expr_program *p, int *slots, int *n)
 {
     const hx_expr_input *in = hx_expr_inputs(p);
     for (int j = 0; j < hx_expr_input_count(p); ++j) {
         if (in[j].kind == HX_EXPR_INPUT_DIF)
             add_body(slots, n, in[j].index[0]); /* distinct, as the bodies */
-        if (in[j].variable >= 0 && m->variables[in[j].variable].program != NULL)
-            add_program_diffs(m, m->variables[in[j].variable].program, slots, n);
+        if (in[j].variable >= 0)
+            add_variable_diffs(d, in[j].variable, slots, n);
     }
 }
 
-int hx_load_diffs(const hx_model *m, int k, int *slots)
+int hx_load_diffs(const hx_dynamics *d, int k, int *slots)
 {
-    const hx_load *l = &m->loads[k];
+    const hx_load *l = &d->m->loads[k];
     int n = 0;
     const hx_expr_program *programs[7] = {l->force[0],  l->force[1],  l->force[2], l->torque[0],
                                           l->torque[1], l->torque[2], l->value};
     for (int p = 0; p < 7; ++p)
         if (programs[p] != NULL)
-            add_program_diffs(m, programs[p], slots, &n);
+            add_program_diffs(d, programs[p], slots, &n);
     return n;
 }
 
-int hx_load_bodies(const hx_model *m, int k, int *bodies)
+int hx_variable_bodies(const hx_dynamics *d, int k, int *bodies)
 {
+    int n = 0;
+    add_variable_bodies(d, k, bodies, &n);
+    return n;
+}
+
+int hx_load_bodies(const hx_dynamics *d, int k, int *bodies)
+{
+    const hx_model *m = d->m;
     const hx_load *l = &m->loads[k];
     int n = 0; /* distinct, in the order first named */
     const int other = l->kind == HX_LOAD_VECTOR ? l->ref_marker : l->j_marker;
@@ -155,7 +198,7 @@ int hx_load_bodies(const hx_model *m, int k, int *bodies)
                                           l->torque[1], l->torque[2], l->value};
     for (int p = 0; p < 7; ++p)
         if (programs[p] != NULL)
-            add_program_bodies(m, programs[p], bodies, &n);
+            add_program_bodies(d, programs[p], bodies, &n);
     return n;
 }
 

@@ -30,14 +30,17 @@ int hx_load_share_at(const hx_model *m, const hx_frames *fr, int k, hx_load_shar
  * markers it names (I, J or the reference marker) and of every marker its
  * expressions measure, known from the parse (docs/interface.md §8.6),
  * and of those the variables they read measure, through the variables those
- * read in turn.
+ * read in turn (a USERSUB variable's: those its VARSUB declared).
  * Returns their count; bodies holds HX_LOAD_BODIES_MAX. */
-int hx_load_bodies(const hx_model *m, int k, int *bodies);
+int hx_load_bodies(const hx_dynamics *d, int k, int *bodies);
+/* The bodies variable k reads, as above (ground included); their count
+ * (bodies holds HX_LOAD_BODIES_MAX). */
+int hx_variable_bodies(const hx_dynamics *d, int k, int *bodies);
 
 /* The Control_Diff states (their slots) load k's expressions read by DIF,
  * directly or through the variables they read, each once; their count
  * (slots holds HX_LOAD_BODIES_MAX). */
-int hx_load_diffs(const hx_model *m, int k, int *slots);
+int hx_load_diffs(const hx_dynamics *d, int k, int *slots);
 
 /* Load k's force at dd's frames as the outputs give it (expr/evaluate.h's
  * hx_expr_outputs.loads), twelve values: on I at I's origin, then on J where

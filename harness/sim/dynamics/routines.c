@@ -170,7 +170,7 @@ static int diff_expressions(const hx_dynamics *d, hx_dynamics_data *dd, double *
     if (!m->variables_read && d->diffs_read_variables) {
         /* the variables the rates read, unless the loads' computed them already */
         hx_message msg;
-        if (hx_variables_values(&dd->frames, dd->frames.variables, &msg) != 0)
+        if (hx_variables_values(&dd->frames, d->routine_binding, dd->frames.variables, &msg) != 0)
             return hx_dynamics_fail(dd, "%s", msg.text);
     }
     /* the implicit rates first: the explicit ones may read them (DIF1) */

@@ -73,7 +73,7 @@ void hx_jacobian_move_body(hx_jacobian *jac, int b, const double *y)
         /* the variables the loads read, at the moved body; a fault leaves them not
          * finite, which the load's evaluation reports as its input's fault */
         hx_message msg;
-        if (hx_variables_values(&jac->moved, jac->moved.variables, &msg) != 0)
+        if (hx_variables_values(&jac->moved, d->routine_binding, jac->moved.variables, &msg) != 0)
             for (int k = 0; k < d->m->nvariables; ++k)
                 jac->moved.variables[k] = NAN;
     }

@@ -9,7 +9,8 @@
  * its values; with the turning of its axes (a vector load's reference
  * marker, a scalar torque's z of J), the line from J to I of a scalar force
  * and the lever arms about the bodies' centres, the change of its wrenches
- * on its bodies. A load that reads any other variable is taken by central
+ * on its bodies. A load that reads any other variable (a USERSUB one: its
+ * VARSUB's declared reads, sim/dynamics/varsub_reads.h) is taken by central
  * differences of that load alone, the variables recomputed at each moved
  * state, on the columns of the bodies its markers sit on and of those its
  * expressions measure (hx_load_bodies) and of the states they read.
@@ -62,7 +63,7 @@ static int diff_columns(hx_jacobian *jac, int k)
     const hx_dynamics *d = jac->d;
     const hx_model *m = d->m;
     int slots[HX_LOAD_BODIES_MAX];
-    const int nslots = hx_load_diffs(m, k, slots);
+    const int nslots = hx_load_diffs(d, k, slots);
     for (int i = 0; i < nslots; ++i) {
         const int c = d->diff_offset + slots[i];
         const double keep = jac->y[c], h = hx_jacobian_step(jac->y, c);
@@ -72,8 +73,8 @@ static int diff_columns(hx_jacobian *jac, int k)
         hx_message msg;
         for (int side = 0; side < 2 && status == 0; ++side) {
             jac->moved.diffs[2 * slots[i]] = keep + (side == 0 ? h : -h);
-            if (m->variables_read && hx_variables_values(&jac->moved, jac->moved.variables,
-                                                         &msg) != 0)
+            if (m->variables_read && hx_variables_values(&jac->moved, d->routine_binding,
+                                                         jac->moved.variables, &msg) != 0)
                 status = -1;
             if (status == 0 && hx_load_share_at(m, &jac->moved, k, &share[side], &msg) != 0)
                 status = -1;
@@ -96,7 +97,7 @@ static int differences(hx_jacobian *jac, int k)
     if (diff_columns(jac, k) != 0)
         return -1;
     int bodies[HX_LOAD_BODIES_MAX];
-    const int nbodies = hx_load_bodies(d->m, k, bodies);
+    const int nbodies = hx_load_bodies(d, k, bodies);
     for (int i = 0; i < nbodies; ++i) {
         const int b = bodies[i];
         if (d->dof[b].kind == HX_DOF_GROUND)
@@ -150,6 +151,8 @@ static int program_exact(const hx_model *m, const hx_expr_program *p)
     for (int j = 0; j < hx_expr_input_count(p); ++j) {
         if (in[j].variable >= 0) {
             const hx_variable *v = &m->variables[in[j].variable];
+            if (v->varsub) /* a VARSUB's: by differences on what it declared */
+                return 0;
             if (v->program == NULL ? v->function[0] != '\0' && hx_measure_find(v->function) < 0
                                    : !program_exact(m, v->program))
                 return 0;
@@ -418,7 +421,7 @@ static int exact(hx_jacobian *jac, int k)
         return -1;
     double dvalue[HX_LOAD_PROGRAMS];
     int slots[HX_LOAD_BODIES_MAX];
-    const int nslots = hx_load_diffs(m, k, slots);
+    const int nslots = hx_load_diffs(d, k, slots);
     for (int s = 0; s < nslots; ++s) { /* d/dDIF: the partials in that input */
         for (int i = 0; i < HX_LOAD_PROGRAMS; ++i)
             dvalue[i] = lv.p[i] != NULL
@@ -427,7 +430,7 @@ static int exact(hx_jacobian *jac, int k)
         put_load_change(jac, k, &lv, dvalue, -1, NULL, d->diff_offset + slots[s]);
     }
     int bodies[HX_LOAD_BODIES_MAX];
-    const int nbodies = hx_load_bodies(m, k, bodies);
+    const int nbodies = hx_load_bodies(d, k, bodies);
     for (int n = 0; n < nbodies; ++n) {
         const int b = bodies[n];
         if (d->dof[b].kind == HX_DOF_GROUND)

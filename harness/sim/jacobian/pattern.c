@@ -160,13 +160,13 @@ int hx_jacobian_pattern(hx_jacobian *jac, int widen, hx_message *msg)
     for (int k = 0; k < m->nloads; ++k) {
         const hx_load *l = &m->loads[k];
         int bodies[HX_LOAD_BODIES_MAX];
-        const int nbodies = hx_load_bodies(m, k, bodies);
+        const int nbodies = hx_load_bodies(d, k, bodies);
         const int reacted = l->kind == HX_LOAD_VECTOR ? l->j_marker >= 0 : !l->action_only;
         const int rows[2] = {body_of(m, l->i_marker), body_of(m, l->j_marker)};
         bodies_by_bodies(&p, d, rows, reacted ? 2 : 1, bodies, nbodies);
         /* the Control_Diff states it reads (DIF): its bodies' velocity rows by
          * each state's column */
-        const int ndiffs = hx_load_diffs(m, k, bodies);
+        const int ndiffs = hx_load_diffs(d, k, bodies);
         for (int i = 0; i < (reacted ? 2 : 1); ++i) {
             if (rows[i] < 0 || d->dof[rows[i]].kind == HX_DOF_GROUND)
                 continue;

@@ -74,10 +74,70 @@ static void implicit_columns(const hx_dynamics *d, int *cols, int *n, int max,
     }
 }
 
+/* The columns of the body marker `marker` sits on. */
+static void marker_columns(const hx_dynamics *d, int marker, int *cols, int *n, int max)
+{
+    int body_cols[13];
+    const int nb = hx_jacobian_body_columns(d, d->m->markers[marker].body, body_cols);
+    for (int c = 0; c < nb; ++c)
+        add_column(cols, n, max, body_cols[c]);
+}
+
+static void variable_columns(const hx_dynamics *d, int k, int *cols, int *n, int max,
+                             int *implicit_added);
+
+/* The columns routine binding b's declared queries read (a DIFSUB's, a
+ * VARSUB's): the bodies of the markers they name, the states of the
+ * Control_Diffs they name, the columns of the variables they read. */
+static void declared_columns(const hx_dynamics *d, const hx_binding *b, int *cols, int *n, int max,
+                             int *implicit_added)
+{
+    const hx_model *m = d->m;
+    for (int q = 0; b != NULL && q < b->deps.count; ++q) {
+        const hx_query *dq = &b->deps.query[q];
+        const int reads = hx_query_reads(dq);
+        if (reads == HX_READS_VARIABLE) {
+            const int k = hx_model_variable(m, dq->ipar[0]);
+            if (k >= 0)
+                variable_columns(d, k, cols, n, max, implicit_added);
+            continue;
+        }
+        for (int i = 0; i < dq->nsize && i < 4; ++i) {
+            if (reads == HX_READS_DIFF) {
+                const int k = hx_model_routine(m, HX_ROUTINE_DIFF, dq->ipar[i]);
+                if (k >= 0)
+                    add_column(cols, n, max, d->diff_offset + m->routines[k].slot);
+                break; /* DIF names one element */
+            }
+            const int marker = reads == HX_READS_MARKERS && dq->ipar[i] != 0
+                                   ? hx_model_marker(m, dq->ipar[i]) : -1;
+            if (marker >= 0)
+                marker_columns(d, marker, cols, n, max);
+        }
+    }
+}
+
+/* The columns variable k reads: its VARSUB's declared ones, its program's,
+ * its measure's markers' (they form no cycle: model/variable_programs.c,
+ * host/variable_reads.h). */
+static void variable_columns(const hx_dynamics *d, int k, int *cols, int *n, int max,
+                             int *implicit_added)
+{
+    const hx_model *m = d->m;
+    const hx_variable *v = &m->variables[k];
+    if (v->varsub)
+        declared_columns(d, d->routine_binding[v->routine], cols, n, max, implicit_added);
+    if (v->program != NULL)
+        program_columns(d, v->program, cols, n, max, implicit_added);
+    for (int i = 0; v->program == NULL && i < v->nmarkers; ++i)
+        if (v->marker_ids[i] != 0)
+            marker_columns(d, hx_model_marker(m, v->marker_ids[i]), cols, n, max);
+}
+
 /* The columns program p reads: the Control_Diff states it names (DIF), the
  * columns of the rates it names (DIF1: the model refuses a cycle of them,
  * model/routine_elements.c), the bodies its markers sit on, through the
- * variables it reads (they form no cycle: model/variable_programs.c). */
+ * variables it reads. */
 static void program_columns(const hx_dynamics *d, const hx_expr_program *p, int *cols, int *n,
                             int max, int *implicit_added)
 {
@@ -91,27 +151,11 @@ static void program_columns(const hx_dynamics *d, const hx_expr_program *p, int 
             if (rate >= 0)
                 diff_columns_into(d, rate, cols, n, max, implicit_added);
         }
-        if (in[j].variable >= 0) {
-            const hx_variable *v = &m->variables[in[j].variable];
-            if (v->program != NULL)
-                program_columns(d, v->program, cols, n, max, implicit_added);
-            for (int i = 0; v->program == NULL && i < v->nmarkers; ++i)
-                if (v->marker_ids[i] != 0) {
-                    int body_cols[13];
-                    const int body = m->markers[hx_model_marker(m, v->marker_ids[i])].body;
-                    const int nb = hx_jacobian_body_columns(d, body, body_cols);
-                    for (int c = 0; c < nb; ++c)
-                        add_column(cols, n, max, body_cols[c]);
-                }
-        }
+        if (in[j].variable >= 0)
+            variable_columns(d, in[j].variable, cols, n, max, implicit_added);
         for (int i = 0; in[j].kind == HX_EXPR_INPUT_MEASURE && i < in[j].nids && i < 4; ++i)
-            if (in[j].index[i] >= 0) {
-                int body_cols[13];
-                const int nb = hx_jacobian_body_columns(d, m->markers[in[j].index[i]].body,
-                                                        body_cols);
-                for (int c = 0; c < nb; ++c)
-                    add_column(cols, n, max, body_cols[c]);
-            }
+            if (in[j].index[i] >= 0)
+                marker_columns(d, in[j].index[i], cols, n, max);
     }
 }
 
@@ -128,27 +172,7 @@ static void diff_columns_into(const hx_dynamics *d, int routine, int *cols, int 
         program_columns(d, m->routines[routine].program, cols, n, max, implicit_added);
         return;
     }
-    const hx_binding *b = d->routine_binding[routine];
-    for (int q = 0; b != NULL && q < b->deps.count; ++q) {
-        const hx_query *dq = &b->deps.query[q];
-        const int reads = hx_query_reads(dq);
-        for (int i = 0; i < dq->nsize && i < 4; ++i) {
-            if (reads == HX_READS_DIFF) {
-                const int k = hx_model_routine(m, HX_ROUTINE_DIFF, dq->ipar[i]);
-                if (k >= 0)
-                    add_column(cols, n, max, d->diff_offset + m->routines[k].slot);
-                break; /* DIF names one element */
-            }
-            const int marker = reads == HX_READS_MARKERS && dq->ipar[i] != 0
-                                   ? hx_model_marker(m, dq->ipar[i]) : -1;
-            if (marker < 0)
-                continue;
-            int body_cols[13];
-            const int nb = hx_jacobian_body_columns(d, m->markers[marker].body, body_cols);
-            for (int j = 0; j < nb; ++j)
-                add_column(cols, n, max, body_cols[j]);
-        }
-    }
+    declared_columns(d, d->routine_binding[routine], cols, n, max, implicit_added);
 }
 
 int hx_diff_columns(const hx_dynamics *d, int routine, int *cols, int max)
@@ -222,7 +246,8 @@ static int diff_rate(hx_jacobian *jac, int k, double t, const double *y, double 
         const int rates = reads_rate(d->m->routines[k].program);
         if (d->m->routines[k].reads_variables || (rates && d->diffs_read_variables)) {
             hx_message msg;
-            if (hx_variables_values(&dd->frames, dd->frames.variables, &msg) != 0)
+            if (hx_variables_values(&dd->frames, d->routine_binding, dd->frames.variables,
+                                    &msg) != 0)
                 return hx_dynamics_fail(dd, "%s", msg.text);
         }
         if (d->m->routines[k].implicit) { /* solved with the other implicit ones */
@@ -235,6 +260,10 @@ static int diff_rate(hx_jacobian *jac, int k, double t, const double *y, double 
             return -1;
         return hx_routines_diff_expression(d, dd, k, rate);
     }
+    hx_message msg; /* a DIFSUB may read variables by c_sysfnc VARVAL (host/variable_reads.h) */
+    if (d->m->variables_read &&
+        hx_variables_values(&dd->frames, d->routine_binding, dd->frames.variables, &msg) != 0)
+        return hx_dynamics_fail(dd, "%s", msg.text);
     hx_binding *b = d->routine_binding[k];
     hx_invoke_routine(b, &dd->frames, 1, 0, rate, NULL); /* dflag: a difference */
     jac->partial_calls++;
@@ -353,7 +382,7 @@ int hx_routine_blocks(hx_jacobian *jac, double t, const double *y)
         return 0;
     hx_message msg;
     if ((m->variables_read || d->diffs_read_variables) &&
-        hx_variables_values(&dd->frames, dd->frames.variables, &msg) != 0)
+        hx_variables_values(&dd->frames, d->routine_binding, dd->frames.variables, &msg) != 0)
         return hx_dynamics_fail(dd, "%s", msg.text);
     if (d->nimplicit > 0 && implicit_rates(jac) != 0)
         return -1;

@@ -23,6 +23,7 @@
 #include "host/state_inputs.h"
 #include "model/expr/expr.h"
 #include "sim/dynamics/failure.h"
+#include "sim/dynamics/loads.h"
 #include "sim/dynamics/stateeqns.h"
 #include "sim/jacobian/jacobian_parts.h"
 
@@ -38,6 +39,18 @@ struct hx_stateeqn_blocks {
     unsigned char differenced[4]; /* routine r was differenced for some element */
 };
 
+/* Body b (not the ground) added to bodies[0 .. *count) unless there. */
+static void add_input_body(const hx_dynamics *d, int b, int *bodies, int *count, int max)
+{
+    if (b < 0 || d->dof[b].kind == HX_DOF_GROUND)
+        return;
+    for (int l = 0; l < *count; ++l)
+        if (bodies[l] == b)
+            return;
+    if (*count < max)
+        bodies[(*count)++] = b;
+}
+
 int hx_stateeqn_input_bodies(const hx_dynamics *d, int k, int *bodies, int max)
 {
     const hx_model *m = d->m;
@@ -45,6 +58,13 @@ int hx_stateeqn_input_bodies(const hx_dynamics *d, int k, int *bodies, int max)
     int count = 0;
     for (int i = 0; i < f->ninput; ++i) {
         const hx_variable *v = &m->variables[f->inputs[i]];
+        if (v->varsub) { /* the bodies its VARSUB declared it reads (loads.h) */
+            int read[HX_LOAD_BODIES_MAX];
+            const int nread = hx_variable_bodies(d, f->inputs[i], read);
+            for (int j = 0; j < nread; ++j)
+                add_input_body(d, read[j], bodies, &count, max);
+            continue;
+        }
         /* the markers of its measure, or of every measure its expression reads */
         int markers[4 * 64], nmarkers = 0;
         if (v->program == NULL)
@@ -55,17 +75,9 @@ int hx_stateeqn_input_bodies(const hx_dynamics *d, int k, int *bodies, int max)
         for (int l = 0; v->program != NULL && l < hx_expr_input_count(v->program); ++l)
             for (int j = 0; in[l].kind == HX_EXPR_INPUT_MEASURE && j < in[l].nids && j < 4; ++j)
                 markers[nmarkers++] = in[l].index[j];
-        for (int j = 0; j < nmarkers; ++j) {
-            const int marker = markers[j];
-            const int b = marker >= 0 ? m->markers[marker].body : -1;
-            if (b < 0 || d->dof[b].kind == HX_DOF_GROUND)
-                continue;
-            int seen = 0;
-            for (int l = 0; l < count && !seen; ++l)
-                seen = bodies[l] == b;
-            if (!seen && count < max)
-                bodies[count++] = b;
-        }
+        for (int j = 0; j < nmarkers; ++j)
+            add_input_body(d, markers[j] >= 0 ? m->markers[markers[j]].body : -1, bodies, &count,
+                           max);
     }
     return count;
 }

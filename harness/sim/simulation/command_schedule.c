@@ -111,6 +111,10 @@ static int redefine(const hx_command *c, const char *path, const hx_model *m,
     if (k == m->nvariables)
         return hx_fail(msg, "%s:%d: VARIABLE/%d: the model has no VARIABLE/%d given by a"
                        " FUNCTION (Reference_Variable %d)", path, c->line, id, id, id);
+    if (m->variables[k].varsub)
+        return hx_fail(msg, "%s:%d: VARIABLE/%d: its value is its VARSUB's (FUNCTION=USER, line"
+                       " %d), which a command file does not redefine", path, c->line, id,
+                       m->variables[k].line);
     hx_message why;
     const hx_expr_source where = {path, c->function_line, c->function_column};
     hx_expr_program *p = hx_expr_parse(c->function, strlen(c->function), &where, &why);

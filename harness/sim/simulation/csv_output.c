@@ -100,7 +100,7 @@ static int row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
     if (hx_routines_csv_row(f, d, dd, y) != 0)
         return -1;
     hx_message msg;
-    if (hx_requests_csv_row(f, &dd->frames, s, &msg) != 0)
+    if (hx_requests_csv_row(f, &dd->frames, d->routine_binding, s, &msg) != 0)
         return hx_dynamics_fail(dd, "%s", msg.text);
     fprintf(f, ",%.15g,%.15g,%.3g,%.3g", energy->total, hx_dissipated(energy, energy0), phi,
             phidot);

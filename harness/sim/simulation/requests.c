@@ -142,8 +142,8 @@ void hx_requests_csv_header(FILE *f, const hx_model *m)
             fprintf(f, ",request%d.%d", m->requests[k].id, j);
 }
 
-int hx_requests_csv_row(FILE *f, const hx_frames *fr, const hx_expr_outputs *s,
-                        hx_message *msg)
+int hx_requests_csv_row(FILE *f, const hx_frames *fr, hx_binding *const *routines,
+                        const hx_expr_outputs *s, hx_message *msg)
 {
     const hx_model *m = fr->model;
     if (m->nrequests == 0)
@@ -152,7 +152,7 @@ int hx_requests_csv_row(FILE *f, const hx_frames *fr, const hx_expr_outputs *s,
     if (m->nvariables > 0) {
         if ((variables = malloc(sizeof(double) * (size_t)m->nvariables)) == NULL)
             return hx_fail(msg, "out of memory");
-        if (hx_variables_values(fr, variables, msg) != 0) {
+        if (hx_variables_values(fr, routines, variables, msg) != 0) {
             free(variables);
             return -1;
         }

@@ -26,9 +26,10 @@ int hx_requests_values(const hx_frames *fr, int k, const double *variables,
 /* ",request5.1,...,request5.8" for each request, in the order read. */
 void hx_requests_csv_header(FILE *f, const hx_model *m);
 
-/* Their values at fr, each with 15 significant digits; 0, or -1 with msg
- * (nothing written for the request at fault and after it). */
-int hx_requests_csv_row(FILE *f, const hx_frames *fr, const hx_expr_outputs *s,
-                        hx_message *msg);
+/* Their values at fr, each with 15 significant digits (routines: the
+ * dynamics' routine bindings, for the USERSUB variables they read); 0, or -1
+ * with msg (nothing written for the request at fault and after it). */
+int hx_requests_csv_row(FILE *f, const hx_frames *fr, hx_binding *const *routines,
+                        const hx_expr_outputs *s, hx_message *msg);
 
 #endif

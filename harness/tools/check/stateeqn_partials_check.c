@@ -100,7 +100,7 @@ static void describe_entry(char *text, size_t size, const hx_model *m, const hx_
     else {
         const hx_variable *v = &m->variables[f->inputs[column]];
         snprintf(input, sizeof input, "dinput%d (%s)", column + 1,
-                 v->program != NULL ? "an expression"
+                 v->varsub ? "a VARSUB" : v->program != NULL ? "an expression"
                  : v->function[0] != '\0' ? v->function : "a number");
     }
     snprintf(text, size, "%s[%d + %d*%d] = %s/%s at sample %d (t = %g)", matrix_names[r], row,
