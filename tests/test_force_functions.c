@@ -316,8 +316,8 @@ static void refusals(void **state)
          "bad.adm:8:15:", "BUSHING(1,0,2,0): no BUSHING 1: the harness simulates no built-in"},
         {"REQUEST/1, F2=TX(99, 10)",
          "bad.adm:8:15:", "TX(99,10): no Reference_Marker 99 in the model"},
-        {"GCON/1, I=20, FUNCTION=DX(20,10)\nREQUEST/1, F2=FX(20)",
-         "bad.adm:9:15:", "FX(20): Constraint_General 1 (line 8) acts at marker 20, and the"
+        {"GCON/1, I=10, FUNCTION=DX(20,10)\nREQUEST/1, F2=FX(10)",
+         "bad.adm:9:15:", "FX(10): Constraint_General 1 (line 8) acts at marker 10, and the"
          " harness does not sum its force"},
     };
     expect_read_errors("bad.adm", "bad\nPART/1, GROUND\nMARKER/10, PART=1\n"
