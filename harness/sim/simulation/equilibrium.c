@@ -430,10 +430,7 @@ int hx_equilibrium_solve(const hx_dynamics *d, hx_dynamics_data *dd, hx_jacobian
 {
     memset(result, 0, sizeof *result);
     const double start = hx_seconds();
-    /* a model with an algebraic loop: the Jacobian is by differences of all n states
-     * (jacobian.c), dearer than the nu unknowns' own */
-    solver sv = {.d = d, .dd = dd, .t = t, .L = 1.0,
-                 .jac = d->m->nloop_inputs > 0 ? NULL : jac};
+    solver sv = {.d = d, .dd = dd, .jac = jac, .t = t, .L = 1.0};
     const long jacobian_evaluations = jac != NULL ? jac->evaluations : 0;
     const long partial_calls = jac != NULL ? jac->partial_calls : 0;
     const hx_model *m = d->m;

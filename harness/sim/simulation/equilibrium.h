@@ -30,9 +30,8 @@ typedef struct hx_equilibrium_result {
  * Motion_Joint drives keeps its position and velocity), the Force_StateEqn
  * and Control_Diff states and the work accumulators held. On dd (its
  * evaluations). The Newton matrix from jac's builds (equilibrium_matrix.h;
- * jac a Jacobian of d, its counts left as they were) or, jac NULL or the
- * model with an algebraic loop, by central differences of the unbalanced
- * loads. 0, or -1 with msg: no equilibrium (a part with nothing
+ * jac a Jacobian of d, its counts left as they were) or, jac NULL, by
+ * central differences of the unbalanced loads. 0, or -1 with msg: no equilibrium (a part with nothing
  * balancing its load, named), no convergence (the parts with the largest
  * unbalanced loads named), or an evaluation's failure. */
 int hx_equilibrium_solve(const hx_dynamics *d, hx_dynamics_data *dd, hx_jacobian *jac,

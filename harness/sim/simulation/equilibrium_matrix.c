@@ -35,6 +35,22 @@ void hx_equilibrium_generalized(const hx_dynamics *d, const double *a, double *g
     }
 }
 
+int hx_equilibrium_jacobian_pays(const hx_jacobian *jac)
+{
+    const hx_dynamics *d = jac->d;
+    if (d->m->nloop_inputs > 0)
+        return 0;
+    int nv = 0, columns = 0;
+    for (int k = 0; k < d->m->nbodies; ++k)
+        if (d->dof[k].kind != HX_DOF_GROUND && d->driver[k] < 0)
+            nv += d->dof[k].kind == HX_DOF_FREE ? 6 : 1;
+    for (int g = 0; g < jac->ngroups; ++g) {
+        const int c = jac->group_column_start[g + 1] - jac->group_column_start[g];
+        columns = c > columns ? c : columns;
+    }
+    return 1 + 2 * columns < 2 * nv;
+}
+
 /* dudot += w J[:, col]'s velocity rows. */
 static void add_column(const hx_jacobian *jac, const double *values, int col, double w,
                        double *dudot)

@@ -23,6 +23,14 @@ typedef struct hx_equilibrium_unknowns {
  * reduced joint's mass (or inertia about its axis) times its acceleration. */
 void hx_equilibrium_generalized(const hx_dynamics *d, const double *a, double *gen);
 
+/* Whether K from jac's build costs fewer evaluations than differences of h,
+ * 2 per unknown (the unknowns: every velocity of a part not driven): no when
+ * the model has an algebraic loop (the build differences all n states),
+ * nor when the constraint stage's differences, 2 per column of the largest
+ * group of coupled parts (positions and rates, coupler_blocks.c), reach as
+ * many (a linkage; docs/performance.md, the static equilibrium's matrix). */
+int hx_equilibrium_jacobian_pays(const hx_jacobian *jac);
+
 /* K[i * stride + j] = dh_i/dx_j length[j] / scale[i] at (t, y), from
  * hx_jacobian_build into values (jac->pattern.nnz); work holds 2 nu doubles.
  * 0, or -1 (jac->dd.message). */

@@ -14,6 +14,7 @@
 #include "sim/dynamics/implicit_diffs.h"
 #include "sim/jacobian/jacobian.h"
 #include "sim/simulation/equilibrium.h"
+#include "sim/simulation/equilibrium_matrix.h"
 
 typedef struct run_context {
     hx_dynamics *d;           /* its redundant rows follow a static equilibrium */
@@ -182,9 +183,11 @@ static int find_equilibrium(run_context *rc, double t, double *y)
     hx_simulation_result *result = rc->result;
     hx_message msg, failure;
     int status = 0;
-    /* its Newton matrix as BDF's: from the Jacobian unless differences are asked for */
+    /* its Newton matrix from the Jacobian unless differences are asked for (BDF's
+     * option) or cost less (equilibrium_matrix.h) */
     hx_jacobian *jac = rc->opt->integration.jacobian == HX_JACOBIAN_ANALYTIC &&
-                               rc->jacobian->d != NULL ? rc->jacobian : NULL;
+                               rc->jacobian->d != NULL && hx_equilibrium_jacobian_pays(rc->jacobian)
+                           ? rc->jacobian : NULL;
     for (int pass = 0; pass <= HX_REDUNDANCY_PASSES; ++pass) {
         char no_longer[sizeof result->no_longer], now[sizeof result->now];
         const int solved = hx_equilibrium_solve(rc->d, rc->dd, jac, t, y,
