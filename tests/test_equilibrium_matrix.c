@@ -116,7 +116,8 @@ static void open_model(opened *o, const char *name, const char *text)
     if (hx_session_open(&o->s, text != NULL ? test_write_file(name, text) : path, stderr,
                         &msg) != 0 ||
         hx_dynamics_init(&o->d, &o->s, &msg) != 0 ||
-        hx_dynamics_data_init(&o->dd, &o->d, &msg) != 0 || hx_jacobian_init(&o->jac, &o->d, &msg) != 0)
+        hx_dynamics_data_init(&o->dd, &o->d, &msg) != 0 ||
+        hx_jacobian_init(&o->jac, &o->d, &msg) != 0)
         fail_msg("%s", msg.text);
     const hx_dynamics *d = &o->d;
     const size_t n = (size_t)d->n, nu = (size_t)d->nu;
@@ -166,13 +167,13 @@ static void move_parts(opened *o, double shift, double turn)
     double *u = o->y + d->nq;
     memset(u, 0, sizeof(double) * (size_t)d->nu);
     for (int i = 0; i < o->nv; ++i) {
-        int c = 0, k = 0;
-        for (; k < d->m->nbodies; ++k)
-            if (d->dof[k].kind != HX_DOF_GROUND && o->var[i] >= d->dof[k].u &&
-                o->var[i] < d->dof[k].u + (d->dof[k].kind == HX_DOF_FREE ? 6 : 1))
-                break;
-        c = o->var[i] - d->dof[k].u;
-        const int turns = d->dof[k].kind == HX_DOF_REVOLUTE || (d->dof[k].kind == HX_DOF_FREE && c >= 3);
+        int k = 0; /* the part of unknown i */
+        while (d->dof[k].kind == HX_DOF_GROUND || o->var[i] < d->dof[k].u ||
+               o->var[i] >= d->dof[k].u + (d->dof[k].kind == HX_DOF_FREE ? 6 : 1))
+            ++k;
+        const int c = o->var[i] - d->dof[k].u;
+        const int turns = d->dof[k].kind == HX_DOF_REVOLUTE ||
+                          (d->dof[k].kind == HX_DOF_FREE && c >= 3);
         u[o->var[i]] = (0.5 + 0.5 * fabs(sim_uniform())) * (sim_uniform() < 0 ? -1 : 1) *
                        (turns ? turn : shift * o->L);
     }

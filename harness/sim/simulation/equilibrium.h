@@ -31,9 +31,10 @@ typedef struct hx_equilibrium_result {
  * and Control_Diff states and the work accumulators held. On dd (its
  * evaluations). The Newton matrix from jac's builds (equilibrium_matrix.h;
  * jac a Jacobian of d, its counts left as they were) or, jac NULL, by
- * central differences of the unbalanced loads. 0, or -1 with msg: no equilibrium (a part with nothing
- * balancing its load, named), no convergence (the parts with the largest
- * unbalanced loads named), or an evaluation's failure. */
+ * central differences of the unbalanced loads. 0, or -1 with msg: no
+ * equilibrium (a part with nothing balancing its load, named), no
+ * convergence (the parts with the largest unbalanced loads named), or an
+ * evaluation's failure (the Jacobian's build's among them). */
 int hx_equilibrium_solve(const hx_dynamics *d, hx_dynamics_data *dd, hx_jacobian *jac,
                          double t, double *y, hx_equilibrium_result *result, hx_message *msg);
 

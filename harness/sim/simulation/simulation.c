@@ -185,9 +185,9 @@ static int find_equilibrium(run_context *rc, double t, double *y)
     int status = 0;
     /* its Newton matrix from the Jacobian unless differences are asked for (BDF's
      * option) or cost less (equilibrium_matrix.h) */
-    hx_jacobian *jac = rc->opt->integration.jacobian == HX_JACOBIAN_ANALYTIC &&
-                               rc->jacobian->d != NULL && hx_equilibrium_jacobian_pays(rc->jacobian)
-                           ? rc->jacobian : NULL;
+    const int analytic = rc->opt->integration.jacobian == HX_JACOBIAN_ANALYTIC;
+    hx_jacobian *jac = analytic && rc->jacobian->d != NULL &&
+                               hx_equilibrium_jacobian_pays(rc->jacobian) ? rc->jacobian : NULL;
     for (int pass = 0; pass <= HX_REDUNDANCY_PASSES; ++pass) {
         char no_longer[sizeof result->no_longer], now[sizeof result->now];
         const int solved = hx_equilibrium_solve(rc->d, rc->dd, jac, t, y,
