@@ -99,7 +99,7 @@ static void solve(solved *o, const char *name, const char *text)
         fail_msg("%s", msg.text);
     assert_true(o->d.n <= 64);
     assert_int_equal(hx_dynamics_initial_state(&o->d, &o->dd, o->y), 0);
-    o->status = hx_equilibrium_solve(&o->d, &o->dd, 0.0, o->y, &o->result, &o->msg);
+    o->status = hx_equilibrium_solve(&o->d, &o->dd, NULL, 0.0, o->y, &o->result, &o->msg);
 }
 
 static void done(solved *o)

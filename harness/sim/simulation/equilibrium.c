@@ -4,9 +4,10 @@
  * accelerations of the right-hand side, so the loads projected on the
  * constraints' free motions), in the velocity coordinates (a free part's
  * centre in world axes and its turn in body axes; a reduced joint's
- * coordinate). The Newton matrix K = dh/dx by central differences of h, each
- * increment applied to the positions as a step of the integrators applies a
- * velocity (hx_bodies_advance_positions: quaternions turned, kept unit), the
+ * coordinate). The Newton matrix K = dh/dx from the dynamics' Jacobian
+ * (equilibrium_matrix.c), or by central differences of h, each increment
+ * applied to the positions as a step of the integrators applies a velocity
+ * (hx_bodies_advance_positions: quaternions turned, kept unit); the
  * constraints kept to first order by their rows G in the saddle system
  *     [ K + R   G^T ] [dx]   [-h]
  *     [ G       0   ] [mu] = [ 0]
@@ -20,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/clock.h"
 #include "base/difference_step.h"
 #include "base/linalg.h"
 #include "base/vecmath.h"
@@ -27,6 +29,7 @@
 #include "sim/dynamics/constraints.h"
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/loads.h"
+#include "sim/simulation/equilibrium_matrix.h"
 
 /* R: a stiffness this small against the model's (its force per length, or
  * per radian times its length), or against its stiffest entry, on the
@@ -50,6 +53,9 @@
 typedef struct solver {
     const hx_dynamics *d;
     hx_dynamics_data *dd;
+    hx_jacobian *jac;    /* K from it (NULL: by differences of h) */
+    double *values, *work; /* the Jacobian's values; 2 nu for K's columns */
+    long evaluations;    /* right-hand sides taken here */
     double t, L, F;      /* the time, the model's length and force */
     int nv, na;          /* unknowns; size of the saddle system */
     int *var;            /* per unknown: its velocity (index into u) */
@@ -83,20 +89,8 @@ static int unbalanced(solver *sv, const double *y, double *h)
     const hx_dynamics *d = sv->d;
     if (hx_dynamics_rhs(d, sv->dd, sv->t, y, sv->ydot) != 0)
         return -1;
-    const double *a = sv->ydot + d->nq;
-    for (int k = 0; k < d->m->nbodies; ++k) {
-        const hx_body_dof *dof = &d->dof[k];
-        if (dof->kind == HX_DOF_GROUND)
-            continue;
-        double *g = sv->gen + dof->u;
-        if (dof->kind != HX_DOF_FREE) {
-            g[0] = dof->mass * a[dof->u] / d->ucf;
-            continue;
-        }
-        v3_scale(g, a + dof->u, dof->mass / d->ucf);
-        m3_apply(g + 3, dof->inertia, a + dof->u + 3); /* I alpha: at u = 0 no gyroscopic term */
-        v3_scale(g + 3, g + 3, 1.0 / d->ucf);
-    }
+    sv->evaluations++;
+    hx_equilibrium_generalized(d, sv->ydot + d->nq, sv->gen);
     for (int i = 0; i < sv->nv; ++i)
         h[i] = sv->gen[sv->var[i]];
     return 0;
@@ -129,16 +123,10 @@ static void displace(const solver *sv, const double *y, const double *dx, double
     memcpy(u, y + d->nq, sizeof(double) * (size_t)d->nu);
 }
 
-/* The saddle system at y, in units of the model (each unknown over its
- * length, each load over its scale: K's entries near 1 for gravity's
- * stiffness): K by central differences, R on its diagonal, and the active
- * constraint rows on the unknowns, each over its largest entry. */
-static int newton_matrix(solver *sv, const double *y)
+/* K by central differences of h into A (stride na). */
+static int difference_matrix(solver *sv, const double *y)
 {
-    const hx_dynamics *d = sv->d;
     const int nv = sv->nv, na = sv->na;
-    memset(sv->A, 0, sizeof(double) * (size_t)na * (size_t)na);
-    double stiffest = 0.0;
     for (int j = 0; j < nv; ++j) {
         const double step = hx_difference_step(0.0, DIFFERENCE, sv->length[j]);
         memset(sv->dx, 0, sizeof(double) * (size_t)nv);
@@ -149,12 +137,33 @@ static int newton_matrix(solver *sv, const double *y)
         displace(sv, y, sv->dx, -1.0, sv->trial);
         if (unbalanced(sv, sv->trial, sv->hm) != 0)
             return -1;
-        for (int i = 0; i < nv; ++i) {
-            double *K = &sv->A[i * na + j];
-            *K = (sv->hp[i] - sv->hm[i]) / (2.0 * step) * sv->length[j] / sv->scale[i];
-            stiffest = fmax(stiffest, fabs(*K));
-        }
+        for (int i = 0; i < nv; ++i)
+            sv->A[i * na + j] =
+                (sv->hp[i] - sv->hm[i]) / (2.0 * step) * sv->length[j] / sv->scale[i];
     }
+    return 0;
+}
+
+/* The saddle system at y, in units of the model (each unknown over its
+ * length, each load over its scale: K's entries near 1 for gravity's
+ * stiffness): K, R on its diagonal, and the active constraint rows on the
+ * unknowns, each over its largest entry. */
+static int newton_matrix(solver *sv, const double *y)
+{
+    const hx_dynamics *d = sv->d;
+    const int nv = sv->nv, na = sv->na;
+    memset(sv->A, 0, sizeof(double) * (size_t)na * (size_t)na);
+    if (sv->jac != NULL) {
+        const hx_equilibrium_unknowns x = {nv, sv->var, sv->length, sv->scale};
+        if (hx_equilibrium_matrix(sv->jac, sv->t, y, &x, sv->values, sv->work, sv->A, na) != 0)
+            return hx_dynamics_fail(sv->dd, "%s", sv->jac->dd.message);
+    } else if (difference_matrix(sv, y) != 0) {
+        return -1;
+    }
+    double stiffest = 0.0;
+    for (int i = 0; i < nv; ++i)
+        for (int j = 0; j < nv; ++j)
+            stiffest = fmax(stiffest, fabs(sv->A[i * na + j]));
     for (int j = 0; j < nv; ++j) {
         sv->reg[j] = fmax(REGULARIZATION, REGULARIZATION_STIFFEST * stiffest);
         sv->A[j * na + j] += sv->reg[j];
@@ -416,11 +425,14 @@ static int solve(solver *sv, double *y, hx_equilibrium_result *result)
     }
 }
 
-int hx_equilibrium_solve(const hx_dynamics *d, hx_dynamics_data *dd, double t, double *y,
-                         hx_equilibrium_result *result, hx_message *msg)
+int hx_equilibrium_solve(const hx_dynamics *d, hx_dynamics_data *dd, hx_jacobian *jac,
+                         double t, double *y, hx_equilibrium_result *result, hx_message *msg)
 {
     memset(result, 0, sizeof *result);
-    solver sv = {.d = d, .dd = dd, .t = t, .L = 1.0};
+    const double start = hx_seconds();
+    solver sv = {.d = d, .dd = dd, .jac = jac, .t = t, .L = 1.0};
+    const long jacobian_evaluations = jac != NULL ? jac->evaluations : 0;
+    const long partial_calls = jac != NULL ? jac->partial_calls : 0;
     const hx_model *m = d->m;
     for (int k = 0; k < m->nmarkers; ++k) /* the model's length, as the constraints take it */
         sv.L = fmax(sv.L, v3_norm(m->markers[k].pos0));
@@ -440,9 +452,14 @@ int hx_equilibrium_solve(const hx_dynamics *d, hx_dynamics_data *dd, double t, d
     sv.A0 = malloc(sizeof(double) * (na * na + 1));
     sv.phi = malloc(sizeof(double) * (nr + 1));
     sv.G = malloc(sizeof(double) * ((size_t)d->row_values * nr + 1));
+    if (sv.jac != NULL) {
+        sv.values = malloc(sizeof(double) * ((size_t)jac->pattern.nnz + 2 * nu + 1));
+        sv.work = sv.values != NULL ? sv.values + jac->pattern.nnz : NULL;
+    }
     int status = -1;
     if (!sv.var || !sv.body || !sv.scale || !sv.length || !sv.reg || !sv.ydot || !sv.trial ||
-        !sv.gen || !sv.h || !sv.A || !sv.A0 || !sv.b || !sv.phi || !sv.G) {
+        !sv.gen || !sv.h || !sv.A || !sv.A0 || !sv.b || !sv.phi || !sv.G ||
+        (sv.jac != NULL && !sv.values)) {
         hx_fail(msg, "out of memory");
     } else {
         sv.hp = sv.h + nu, sv.hm = sv.h + 2 * nu, sv.dx = sv.h + 3 * nu;
@@ -463,9 +480,17 @@ int hx_equilibrium_solve(const hx_dynamics *d, hx_dynamics_data *dd, double t, d
         status = sv.nv == 0 ? 0 : solve(&sv, y, result);
         if (status != 0)
             hx_fail(msg, "%s", dd->message);
+        result->analytic = sv.jac != NULL;
+        result->seconds = hx_seconds() - start;
+        result->evaluations = sv.evaluations;
+        if (jac != NULL) { /* the Jacobian's own, counted here and not in a run's */
+            result->evaluations += jac->evaluations - jacobian_evaluations;
+            jac->evaluations = jacobian_evaluations;
+            jac->partial_calls = partial_calls;
+        }
     }
     free(sv.var), free(sv.body), free(sv.scale), free(sv.length), free(sv.reg), free(sv.ydot);
     free(sv.trial), free(sv.gen), free(sv.h), free(sv.A), free(sv.A0), free(sv.b), free(sv.phi);
-    free(sv.G);
+    free(sv.G), free(sv.values);
     return status;
 }

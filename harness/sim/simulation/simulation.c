@@ -14,6 +14,7 @@
 #include "sim/dynamics/implicit_diffs.h"
 #include "sim/jacobian/jacobian.h"
 #include "sim/simulation/equilibrium.h"
+#include "sim/simulation/equilibrium_matrix.h"
 
 typedef struct run_context {
     hx_dynamics *d;           /* its redundant rows follow a static equilibrium */
@@ -21,7 +22,8 @@ typedef struct run_context {
     const hx_simulation_options *opt;
     hx_simulation_result *result;
     double started, last_progress;
-    hx_jacobian *jacobian;    /* BDF: its sparsity, and with analytic partials J */
+    hx_jacobian *jacobian;    /* BDF: its sparsity, and with analytic partials J; a
+                               * static equilibrium's Newton matrix (equilibrium.h) */
     const hx_variable_definitions *own; /* the model's variables, when a segment redefines
                                          * one (NULL: none does) */
 } run_context;
@@ -181,10 +183,15 @@ static int find_equilibrium(run_context *rc, double t, double *y)
     hx_simulation_result *result = rc->result;
     hx_message msg, failure;
     int status = 0;
+    /* its Newton matrix from the Jacobian unless differences are asked for (BDF's
+     * option) or cost less (equilibrium_matrix.h) */
+    const int analytic = rc->opt->integration.jacobian == HX_JACOBIAN_ANALYTIC;
+    hx_jacobian *jac = analytic && rc->jacobian->d != NULL &&
+                               hx_equilibrium_jacobian_pays(rc->jacobian) ? rc->jacobian : NULL;
     for (int pass = 0; pass <= HX_REDUNDANCY_PASSES; ++pass) {
         char no_longer[sizeof result->no_longer], now[sizeof result->now];
-        const int solved = hx_equilibrium_solve(rc->d, rc->dd, t, y, &result->equilibrium,
-                                                &failure) == 0;
+        const int solved = hx_equilibrium_solve(rc->d, rc->dd, jac, t, y,
+                                                &result->equilibrium, &failure) == 0;
         status = solved ? 0 : -1;
         if (rc->opt->keep_redundant || pass == HX_REDUNDANCY_PASSES)
             break;
@@ -365,12 +372,17 @@ int hx_simulate_segments(hx_dynamics *d, const hx_simulation_options *opt,
     memcpy(removed, d->removed, sizeof(int) * (size_t)nremoved);
     /* the model's own variables, kept when a segment redefines one */
     hx_variable_definitions own = {0};
-    int redefines = 0;
-    for (int k = 0; k < nsegments; ++k)
+    int redefines = 0, statics = opt->static_start;
+    for (int k = 0; k < nsegments; ++k) {
         redefines |= segments[k].variables != NULL;
+        statics |= segments[k].equilibrium;
+    }
+    /* the Jacobian for BDF, and for a static equilibrium's Newton matrix */
+    const int jacobian = opt->integration.method == HX_METHOD_BDF ||
+                         (statics && opt->integration.jacobian == HX_JACOBIAN_ANALYTIC);
     if ((redefines && hx_variable_definitions_of(&own, d->m, &msg) != 0) ||
         hx_dynamics_data_init(&dd, d, &msg) != 0 ||
-        (opt->integration.method == HX_METHOD_BDF &&
+        (jacobian &&
          (hx_jacobian_init(&jac, d, &msg) != 0 || widen(&jac, segments, nsegments, &own, &msg) != 0))) {
         snprintf(result->message, sizeof result->message, "%s", msg.text);
         result->status = HX_INTEGRATION_FAILED;
@@ -437,9 +449,12 @@ void hx_simulation_summary(FILE *f, const hx_dynamics *d, const hx_simulation_op
     if (getrusage(RUSAGE_SELF, &usage) == 0)
         fprintf(f, "  peak memory %.1f MB (the whole process)\n", (double)usage.ru_maxrss / 1024.0);
     if (r->statics > 0)
-        fprintf(f, "  static equilibri%s: %d; the last in %d Newton iterations, unbalanced loads"
-                " %.3g of the model's force %.6g\n", r->statics == 1 ? "um" : "a", r->statics,
-                r->equilibrium.iterations, r->equilibrium.residual, r->equilibrium.force_scale);
+        fprintf(f, "  static equilibri%s: %d; the last in %d Newton iterations (%ld right-hand"
+                " sides, Newton matrix %s, %.3g s), unbalanced loads %.3g of the model's force"
+                " %.6g\n", r->statics == 1 ? "um" : "a", r->statics, r->equilibrium.iterations,
+                r->equilibrium.evaluations,
+                r->equilibrium.analytic ? "from the Jacobian" : "by differences",
+                r->equilibrium.seconds, r->equilibrium.residual, r->equilibrium.force_scale);
     if (d->nrows > 0)
         fprintf(f, "  largest constraint residual |phi| %.3g, |dphi/dt| %.3g\n", r->max_phi,
                 r->max_phidot);
