@@ -282,10 +282,11 @@ static void bad_input_named(void **state)
         {"SPRINGDAMPER/5, ROTATION, I=20, J=10, KT=1,\n, K=2",
          "bad.adm:7:", "K is a TRANSLATIONAL one's"},
         {"SPRINGDAMPER/5, I=20, J=10, K=2", "bad.adm:6:", "give TRANSLATIONAL"},
-        {"BUSHING/5, I=20, J=10, K=1,2", "bad.adm:6:", "K"},
-        {"BUSHING/5, I=20, J=10, K=1,2,3, STIFF=4", "bad.adm:6:", "STIFF"},
-        {"BUSHING/5, I=20, J=10, C=1,-2,3", "bad.adm:6:", "cy = -2: it must not be negative"},
-        {"BUSHING/5, I=20, J=99", "bad.adm:6:", "99"},
+        {"BUSHING/5, I=20, J=10, K=1,2", "bad.adm:6:", "BUSHING/5: K takes 3 values, not 2"},
+        {"BUSHING/5, I=20, J=10, K=1,2,3, STIFF=4", "bad.adm:6:",
+         "BUSHING/5: STIFF (column 33) is not a keyword of BUSHING"},
+        {"BUSHING/5, I=20, J=10, C=1,-2,3", "bad.adm:6:", "Force_Bushing 5: cy = -2: it must not be negative"},
+        {"BUSHING/5, I=20, J=99", "bad.adm:6:", "BUSHING/5: J=99 (column 20) names no MARKER"},
     };
     expect_read_errors("bad.adm", "bad\nPART/1, GROUND\nMARKER/10, PART=1\n"
                        "PART/2, MASS=1, CM=20, IP=1,1,1\nMARKER/20, PART=2\n", cases,
