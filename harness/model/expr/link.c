@@ -16,8 +16,9 @@
 #include "model/expr/functions.h"
 #include "model/expr/program.h"
 
-/* Where a program is evaluated: what it may read beyond the state. */
-enum { LINK_STATE, LINK_LOOP, LINK_OUTPUT };
+/* Where a program is evaluated: what it may read beyond the state (a
+ * request's and a loop's read the same: the loop solves for what it reads). */
+enum { LINK_STATE, LINK_OUTPUT };
 
 static int fail_at(hx_expr_program *p, hx_message *msg, int line, int column, const char *fmt,
                    ...) __attribute__((format(printf, 5, 6)));
@@ -267,7 +268,7 @@ int hx_expr_link(hx_expr_program *p, const hx_model *m, hx_message *msg)
 
 int hx_expr_link_loop(hx_expr_program *p, const hx_model *m, hx_message *msg)
 {
-    return link_program(p, m, LINK_LOOP, msg);
+    return link_program(p, m, LINK_OUTPUT, msg);
 }
 
 int hx_expr_link_output(hx_expr_program *p, const hx_model *m, hx_message *msg)
