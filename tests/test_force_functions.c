@@ -313,7 +313,7 @@ static void refusals(void **state)
         {"REQUEST/1, F2=FIELD(2,0,2,0)",
          "bad.adm:8:15:", "FIELD(2,0,2,0): no Force_Field (FIELD) 2 in the model"},
         {"REQUEST/1, F2=BUSHING(1,0,2,0)",
-         "bad.adm:8:15:", "BUSHING(1,0,2,0): no BUSHING 1: the harness simulates no built-in"},
+         "bad.adm:8:15:", "BUSHING(1,0,2,0): no Force_Bushing (BUSHING) 1 in the model"},
         {"REQUEST/1, F2=TX(99, 10)",
          "bad.adm:8:15:", "TX(99,10): no Reference_Marker 99 in the model"},
         {"GCON/1, I=10, FUNCTION=DX(20,10)\nREQUEST/1, F2=FX(10)",

@@ -302,7 +302,8 @@ static void refused_in_general_constraints(void **state)
         {"GCON/1, I=20, FUNCTION=1+SFORCE(1,0,2,0)",
          "bad.adm:6:26:", "SFORCE(1,0,2,0): another element's force"},
         {"REQUEST/1, F2=SFORCE(7,0,2,0)",
-         "bad.adm:6:15:", "SFORCE(7,0,2,0): no Force_Scalar_TwoBody (SFORCE) 7 in the model"},
+         "bad.adm:6:15:", "SFORCE(7,0,2,0): no Force_Scalar_TwoBody or Force_SpringDamper (SFORCE) 7"
+         " in the model"},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         char text[1024];

@@ -11,6 +11,7 @@
 
 #include "base/vecmath.h"
 #include "model/joint_elements.h"
+#include "model/builtin_forces.h"
 #include "model/gcon_elements.h"
 #include "model/load_elements.h"
 #include "model/orientation.h"
@@ -530,6 +531,8 @@ const hx_element_spec hx_element_specs[] = {
     {"Force_Vector_OneBody", vector_load_attrs, build_vector_load, NULL, 0},
     {"Force_Scalar_TwoBody", scalar_load_attrs, build_scalar_load, NULL, 0},
     {"Force_StateEqn", hx_stateeqn_attrs, hx_build_stateeqn, NULL, 0},
+    {"Force_SpringDamper", hx_springdamper_attrs, hx_build_springdamper, NULL, 0},
+    {"Force_Bushing", hx_bushing_attrs, hx_build_bushing, NULL, 0},
     {"Reference_Array", hx_array_attrs, hx_build_array, hx_array_text, 0},
     {"Reference_Variable", hx_variable_attrs, hx_build_variable, NULL, 0},
     {"Post_Request", hx_request_attrs, hx_build_request, NULL, 0},

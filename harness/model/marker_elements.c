@@ -11,13 +11,17 @@ int hx_marker_between(int a, int b, int i, int j)
 }
 
 /* What each function reads (docs/interface.md §8.3): a Force_Scalar_TwoBody
- * (SFORCE), any Force_Vector element (VFORCE, VTORQ and GFORCE alike, as
- * MotionSolve's pages define them), a Force_Field (FIELD); BUSHING names an
- * element the harness does not simulate. */
-static int reads_load(int function, const hx_load *l)
+ * (SFORCE; a Force_SpringDamper, when no Force_Scalar_TwoBody has its id),
+ * any Force_Vector element (VFORCE, VTORQ and GFORCE alike, as MotionSolve's
+ * pages define them), a Force_Bushing (BUSHING), a Force_Field (FIELD). */
+static int reads_load(int function, const hx_load *l, enum hx_load_builtin builtin)
 {
+    if (l->builtin != builtin)
+        return 0;
     if (function == HX_FN_SFORCE)
         return l->kind != HX_LOAD_VECTOR;
+    if (function == HX_FN_BUSHING)
+        return builtin == HX_LOAD_BUSHING;
     return (function == HX_FN_VFORCE || function == HX_FN_VTORQ || function == HX_FN_GFORCE) &&
            l->kind == HX_LOAD_VECTOR;
 }
@@ -36,8 +40,10 @@ static int reads_force(int function, const hx_force *f)
 int hx_marker_element_find(const hx_model *m, int function, int id, int *force, int *index,
                            char *what, size_t size)
 {
+    const enum hx_load_builtin builtin = function == HX_FN_BUSHING ? HX_LOAD_BUSHING
+                                                                     : HX_LOAD_AS_WRITTEN;
     for (int k = 0; k < m->nloads; ++k)
-        if (m->loads[k].id == id && reads_load(function, &m->loads[k])) {
+        if (m->loads[k].id == id && reads_load(function, &m->loads[k], builtin)) {
             *force = 0, *index = k;
             return 0;
         }
@@ -46,14 +52,18 @@ int hx_marker_element_find(const hx_model *m, int function, int id, int *force, 
             *force = 1, *index = k;
             return 0;
         }
+    for (int k = 0; k < m->nloads && function == HX_FN_SFORCE; ++k)
+        if (m->loads[k].id == id && reads_load(function, &m->loads[k], HX_LOAD_SPRINGDAMPER)) {
+            *force = 0, *index = k;
+            return 0;
+        }
     switch (function) {
-    case HX_FN_SFORCE: snprintf(what, size, "Force_Scalar_TwoBody (SFORCE) %d in the model", id); break;
-    case HX_FN_FIELD: snprintf(what, size, "Force_Field (FIELD) %d in the model", id); break;
-    case HX_FN_BUSHING:
-        snprintf(what, size, "BUSHING %d: the harness simulates no built-in bushing (a user"
-                 " bushing is a Force_Vector_TwoBody, read by GFORCE, or a Force_Field, read by"
-                 " FIELD)", id);
+    case HX_FN_SFORCE:
+        snprintf(what, size, "Force_Scalar_TwoBody or Force_SpringDamper (SFORCE) %d in the model",
+                 id);
         break;
+    case HX_FN_FIELD: snprintf(what, size, "Force_Field (FIELD) %d in the model", id); break;
+    case HX_FN_BUSHING: snprintf(what, size, "Force_Bushing (BUSHING) %d in the model", id); break;
     default:
         snprintf(what, size, "Force_Vector_TwoBody or Force_Vector_OneBody (VFORCE, VTORQUE,"
                  " GFORCE) %d in the model", id);

@@ -128,9 +128,18 @@ enum hx_load_kind {
     HX_LOAD_SCALAR_FORCE   /* Force_Scalar_TwoBody FORCE: along the line I-J */
 };
 
+/* What a load stands for: itself, or a built-in element made of it
+ * (model/builtin_forces.h), named and read by the force functions as that. */
+enum hx_load_builtin {
+    HX_LOAD_AS_WRITTEN,   /* a Force_Vector_* or Force_Scalar_TwoBody */
+    HX_LOAD_SPRINGDAMPER, /* a Force_SpringDamper: a scalar load */
+    HX_LOAD_BUSHING       /* a Force_Bushing: a vector load, j_marker its J marker */
+};
+
 typedef struct hx_load {
     int id;
     enum hx_load_kind kind;
+    enum hx_load_builtin builtin;
     int i_marker, j_marker, ref_marker; /* indices, -1 when not used; a vector load's j_marker
                                          * (Force_Vector_TwoBody) takes the reaction */
     /* the expressions (docs/interface.md §8), linked against the model; NULL: a

@@ -347,9 +347,10 @@ static int resolve_forces(hx_draft *r)
         hx_load *l = &m->loads[k];
         const raw_refs *refs = &r->rloads[k];
         const int two_body = l->kind == HX_LOAD_VECTOR && refs->ids[1] != 0;
-        const char *owner = l->kind != HX_LOAD_VECTOR ? "Force_Scalar_TwoBody"
-                            : two_body                ? "Force_Vector_TwoBody"
-                                                      : "Force_Vector_OneBody";
+        const char *owner = l->builtin != HX_LOAD_AS_WRITTEN ? hx_load_element_name(l)
+                            : l->kind != HX_LOAD_VECTOR        ? "Force_Scalar_TwoBody"
+                            : two_body                         ? "Force_Vector_TwoBody"
+                                                               : "Force_Vector_OneBody";
         l->j_marker = l->ref_marker = -1;
         if (marker_ref(r, refs->ids[0], l->line, owner, l->id,
                        l->kind == HX_LOAD_VECTOR && !two_body ? "marker_id" : "i_marker_id",
@@ -357,7 +358,9 @@ static int resolve_forces(hx_draft *r)
             return -1;
         if ((l->kind != HX_LOAD_VECTOR || two_body) &&
             marker_ref(r, refs->ids[1], l->line, owner, l->id,
-                       two_body ? "j_floating_marker_id" : "j_marker_id", &l->j_marker) != 0)
+                       two_body && l->builtin == HX_LOAD_AS_WRITTEN ? "j_floating_marker_id"
+                                                                    : "j_marker_id",
+                       &l->j_marker) != 0)
             return -1;
         if (l->kind == HX_LOAD_VECTOR && refs->ids[2] != 0 &&
             marker_ref(r, refs->ids[2], l->line, owner, l->id, "ref_marker_id", &l->ref_marker) != 0)

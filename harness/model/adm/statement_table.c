@@ -76,6 +76,15 @@ static const hx_adm_keyword sforce[] = {
     NEED_ID("I", "MARKER"), NEED_ID("J", "MARKER"), FLAG("TRANSLATION"), FLAG("ROTATION"),
     FLAG("ACTIONONLY"), K("FUNCTION", HX_ADM_EXPR, 1, 1, 1, NULL), ROUTINES(1), KEND};
 
+static const hx_adm_keyword springdamper[] = {
+    NEED_ID("I", "MARKER"), NEED_ID("J", "MARKER"), FLAG("TRANSLATIONAL"), FLAG("ROTATIONAL"),
+    REAL("K", 1), REAL("C", 1), REAL("LENGTH", 1), REAL("FORCE", 1), REAL("KT", 1),
+    REAL("CT", 1), ANGLES("ANGLE", 1), REAL("TORQUE", 1), KEND};
+
+static const hx_adm_keyword bushing[] = {
+    NEED_ID("I", "MARKER"), NEED_ID("J", "MARKER"), REAL("K", 3), REAL("C", 3), REAL("KT", 3),
+    REAL("CT", 3), REAL("FORCE", 3), REAL("TORQUE", 3), KEND};
+
 static const hx_adm_keyword field[] = {
     NEED_ID("I", "MARKER"), NEED_ID("J", "MARKER"), EXPR("FUNCTION"), ROUTINES(1),
     REAL("CMATRIX", 36), REAL("KMATRIX", 36), REAL("CRATIO", 1), REAL("FORCE", 6),
@@ -151,6 +160,8 @@ const hx_adm_spec hx_adm_statements[] = {
     BUILD("VTORQUE", vtorque, hx_adm_build_gforce),
     BUILD("SFORCE", sforce, hx_adm_build_sforce),
     BUILD("FIELD", field, hx_adm_build_field),
+    BUILD("SPRINGDAMPER", springdamper, hx_adm_build_springdamper),
+    BUILD("BUSHING", bushing, hx_adm_build_bushing),
     BUILD("FORCE_STATEEQN", force_stateeqn, hx_adm_build_force_stateeqn),
     BUILD("DIFF", diff, hx_adm_build_diff),
     BUILD("VARIABLE", variable, hx_adm_build_variable),
@@ -181,9 +192,6 @@ const hx_adm_spec hx_adm_statements[] = {
     UNSIMULATED("GEAR", "a GEAR (a constraint through a common velocity marker), which the"
                         " harness does not simulate yet"),
     UNSIMULATED("BEAM", "a BEAM, which the harness does not simulate yet"),
-    UNSIMULATED("BUSHING", "a BUSHING (Adams' linear bushing), which the harness does not"
-                           " simulate yet"),
-    UNSIMULATED("SPRINGDAMPER", "a SPRINGDAMPER, which the harness does not simulate yet"),
     UNSIMULATED("NFORCE", "a multi-point force (NFORCE), which the harness does not simulate"),
     UNSIMULATED("MFORCE", "a modal force on a flexible body, which the harness does not"
                           " simulate"),

@@ -50,7 +50,8 @@ static int switch_loads(const hx_command *c, const char *path, const hx_model *m
     for (int i = 0; i < c->nids; ++i) {
         int found = 0;
         for (int k = 0; k < m->nloads; ++k)
-            if (m->loads[k].id == c->ids[i] && (m->loads[k].kind != HX_LOAD_VECTOR) == scalar) {
+            if (m->loads[k].id == c->ids[i] && m->loads[k].builtin == HX_LOAD_AS_WRITTEN &&
+                (m->loads[k].kind != HX_LOAD_VECTOR) == scalar) { /* not a SPRINGDAMPER's */
                 off[k] = c->kind == HX_COMMAND_DEACTIVATE;
                 found = 1;
             }

@@ -1,0 +1,27 @@
+/*
+ * MotionSolve's built-in linear force elements (docs/interface.md §7.17):
+ * Force_SpringDamper and Force_Bushing, each built as the expression load
+ * that is the same force (load_elements.h), so that the Jacobian's exact
+ * partials, the force functions of requests and the energy balance are the
+ * loads' own.
+ */
+#ifndef HX_MODEL_BUILTIN_FORCES_H
+#define HX_MODEL_BUILTIN_FORCES_H
+
+#include "model/xml_schema.h"
+
+extern const hx_attr_spec hx_springdamper_attrs[];
+extern const hx_attr_spec hx_bushing_attrs[];
+
+/* A Force_SpringDamper: a Force_Scalar_TwoBody whose value is
+ * -damping VR(I,J) - stiffness (DM(I,J) - length) + preload (TRANSLATIONAL),
+ * or -damping WZ(I,J,J) - stiffness (AZ(I,J) - length) + preload about J's z
+ * axis (ROTATIONAL, length the free angle in radians). */
+void hx_build_springdamper(hx_draft *d, const hx_element_read *e);
+
+/* A Force_Bushing: a Force_Vector_TwoBody on I in J's axes, J's body taking
+ * the reaction; component x: -kx DX(I,J,J) - cx VX(I,J,J,J) + preload_x, and
+ * -ktx AX(I,J) - ctx WX(I,J,J) + preload_tx for the torque (y, z alike). */
+void hx_build_bushing(hx_draft *d, const hx_element_read *e);
+
+#endif
