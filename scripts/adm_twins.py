@@ -187,6 +187,36 @@ def twin(path):
             else:
                 args.append("FUNCTION = " + a.get("val", a.get("val_expression")))
             statement("SFORCE", i, args)
+        elif tag == "Force_SpringDamper":
+            rotational = a["type"].upper() == "ROTATIONAL"
+            keys = ("KT", "CT", "ANGLE", "TORQUE") if rotational else ("K", "C", "LENGTH", "FORCE")
+            args = ["ROTATIONAL" if rotational else "TRANSLATIONAL", "I = " + a["i_marker_id"],
+                    "J = " + a["j_marker_id"]]
+            for key, attr in zip(keys, ("stiffness", "damping", "length", "preload")):
+                if attr in a:
+                    args.append("%s = %s" % (key, a[attr]))
+            statement("SPRINGDAMPER", i, args)
+        elif tag == "Force_Bushing":
+            args = ["I = " + a["i_marker_id"], "J = " + a["j_marker_id"]]
+            for key, names in (("K", ("kx", "ky", "kz")), ("C", ("cx", "cy", "cz")),
+                               ("KT", ("ktx", "kty", "ktz")), ("CT", ("ctx", "cty", "ctz")),
+                               ("FORCE", ("preload_x", "preload_y", "preload_z")),
+                               ("TORQUE", ("preload_tx", "preload_ty", "preload_tz"))):
+                if any(n in a for n in names):
+                    args.append("%s = %s" % (key, ", ".join(a.get(n, "0") for n in names)))
+            statement("BUSHING", i, args)
+        elif tag == "Force_Beam":
+            if any(k.startswith("preload") for k in a):
+                sys.exit("%s: Force_Beam %s: Adams' BEAM has no preload" % (path, i))
+            args = ["I = " + a["i_marker_id"], "J = " + a["j_marker_id"]]
+            for key, attr in (("LENGTH", "length"), ("EMODULUS", "e"), ("GMODULUS", "g"),
+                              ("AREA", "area"), ("IXX", "ixx"), ("IYY", "iyy"), ("IZZ", "izz"),
+                              ("ASY", "asy"), ("ASZ", "asz"), ("CRATIO", "cratio")):
+                if attr in a:
+                    args.append("%s = %s" % (key, a[attr]))
+            if "cmatrix" in a:
+                args.append("CMATRIX = " + ", ".join(a["cmatrix"].replace(",", " ").split()))
+            statement("BEAM", i, args)
         elif tag == "Force_StateEqn":
             args = ["I = " + a["i_marker_id"], "JFLOAT = " + a["j_floating_marker_id"],
                     "RM = " + a["ref_marker_id"], "X = " + a["x_array_id"]]

@@ -155,7 +155,7 @@ static void unsimulated_statements_are_named(void **state)
             "COUPLER/1, JOINTS=3, 4, SCALES=1, 2\n"                  /* line 13 */
             "FIELD/4, I=21, J=10,\n, FUNCTION = -100*(DM(21,10) - 5)\n"
             ", - 2*VR(21,10)\n"                                      /* lines 14-16 */
-            "BEAM/1, I=21, J=10, LENGTH=1\n"                         /* line 17 */
+            "NFORCE/1, I=21, 30, JFLOAT=10, LENGTH=1, 1\n"           /* line 17 */
             "INTEGRATOR/GSTIFF, ERROR=1E-4\nEQUILIBRIUM/STABILITY=1\nEQUILIBRIUM/TLIMIT=1\n"
             "VARIABLE/1, FUNCTION=DX(21,10)\nVARIABLE/2, FUNCTION=DX(21,10)+1\n"
             "PINPUT/1, VARIABLES=1, 2\nPOUTPUT/2, VARIABLES=2");
@@ -168,7 +168,8 @@ static void unsimulated_statements_are_named(void **state)
                     "unsimulated.adm:13: warning: COUPLER/1: it names JOINT/3, which is not simulated",
                     "unsimulated.adm:14: warning: FIELD/4: a FUNCTION expression, which this harness"
                     " does not evaluate yet",
-                    "unsimulated.adm:17: warning: BEAM/1: a BEAM", "run and bench refuse the model",
+                    "unsimulated.adm:17: warning: NFORCE/1: a multi-point force (NFORCE)",
+                    "run and bench refuse the model",
                     "unsimulated.adm:19: note: EQUILIBRIUM is read and has no effect",
                     "unsimulated.adm:18: note: INTEGRATOR: GSTIFF is read");
     /* VARIABLE/2 by an expression is simulated (docs/interface.md §9.6) */

@@ -120,6 +120,8 @@ static const char bushing[] =
     "BUSHING/5, I=20, J=10, K=10,20,30, C=1,2,3, KT=100,200,300, CT=4,5,6, FORCE=7,8,9,"
     " TORQUE=0.7,0.8,0.9\n"
     "SPRINGDAMPER/6, TRANSLATION, I=20, J=11, K=4, C=0.25, LENGTH=1, FORCE=0.5\n"
+    "SFORCE/6, TRANSLATION, I=20, J=11, FUNCTION=1.5\n"
+    "SPRINGDAMPER/8, TRANSLATION, I=20, J=11, K=4, C=0.25, LENGTH=1, FORCE=0.5\n"
     "END\n";
 
 static double dot3(const double *a, const double *b)
@@ -172,14 +174,18 @@ static void bushing_components_by_hand(void **state)
     /* the net force at J is the bushing's alone; in the world's axes */
     EXPECT(&e, "TZ(10,20,10)", TJ[2], 1e-12);
     EXPECT(&e, "BUSHING(5,0,2,0)", -F[1], 1e-12); /* the world's x is J's -y */
-    /* SFORCE reads the spring-damper: -4 (DM - 1) - 0.25 VR + 0.5 along 11 to 20 */
+    /* SPDP (Adams' and MotionSolve's name) reads the spring-damper: -4 (DM - 1)
+     * - 0.25 VR + 0.5 along 11 to 20; SFORCE the SFORCE of its id, 1.5, and with
+     * no SFORCE of its id (8) the spring-damper */
     const double dm = sqrt(14.0), vr = output(&e, "VR(20,11)");
     const double s = -4 * (dm - 1) - 0.25 * vr + 0.5;
     assert_true(fabs(vr) > 0.05);
-    EXPECT(&e, "SFORCE(6,0,2,0)", s * 1 / dm, 1e-12);
-    EXPECT(&e, "SFORCE(6,0,4,0)", s * 3 / dm, 1e-12);
-    EXPECT(&e, "SFORCE(6,1,3,0)", -s * 2 / dm, 1e-12);
-    EXPECT(&e, "SFORCE(6,0,1,0)", fabs(s), 1e-12);
+    EXPECT(&e, "SPDP(6,0,2,0)", s * 1 / dm, 1e-12);
+    EXPECT(&e, "SPDP(6,0,4,0)", s * 3 / dm, 1e-12);
+    EXPECT(&e, "SPDP(6,1,3,0)", -s * 2 / dm, 1e-12);
+    EXPECT(&e, "SPDP(6,0,1,0)", fabs(s), 1e-12);
+    EXPECT(&e, "SFORCE(6,0,2,0)", 1.5 * 1 / dm, 1e-12);
+    EXPECT(&e, "SFORCE(8,0,4,0)", s * 3 / dm, 1e-12);
     release(&e);
 }
 

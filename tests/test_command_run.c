@@ -203,11 +203,13 @@ static void what_the_run_cannot_do_is_refused(void **state)
     (void)state;
     refuse("DEACTIVATE/JOINT, ID=1", "refused.acf:4: ", "DEACTIVATE/JOINT",
            "the harness switches SFORCE, VFORCE, VTORQUE and GFORCE given by FUNCTION"
-           " expressions, not other elements yet");
+           " expressions, SPRINGDAMPER, BUSHING and BEAM, not other elements yet");
     refuse("ACTIVATE/SFORCE, ID=1,2", "refused.acf:4: ", "ACTIVATE/SFORCE",
            "the model has no SFORCE/2 given by FUNCTION expressions");
     refuse("DEACTIVATE/GFORCE, ID=1", "refused.acf:4: ", "DEACTIVATE/GFORCE",
            "the model has no GFORCE/1"); /* its SFORCE/1 is a scalar load */
+    refuse("DEACTIVATE/SPRINGDAMPER, ID=1", "refused.acf:4: ", "DEACTIVATE/SPRINGDAMPER",
+           "the model has no SPRINGDAMPER/1\n"); /* nor a built-in one */
     refuse("VARIABLE/3, FUNCTION=TIME", "refused.acf:4: ", "VARIABLE/3",
            "the model has no VARIABLE/3 given by a FUNCTION");
     refuse("PREFERENCES/SOLVERBIAS=CXX", "refused.acf:4: ", "PREFERENCES",
@@ -262,6 +264,44 @@ static void a_deactivated_spring_lets_the_mass_fall(void **state)
         const double free_fall = y0 - 0.5 * g * 0.7 * 0.7;
         assert_true(tb.y[12] > free_fall + 0.1);
     }
+}
+
+/* A 2 kg part held at (1, 0, 0) by a SPRINGDAMPER (1), a BUSHING (2) and a
+ * BEAM (3) to the ground's origin, all three deactivated: it falls freely,
+ * y = -9.81 t^2 / 2, x = 1 (each would pull it once it moves; the bushing
+ * at once, 1000 N along -x); the BUSHING activated again at 0.3 s pulls it
+ * towards the origin. */
+static void built_in_forces_are_switched(void **state)
+{
+    (void)state;
+    const char *adm = test_write_file(
+        "held.adm", "held\nACCGRAV/JGRAV = -9.81\nPART/1, GROUND\nMARKER/10, PART = 1\n"
+                    "PART/2, MASS = 2, CM = 20, IP = 1, 1, 1\nMARKER/20, PART = 2, QP = 1, 0, 0\n"
+                    "SPRINGDAMPER/1, TRANSLATION, I = 20, J = 10, K = 100, C = 1, LENGTH = 1\n"
+                    "BUSHING/2, I = 20, J = 10, K = 1000, 1000, 1000, KT = 10, 10, 10\n"
+                    "BEAM/3, I = 20, J = 10, LENGTH = 1, EMODULUS = 1E6, GMODULUS = 4E5,\n"
+                    ", AREA = 1E-2, IXX = 1E-4, IYY = 1E-4, IZZ = 1E-4\nEND\n");
+    const char *acf = test_write_file("held.acf", "held\n\n"
+                                      "DEACTIVATE/SPRINGDAMPER, ID=1\n"
+                                      "DEACTIVATE/BUSHING, ID=2\n"
+                                      "DEACTIVATE/BEAM, ID=3\n"
+                                      "SIMULATE/DYNAMIC, END=0.3, STEPS=3\n"
+                                      "ACTIVATE/BUSHING, ID=2\n"
+                                      "SIMULATE/DYNAMIC, END=0.5, STEPS=2\n");
+    test_captured c;
+    table tb;
+    run((const char *const[]){adm, "--acf", acf, "--quiet", "--out",
+                              test_temp_path("held.csv"), NULL}, &c);
+    if (c.status != 0)
+        fail_msg("%s", c.err);
+    read_table(test_temp_path("held.csv"), &tb);
+    assert_int_equal(tb.n, 6);
+    for (int k = 0; k <= 3; ++k) {
+        const double t = 0.1 * k;
+        assert_close(tb.x[k], 1.0, 0.0, 1e-12);
+        assert_close(tb.y[k], -4.905 * t * t, 0.0, 1e-8);
+    }
+    assert_true(tb.x[5] < 0.5);
 }
 
 /* ---- ACCGRAV ------------------------------------------------------------------------------- */
@@ -321,6 +361,7 @@ int main(void)
         cmocka_unit_test(options_override_the_file),
         cmocka_unit_test(what_the_run_cannot_do_is_refused),
         cmocka_unit_test(a_deactivated_spring_lets_the_mass_fall),
+        cmocka_unit_test(built_in_forces_are_switched),
         cmocka_unit_test(accgrav_changes_gravity_between_segments),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -6,7 +6,12 @@
  */
 #include "model/builtin_forces.h"
 
+#include <ctype.h>
+#include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 #include <strings.h>
 
 #include "model/load_elements.h"
@@ -24,6 +29,14 @@ const hx_attr_spec hx_bushing_attrs[] = {
     REAL("preload_x"), REAL("preload_y"), REAL("preload_z"), REAL("preload_tx"),
     REAL("preload_ty"), REAL("preload_tz"), END};
 
+const hx_attr_spec hx_beam_attrs[] = {
+    ID, REQUIRED("i_marker_id", HX_ATTR_INT), REQUIRED("j_marker_id", HX_ATTR_INT),
+    REQUIRED("length", HX_ATTR_REAL), REQUIRED("E", HX_ATTR_REAL), REQUIRED("G", HX_ATTR_REAL),
+    REQUIRED("area", HX_ATTR_REAL), REQUIRED("ixx", HX_ATTR_REAL), REQUIRED("iyy", HX_ATTR_REAL),
+    REQUIRED("izz", HX_ATTR_REAL), REAL("ASY"), REAL("ASZ"), REAL("cratio"), TEXT("cmatrix"),
+    REAL("preload_x"), REAL("preload_y"), REAL("preload_z"), REAL("preload_tx"),
+    REAL("preload_ty"), REAL("preload_tz"), END};
+
 /* The attributes the load builders read, for the load made of the element. */
 static const hx_attr_spec scalar_load[] = {INT("i_marker_id"), INT("j_marker_id"),
                                            TEXT("val_expression"), END};
@@ -31,7 +44,7 @@ static const hx_attr_spec vector_load[] = {TEXT("fx_expression"), TEXT("fy_expre
                                            TEXT("fz_expression"), TEXT("tx_expression"),
                                            TEXT("ty_expression"), TEXT("tz_expression"), END};
 
-#define TEXT_MAX 256
+#define TEXT_MAX 1536 /* a beam's row: 13 terms of at most 100 characters */
 
 /* A stiffness or damping below 0 feeds energy in: refused, as the pages do. */
 static int refuse_negative(hx_draft *d, const hx_element_read *e, const char *const *names,
@@ -122,4 +135,155 @@ void hx_build_bushing(hx_draft *d, const hx_element_read *e)
     const int before = d->m->nloads;
     hx_build_vector_load(d, &x, i, j, j);
     tag_last(d, before, HX_LOAD_BUSHING);
+}
+
+/* Timoshenko's stiffness of a straight beam along J's x axis (§7.17):
+ * Py, Pz the shear's share of the bending in y and in z. */
+static void beam_stiffness(const hx_element_read *e, double K[6][6])
+{
+    const double L = hx_attr_number(e, "length", 0.0), E = hx_attr_number(e, "E", 0.0);
+    const double G = hx_attr_number(e, "G", 0.0), A = hx_attr_number(e, "area", 0.0);
+    const double iyy = hx_attr_number(e, "iyy", 0.0), izz = hx_attr_number(e, "izz", 0.0);
+    const double py = 12.0 * E * izz * hx_attr_number(e, "ASY", 0.0) / (G * A * L * L);
+    const double pz = 12.0 * E * iyy * hx_attr_number(e, "ASZ", 0.0) / (G * A * L * L);
+    memset(K, 0, 36 * sizeof K[0][0]);
+    K[0][0] = E * A / L;
+    K[1][1] = 12.0 * E * izz / (L * L * L * (1.0 + py));
+    K[1][5] = K[5][1] = -6.0 * E * izz / (L * L * (1.0 + py));
+    K[2][2] = 12.0 * E * iyy / (L * L * L * (1.0 + pz));
+    K[2][4] = K[4][2] = 6.0 * E * iyy / (L * L * (1.0 + pz));
+    K[3][3] = G * hx_attr_number(e, "ixx", 0.0) / L;
+    K[4][4] = (4.0 + pz) * E * iyy / (L * (1.0 + pz));
+    K[5][5] = (4.0 + py) * E * izz / (L * (1.0 + py));
+}
+
+/* The damping: cratio times K, or cmatrix's 21 numbers (Adams' CMATRIX: the
+ * lower half by columns, c11 c21 .. c61 c22 .. c66); 0, or -1 (failed). */
+static int beam_damping(hx_draft *d, const hx_element_read *e, double K[6][6], double C[6][6])
+{
+    const char *text = hx_attr_text(e, "cmatrix");
+    const double ratio = hx_attr_number(e, "cratio", 0.0);
+    if (text == NULL) {
+        for (int r = 0; r < 6; ++r)
+            for (int c = 0; c < 6; ++c)
+                C[r][c] = ratio * K[r][c];
+        return 0;
+    }
+    if (hx_attr_present(e, "cratio")) {
+        hx_draft_fail(d, e->line, "%s %d: give cmatrix or cratio, not both", e->name, e->id);
+        return -1;
+    }
+    double r[22];
+    int n = 0;
+    for (const char *s = text; *s != '\0';) {
+        if (*s == ',' || isspace((unsigned char)*s)) {
+            ++s;
+            continue;
+        }
+        char *end;
+        const double x = strtod(s, &end);
+        if (end == s || !isfinite(x) || (*end != '\0' && *end != ',' &&
+                                         !isspace((unsigned char)*end))) {
+            hx_draft_fail(d, e->line, "%s %d: cmatrix: \"%.20s\" is not a number", e->name,
+                          e->id, s);
+            return -1;
+        }
+        if (n < 22)
+            r[n] = x;
+        ++n, s = end;
+    }
+    if (n != 21) {
+        hx_draft_fail(d, e->line, "%s %d: cmatrix holds %d numbers: it takes 21 (the lower"
+                      " half by columns)", e->name, e->id, n);
+        return -1;
+    }
+    n = 0;
+    for (int c = 0; c < 6; ++c)
+        for (int row = c; row < 6; ++row, ++n)
+            C[row][c] = C[c][row] = r[n];
+    for (int k = 0; k < 6; ++k)
+        if (C[k][k] < 0.0) { /* a negative damping feeds energy in, as a bushing's would */
+            hx_draft_fail(d, e->line, "%s %d: cmatrix: c%d%d = %g: a damping on the diagonal"
+                          " must not be negative", e->name, e->id, k + 1, k + 1, C[k][k]);
+            return -1;
+        }
+    return 0;
+}
+
+/* A stiffness or damping the numbers overflow (a tiny length, a huge modulus)
+ * is refused rather than written into the generated text. */
+static int refuse_infinite(hx_draft *d, const hx_element_read *e, double K[6][6], double C[6][6])
+{
+    for (int r = 0; r < 6; ++r)
+        for (int c = 0; c < 6; ++c)
+            if (!isfinite(K[r][c]) || !isfinite(C[r][c])) {
+                hx_draft_fail(d, e->line, "%s %d: its %s %c%d%d is not a finite number",
+                              e->name, e->id, isfinite(K[r][c]) ? "damping" : "stiffness",
+                              isfinite(K[r][c]) ? 'C' : 'K', r + 1, c + 1);
+                return -1;
+            }
+    return 0;
+}
+
+/* Appends one term of a generated text; -1 when it does not fit. */
+static int append(char *out, size_t *used, const char *format, ...)
+{
+    va_list args;
+    va_start(args, format);
+    const int n = vsnprintf(out + *used, TEXT_MAX - *used, format, args);
+    va_end(args);
+    if (n < 0 || (size_t)n >= TEXT_MAX - *used)
+        return -1;
+    *used += (size_t)n;
+    return 0;
+}
+
+void hx_build_beam(hx_draft *d, const hx_element_read *e)
+{
+    static const char *const positive[4] = {"length", "E", "G", "area"};
+    static const char *const signs[6] = {"ixx", "iyy", "izz", "ASY", "ASZ", "cratio"};
+    static const char *const preloads[6] = {"preload_x", "preload_y", "preload_z",
+                                            "preload_tx", "preload_ty", "preload_tz"};
+    for (int k = 0; k < 4; ++k)
+        if (!(hx_attr_number(e, positive[k], 0.0) > 0.0)) {
+            hx_draft_fail(d, e->line, "%s %d: %s = %g: it must be positive", e->name, e->id,
+                          positive[k], hx_attr_number(e, positive[k], 0.0));
+            return;
+        }
+    double K[6][6], C[6][6];
+    if (refuse_negative(d, e, signs, 6) != 0)
+        return;
+    beam_stiffness(e, K);
+    if (beam_damping(d, e, K, C) != 0 || refuse_infinite(d, e, K, C) != 0)
+        return;
+    const int i = hx_attr_int(e, "i_marker_id", 0), j = hx_attr_int(e, "j_marker_id", 0);
+    const double L = hx_attr_number(e, "length", 0.0);
+    char text[6][TEXT_MAX];
+    for (int r = 0; r < 6; ++r) {
+        size_t used = 0;
+        int bad = append(text[r], &used, "(%.17g)", hx_attr_number(e, preloads[r], 0.0));
+        for (int c = 0; c < 6 && bad == 0; ++c) {
+            const char axis = (char)('X' + c % 3);
+            if (K[r][c] != 0.0 && c == 0) /* the stretch from the free length */
+                bad = append(text[r], &used, "-(%.17g)*(DX(%d,%d,%d)-(%.17g))", K[r][c], i, j,
+                             j, L);
+            else if (K[r][c] != 0.0 && c < 3)
+                bad = append(text[r], &used, "-(%.17g)*D%c(%d,%d,%d)", K[r][c], axis, i, j, j);
+            else if (K[r][c] != 0.0)
+                bad = append(text[r], &used, "-(%.17g)*A%c(%d,%d)", K[r][c], axis, i, j);
+            if (bad == 0 && C[r][c] != 0.0 && c < 3)
+                bad = append(text[r], &used, "-(%.17g)*V%c(%d,%d,%d,%d)", C[r][c], axis, i, j,
+                             j, j);
+            else if (bad == 0 && C[r][c] != 0.0)
+                bad = append(text[r], &used, "-(%.17g)*W%c(%d,%d,%d)", C[r][c], axis, i, j, j);
+        }
+        if (bad != 0) { /* not at TEXT_MAX */
+            hx_draft_fail(d, e->line, "%s %d: its generated text is too long", e->name, e->id);
+            return;
+        }
+    }
+    hx_element_read x = as_load(e, vector_load, 6, text);
+    const int before = d->m->nloads;
+    hx_build_vector_load(d, &x, i, j, j);
+    tag_last(d, before, HX_LOAD_BEAM);
 }

@@ -1,6 +1,6 @@
 /*
  * MotionSolve's built-in linear force elements (docs/interface.md §7.17):
- * Force_SpringDamper and Force_Bushing, each built as the expression load
+ * Force_SpringDamper, Force_Bushing and Force_Beam, each built as the expression load
  * that is the same force (load_elements.h), so that the Jacobian's exact
  * partials, the force functions of requests and the energy balance are the
  * loads' own.
@@ -12,6 +12,7 @@
 
 extern const hx_attr_spec hx_springdamper_attrs[];
 extern const hx_attr_spec hx_bushing_attrs[];
+extern const hx_attr_spec hx_beam_attrs[];
 
 /* A Force_SpringDamper: a Force_Scalar_TwoBody whose value is
  * -damping VR(I,J) - stiffness (DM(I,J) - length) + preload (TRANSLATIONAL),
@@ -23,5 +24,11 @@ void hx_build_springdamper(hx_draft *d, const hx_element_read *e);
  * the reaction; component x: -kx DX(I,J,J) - cx VX(I,J,J,J) + preload_x, and
  * -ktx AX(I,J) - ctx WX(I,J,J) + preload_tx for the torque (y, z alike). */
 void hx_build_bushing(hx_draft *d, const hx_element_read *e);
+
+/* A Force_Beam: a Force_Vector_TwoBody on I in J's axes, J's body taking the
+ * reaction, of -K d - C v + preload: d I's displacement from J less the free
+ * length along J's x and its angles AX AY AZ, v its velocity and angular
+ * velocity in J's axes, K Timoshenko's stiffness, C cratio K or cmatrix. */
+void hx_build_beam(hx_draft *d, const hx_element_read *e);
 
 #endif

@@ -533,6 +533,7 @@ const hx_element_spec hx_element_specs[] = {
     {"Force_StateEqn", hx_stateeqn_attrs, hx_build_stateeqn, NULL, 0},
     {"Force_SpringDamper", hx_springdamper_attrs, hx_build_springdamper, NULL, 0},
     {"Force_Bushing", hx_bushing_attrs, hx_build_bushing, NULL, 0},
+    {"Force_Beam", hx_beam_attrs, hx_build_beam, NULL, 0},
     {"Reference_Array", hx_array_attrs, hx_build_array, hx_array_text, 0},
     {"Reference_Variable", hx_variable_attrs, hx_build_variable, NULL, 0},
     {"Post_Request", hx_request_attrs, hx_build_request, NULL, 0},

@@ -13,17 +13,28 @@ int hx_marker_between(int a, int b, int i, int j)
 /* What each function reads (docs/interface.md §8.3): a Force_Scalar_TwoBody
  * (SFORCE; a Force_SpringDamper, when no Force_Scalar_TwoBody has its id),
  * any Force_Vector element (VFORCE, VTORQ and GFORCE alike, as MotionSolve's
- * pages define them), a Force_Bushing (BUSHING), a Force_Field (FIELD). */
+ * pages define them), a Force_Bushing (BUSHING), a Force_Beam (BEAM), a
+ * Force_SpringDamper (SPDP), a Force_Field (FIELD). */
 static int reads_load(int function, const hx_load *l, enum hx_load_builtin builtin)
 {
     if (l->builtin != builtin)
         return 0;
     if (function == HX_FN_SFORCE)
         return l->kind != HX_LOAD_VECTOR;
-    if (function == HX_FN_BUSHING)
-        return builtin == HX_LOAD_BUSHING;
-    return (function == HX_FN_VFORCE || function == HX_FN_VTORQ || function == HX_FN_GFORCE) &&
-           l->kind == HX_LOAD_VECTOR;
+    if (function == HX_FN_VFORCE || function == HX_FN_VTORQ || function == HX_FN_GFORCE)
+        return l->kind == HX_LOAD_VECTOR;
+    return builtin != HX_LOAD_AS_WRITTEN; /* the built-in element of its own function */
+}
+
+/* The built-in element a function names first (SFORCE: one as written). */
+static enum hx_load_builtin builtin_of(int function)
+{
+    switch (function) {
+    case HX_FN_BUSHING: return HX_LOAD_BUSHING;
+    case HX_FN_BEAM: return HX_LOAD_BEAM;
+    case HX_FN_SPDP: return HX_LOAD_SPRINGDAMPER;
+    default: return HX_LOAD_AS_WRITTEN;
+    }
 }
 
 static int reads_force(int function, const hx_force *f)
@@ -40,8 +51,7 @@ static int reads_force(int function, const hx_force *f)
 int hx_marker_element_find(const hx_model *m, int function, int id, int *force, int *index,
                            char *what, size_t size)
 {
-    const enum hx_load_builtin builtin = function == HX_FN_BUSHING ? HX_LOAD_BUSHING
-                                                                     : HX_LOAD_AS_WRITTEN;
+    const enum hx_load_builtin builtin = builtin_of(function);
     for (int k = 0; k < m->nloads; ++k)
         if (m->loads[k].id == id && reads_load(function, &m->loads[k], builtin)) {
             *force = 0, *index = k;
@@ -64,6 +74,8 @@ int hx_marker_element_find(const hx_model *m, int function, int id, int *force, 
         break;
     case HX_FN_FIELD: snprintf(what, size, "Force_Field (FIELD) %d in the model", id); break;
     case HX_FN_BUSHING: snprintf(what, size, "Force_Bushing (BUSHING) %d in the model", id); break;
+    case HX_FN_BEAM: snprintf(what, size, "Force_Beam (BEAM) %d in the model", id); break;
+    case HX_FN_SPDP: snprintf(what, size, "Force_SpringDamper (SPDP) %d in the model", id); break;
     default:
         snprintf(what, size, "Force_Vector_TwoBody or Force_Vector_OneBody (VFORCE, VTORQUE,"
                  " GFORCE) %d in the model", id);

@@ -18,7 +18,7 @@ int hx_marker_between(int a, int b, int i, int j);
 
 /* The force element that the element-force function `function`
  * (model/expr/functions.h: HX_FN_SFORCE, HX_FN_VFORCE, HX_FN_VTORQ,
- * HX_FN_GFORCE, HX_FN_BUSHING, HX_FN_FIELD) names with id: 0 with *force 0
+ * HX_FN_GFORCE, HX_FN_BUSHING, HX_FN_BEAM, HX_FN_SPDP, HX_FN_FIELD) names with id: 0 with *force 0
  * and *index in m->loads (an element by expressions) or *force 1 and *index
  * in m->forces (an element by a user routine); -1 with what it names in
  * `what` ("Force_Field (FIELD) 7 in the model") when m has none. */

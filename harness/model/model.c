@@ -143,8 +143,12 @@ const char *hx_force_element_name(const hx_force *f)
 
 const char *hx_load_element_name(const hx_load *l)
 {
-    if (l->builtin != HX_LOAD_AS_WRITTEN)
-        return l->builtin == HX_LOAD_BUSHING ? "Force_Bushing" : "Force_SpringDamper";
+    switch (l->builtin) {
+    case HX_LOAD_SPRINGDAMPER: return "Force_SpringDamper";
+    case HX_LOAD_BUSHING: return "Force_Bushing";
+    case HX_LOAD_BEAM: return "Force_Beam";
+    case HX_LOAD_AS_WRITTEN: break;
+    }
     if (l->kind != HX_LOAD_VECTOR)
         return "Force_Scalar_TwoBody";
     return l->j_marker >= 0 ? "Force_Vector_TwoBody" : "Force_Vector_OneBody";

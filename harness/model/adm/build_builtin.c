@@ -1,10 +1,13 @@
 /*
  * The built-in linear force statements (docs/interface.md §9.5):
- * SPRINGDAMPER into Force_SpringDamper, BUSHING into Force_Bushing, the
- * elements MotionSolve's pre-processor maps them to, built by the XML
- * reader's builders (model/builtin_forces.h).
+ * SPRINGDAMPER into Force_SpringDamper, BUSHING into Force_Bushing, BEAM into
+ * Force_Beam, the elements MotionSolve's pre-processor maps them to, built
+ * by the XML reader's builders (model/builtin_forces.h).
  */
 #include "model/adm/translate.h"
+
+#include <stdio.h>
+#include <strings.h>
 
 static const char *const rotation_keys[4] = {"KT", "CT", "ANGLE", "TORQUE"};
 static const char *const translation_keys[4] = {"K", "C", "LENGTH", "FORCE"};
@@ -51,5 +54,36 @@ int hx_adm_build_bushing(hx_adm_reader *r, hx_adm_entry *e)
     for (int k = 0; k < 6; ++k)
         for (int n = 0; n < 3; ++n)
             hx_adm_element_number(&el, attrs[k][n], hx_adm_number(e, keys[k], n, 0.0));
+    return hx_adm_element_build(r, e, &el, NULL);
+}
+
+int hx_adm_build_beam(hx_adm_reader *r, hx_adm_entry *e)
+{
+    static const char *const keys[10] = {"LENGTH", "EMODULUS", "GMODULUS", "AREA", "IXX",
+                                         "IYY",    "IZZ",      "ASY",      "ASZ",  "CRATIO"};
+    static const char *const attrs[10] = {"length", "E",   "G",   "area", "ixx",
+                                          "iyy",    "izz", "ASY", "ASZ",  "cratio"};
+    const char *formulation = hx_adm_text(e, "FORMULATION");
+    if (formulation != NULL && strcasecmp(formulation, "LINEAR") != 0)
+        return hx_adm_fail(r, e, hx_adm_get(e, "FORMULATION")->line, "FORMULATION=%s: the"
+                           " harness simulates the LINEAR one only", formulation);
+    if (hx_adm_has(e, "CMATRIX") && hx_adm_has(e, "CRATIO"))
+        return hx_adm_fail(r, e, hx_adm_get(e, "CRATIO")->line, "give CMATRIX or CRATIO, not"
+                           " both");
+    hx_adm_element el;
+    hx_adm_element_init(&el, "Force_Beam");
+    hx_adm_element_number(&el, "i_marker_id", hx_adm_ref(e, "I"));
+    hx_adm_element_number(&el, "j_marker_id", hx_adm_ref(e, "J"));
+    for (int k = 0; k < 10; ++k)
+        if (hx_adm_has(e, keys[k]))
+            hx_adm_element_number(&el, attrs[k], hx_adm_number(e, keys[k], 0, 0.0));
+    char cmatrix[21 * 26]; /* 21 numbers of %.17g and a space each */
+    if (hx_adm_has(e, "CMATRIX")) {
+        size_t used = 0;
+        for (int k = 0; k < 21; ++k)
+            used += (size_t)snprintf(cmatrix + used, sizeof cmatrix - used, "%.17g ",
+                                     hx_adm_number(e, "CMATRIX", k, 0.0));
+        hx_adm_element_text(&el, "cmatrix", cmatrix);
+    }
     return hx_adm_element_build(r, e, &el, NULL);
 }

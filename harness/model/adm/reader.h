@@ -78,6 +78,7 @@ int hx_adm_build_sforce(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_field(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_springdamper(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_bushing(hx_adm_reader *r, hx_adm_entry *e);
+int hx_adm_build_beam(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_force_stateeqn(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_diff(hx_adm_reader *r, hx_adm_entry *e);
 int hx_adm_build_variable(hx_adm_reader *r, hx_adm_entry *e);

@@ -85,6 +85,13 @@ static const hx_adm_keyword bushing[] = {
     NEED_ID("I", "MARKER"), NEED_ID("J", "MARKER"), REAL("K", 3), REAL("C", 3), REAL("KT", 3),
     REAL("CT", 3), REAL("FORCE", 3), REAL("TORQUE", 3), KEND};
 
+static const hx_adm_keyword beam[] = {
+    NEED_ID("I", "MARKER"), NEED_ID("J", "MARKER"), K("LENGTH", HX_ADM_REAL, 1, 1, 1, NULL),
+    K("EMODULUS", HX_ADM_REAL, 1, 1, 1, NULL), K("GMODULUS", HX_ADM_REAL, 1, 1, 1, NULL),
+    K("AREA", HX_ADM_REAL, 1, 1, 1, NULL), K("IXX", HX_ADM_REAL, 1, 1, 1, NULL),
+    K("IYY", HX_ADM_REAL, 1, 1, 1, NULL), K("IZZ", HX_ADM_REAL, 1, 1, 1, NULL), REAL("ASY", 1),
+    REAL("ASZ", 1), REAL("CRATIO", 1), REAL("CMATRIX", 21), WORD("FORMULATION"), KEND};
+
 static const hx_adm_keyword field[] = {
     NEED_ID("I", "MARKER"), NEED_ID("J", "MARKER"), EXPR("FUNCTION"), ROUTINES(1),
     REAL("CMATRIX", 36), REAL("KMATRIX", 36), REAL("CRATIO", 1), REAL("FORCE", 6),
@@ -162,6 +169,7 @@ const hx_adm_spec hx_adm_statements[] = {
     BUILD("FIELD", field, hx_adm_build_field),
     BUILD("SPRINGDAMPER", springdamper, hx_adm_build_springdamper),
     BUILD("BUSHING", bushing, hx_adm_build_bushing),
+    BUILD("BEAM", beam, hx_adm_build_beam),
     BUILD("FORCE_STATEEQN", force_stateeqn, hx_adm_build_force_stateeqn),
     BUILD("DIFF", diff, hx_adm_build_diff),
     BUILD("VARIABLE", variable, hx_adm_build_variable),
@@ -191,7 +199,6 @@ const hx_adm_spec hx_adm_statements[] = {
     UNSIMULATED("UCON", "a user constraint, which the harness does not simulate yet"),
     UNSIMULATED("GEAR", "a GEAR (a constraint through a common velocity marker), which the"
                         " harness does not simulate yet"),
-    UNSIMULATED("BEAM", "a BEAM, which the harness does not simulate yet"),
     UNSIMULATED("NFORCE", "a multi-point force (NFORCE), which the harness does not simulate"),
     UNSIMULATED("MFORCE", "a modal force on a flexible body, which the harness does not"
                           " simulate"),

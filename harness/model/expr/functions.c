@@ -109,6 +109,8 @@ static const hx_expr_function table[HX_FN_COUNT] = {
     [HX_FN_JPRIM] = CONSTRAINT_FORCE("JPRIM"),
     [HX_FN_GCON] = CONSTRAINT_FORCE("GCON"),
     [HX_FN_ORIENT] = {"ORIENT", HX_FK_MEASURE, 3, 4, ALL_IDS, "(system, component, I[, J])"},
+    [HX_FN_BEAM] = ELEMENT_FORCE("BEAM"),
+    [HX_FN_SPDP] = ELEMENT_FORCE("SPDP"),
 };
 
 const hx_expr_function *hx_expr_function_at(int code)

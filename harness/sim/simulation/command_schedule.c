@@ -34,31 +34,54 @@ static void check_names(const hx_command_file *f, const char *path, const char *
                 path, f->output);
 }
 
+/* The loads a switched statement names: scalar or vector ones, as written
+ * (SFORCE .. GFORCE) or built in (§7.17); 0, or -1 for another statement. */
+static int switched_element(const char *element, int *scalar, enum hx_load_builtin *builtin)
+{
+    static const struct {
+        const char *name;
+        int scalar;
+        enum hx_load_builtin builtin;
+    } switched[7] = {{"SFORCE", 1, HX_LOAD_AS_WRITTEN},       {"VFORCE", 0, HX_LOAD_AS_WRITTEN},
+                     {"VTORQUE", 0, HX_LOAD_AS_WRITTEN},      {"GFORCE", 0, HX_LOAD_AS_WRITTEN},
+                     {"SPRINGDAMPER", 1, HX_LOAD_SPRINGDAMPER}, {"BUSHING", 0, HX_LOAD_BUSHING},
+                     {"BEAM", 0, HX_LOAD_BEAM}};
+    for (int k = 0; k < 7; ++k)
+        if (strcmp(element, switched[k].name) == 0) {
+            *scalar = switched[k].scalar, *builtin = switched[k].builtin;
+            return 0;
+        }
+    return -1;
+}
+
 /* ACTIVATE or DEACTIVATE c on the flags of the loads (docs/interface.md
- * §9.9): SFORCE names a scalar load, VFORCE, VTORQUE and GFORCE a vector one,
- * by id; 0, or -1 with the reason. */
+ * §9.9): SFORCE and SPRINGDAMPER name a scalar load, VFORCE, VTORQUE, GFORCE,
+ * BUSHING and BEAM a vector one, by id; 0, or -1 with the reason. */
 static int switch_loads(const hx_command *c, const char *path, const hx_model *m,
                         unsigned char *off, hx_message *msg)
 {
     const char *what = c->kind == HX_COMMAND_ACTIVATE ? "ACTIVATE" : "DEACTIVATE";
-    const int scalar = strcmp(c->element, "SFORCE") == 0;
-    if (!scalar && strcmp(c->element, "VFORCE") != 0 && strcmp(c->element, "VTORQUE") != 0 &&
-        strcmp(c->element, "GFORCE") != 0)
+    int scalar;
+    enum hx_load_builtin builtin;
+    if (switched_element(c->element, &scalar, &builtin) != 0)
         return hx_fail(msg, "%s:%d: %s/%s: the harness switches SFORCE, VFORCE, VTORQUE and"
-                       " GFORCE given by FUNCTION expressions, not other elements yet", path,
-                       c->line, what, c->element);
+                       " GFORCE given by FUNCTION expressions, SPRINGDAMPER, BUSHING and BEAM,"
+                       " not other elements yet", path, c->line, what, c->element);
     for (int i = 0; i < c->nids; ++i) {
         int found = 0;
         for (int k = 0; k < m->nloads; ++k)
-            if (m->loads[k].id == c->ids[i] && m->loads[k].builtin == HX_LOAD_AS_WRITTEN &&
-                (m->loads[k].kind != HX_LOAD_VECTOR) == scalar) { /* not a SPRINGDAMPER's */
+            if (m->loads[k].id == c->ids[i] && m->loads[k].builtin == builtin &&
+                (m->loads[k].kind != HX_LOAD_VECTOR) == scalar) {
                 off[k] = c->kind == HX_COMMAND_DEACTIVATE;
                 found = 1;
             }
         if (!found)
-            return hx_fail(msg, "%s:%d: %s/%s: the model has no %s/%d given by FUNCTION"
-                           " expressions (one given by a user routine is not switched yet)",
-                           path, c->line, what, c->element, c->element, c->ids[i]);
+            return hx_fail(msg, "%s:%d: %s/%s: the model has no %s/%d%s", path, c->line, what,
+                           c->element, c->element, c->ids[i],
+                           builtin != HX_LOAD_AS_WRITTEN ? ""
+                                                         : " given by FUNCTION expressions (one"
+                                                           " given by a user routine is not"
+                                                           " switched yet)");
     }
     return 0;
 }
