@@ -227,6 +227,8 @@ static int refuse_infinite(hx_draft *d, const hx_element_read *e, double K[6][6]
 
 /* Appends one term of a generated text; -1 when it does not fit. */
 static int append(char *out, size_t *used, const char *format, ...)
+    __attribute__((format(printf, 3, 4)));
+static int append(char *out, size_t *used, const char *format, ...)
 {
     va_list args;
     va_start(args, format);
