@@ -16,8 +16,6 @@
 
 #include "frames/frames.h"
 #include "model_runs.h"
-#include "sim/ode/integrator.h"
-#include "sim/simulation/simulation.h"
 #include "sim_support.h"
 #include "test_support.h"
 
@@ -149,19 +147,8 @@ static void rotational_springdamper_counts_turns(void **state)
 static void a_spring_turned_past_pi_in_one_step_is_refused(void **state)
 {
     (void)state;
-    sim_opened o;
-    sim_open_text(&o, "spun_step.adm", spun);
-    hx_simulation_options so = {0};
-    hx_integrator_defaults(&so.integration);
-    so.integration.method = HX_METHOD_RK4;
-    so.integration.step = 1.0;
-    so.integration.t_end = 2.0;
-    so.integration.output_interval = 1.0;
-    hx_simulation_result result;
-    assert_int_equal(hx_simulate(&o.d, &so, NULL, &result), -1);
-    assert_contains(result.message, "Force_SpringDamper 6: turned",
-                    "in one step, from t = 0 to 1: more than pi");
-    sim_close_opened(&o);
+    assert_contains(sim_rk4_refused("spun_step.adm", spun, 1.0, 2.0),
+                    "Force_SpringDamper 6: turned", "in one step, from t = 0 to 1: more than pi");
 }
 
 /* J (10) on ground turned a quarter about z (its x the world's y, its y the
