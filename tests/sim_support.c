@@ -385,6 +385,24 @@ void sim_open_text(sim_opened *o, const char *name, const char *text)
         fail_msg("%s", msg.text);
 }
 
+const char *sim_rk4_refused(const char *name, const char *text, double step, double t_end)
+{
+    static char message[sizeof((hx_simulation_result *)0)->message];
+    sim_opened o;
+    sim_open_text(&o, name, text);
+    hx_simulation_options so = {0};
+    hx_integrator_defaults(&so.integration);
+    so.integration.method = HX_METHOD_RK4;
+    so.integration.step = step;
+    so.integration.t_end = t_end;
+    so.integration.output_interval = step;
+    hx_simulation_result result;
+    assert_int_equal(hx_simulate(&o.d, &so, NULL, &result), -1);
+    snprintf(message, sizeof message, "%s", result.message);
+    sim_close_opened(&o);
+    return message;
+}
+
 void sim_close_opened(sim_opened *o)
 {
     hx_dynamics_data_free(&o->dd);

@@ -56,6 +56,10 @@ typedef struct sim_opened {
  * an error. */
 void sim_open_text(sim_opened *o, const char *name, const char *text);
 void sim_close_opened(sim_opened *o);
+/* The model of text (written as name) run with RK4 at a fixed step from 0 to
+ * t_end, outputs every step: the run must fail; its message (static
+ * storage, overwritten by the next call). */
+const char *sim_rk4_refused(const char *name, const char *text, double step, double t_end);
 /* Uniform in [-1, 1] (rand()). */
 double sim_uniform(void);
 

@@ -104,6 +104,53 @@ static void rotational_springdamper_is_the_damped_oscillator(void **state)
     check_oscillator("rotational.adm", rotational, HX_METHOD_BDF, 1);
 }
 
+/* The same wheel at its rest angle 0.125 rad spun at 20 rad/s: the swing
+ * u = e^(-s t) (v0 / wd) sin(wd t) (s 0.4, wd = sqrt(16 - 0.16)) reaches 4.4 rad
+ * from it, past a half turn, which the spring counts as Adams' does: the
+ * hinge's (unwrapped) angle follows 0.125 + u at 0.4 s (past pi) and at 1 s
+ * (back), DOPRI5 and BDF. */
+static const char spun[] =
+    "spun\n"
+    "UNITS/SYSTEM=MKS\n"
+    "PART/1, GROUND\n"
+    "MARKER/10, PART=1\n"
+    "PART/2, MASS=3, CM=20, IP=1,1,0.5, REULER=0.125,0,0, WZ=20\n"
+    "MARKER/20, PART=2\n"
+    "JOINT/1, REVOLUTE, I=20, J=10\n"
+    "SPRINGDAMPER/6, ROTATIONAL, I=20, J=10, KT=8, CT=0.4, ANGLE=0.1, TORQUE=0.2\n"
+    "END\n";
+
+static void rotational_springdamper_counts_turns(void **state)
+{
+    (void)state;
+    const double s = 0.4, wd = sqrt(16.0 - 0.16), times[2] = {0.4, 1.0};
+    const hx_method methods[2] = {HX_METHOD_DOPRI5, HX_METHOD_BDF};
+    for (int k = 0; k < 4; ++k) {
+        model m;
+        const double t = times[k % 2];
+        double *y = model_run_text("spun.adm", spun, methods[k / 2], HX_JACOBIAN_ANALYTIC,
+                                   1e-10, t, &m);
+        assert_int_equal(m.d.dof[1].kind, HX_DOF_REVOLUTE);
+        const double u = exp(-s * t) * 20.0 / wd * sin(wd * t);
+        const double du = exp(-s * t) * 20.0 * (cos(wd * t) - s / wd * sin(wd * t));
+        assert_close(y[m.d.dof[1].q], 0.125 + u, 0, 1e-6);
+        assert_close(y[m.d.nq + m.d.dof[1].u], du, 0, 1e-6);
+        if (k % 2 == 0)
+            assert_true(0.125 + u > 4.0); /* past a half turn */
+        free(y);
+        close_model(&m);
+    }
+}
+
+/* RK4 at 1 s: the wheel turns some 10 rad in its first step, which no turn
+ * count can follow: the run stops naming the spring. */
+static void a_spring_turned_past_pi_in_one_step_is_refused(void **state)
+{
+    (void)state;
+    assert_contains(sim_rk4_refused("spun_step.adm", spun, 1.0, 2.0),
+                    "Force_SpringDamper 6: turned", "in one step, from t = 0 to 1: more than pi");
+}
+
 /* J (10) on ground turned a quarter about z (its x the world's y, its y the
  * world's -x); I (20) the centre of part 2 at (1, 2, 3), so (2, -1, 3) in
  * J's axes, turned 0.2 rad about J's x axis (AX 0.2, AY = AZ = 0) and
@@ -312,6 +359,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(translational_springdamper_is_the_damped_oscillator),
         cmocka_unit_test(rotational_springdamper_is_the_damped_oscillator),
+        cmocka_unit_test(rotational_springdamper_counts_turns),
+        cmocka_unit_test(a_spring_turned_past_pi_in_one_step_is_refused),
         cmocka_unit_test(bushing_components_by_hand),
         cmocka_unit_test(bushing_is_its_gforce_and_its_xml_twin),
         cmocka_unit_test(bad_input_named),

@@ -46,7 +46,8 @@ static void share_of(model *m, const double *y, int k, hx_load_share *share)
     double *ydot = model_state(m);
     assert_int_equal(hx_dynamics_evaluate(&m->d, &m->data, 0.0, y, ydot, 0), 0);
     hx_message msg;
-    assert_int_equal(hx_load_share_at(m->session.model, &m->data.frames, k, share, &msg), 0);
+    assert_int_equal(hx_load_share_at(m->session.model, &m->data.frames,
+                                      m->data.turn + m->session.model->njoints, k, share, &msg), 0);
     free(ydot);
 }
 

@@ -82,7 +82,8 @@ static void values_worked_by_hand_in_dependency_order(void **state)
         assert_close(value_of(&m, 4), -5.0 - t[i], 0, 1e-15);
         hx_load_share share;
         hx_message msg;
-        assert_int_equal(hx_load_share_at(mm, &m.data.frames, 0, &share, &msg), 0);
+        assert_int_equal(hx_load_share_at(mm, &m.data.frames, m.data.turn + mm->njoints, 0, &share,
+                                          &msg), 0);
         assert_close(share.F[0][0], -5.0 - t[i], 0, 1e-15);
     }
     free(y), free(ydot);

@@ -138,20 +138,10 @@ static void many_turns_with_dopri5_and_bdf(void **state)
 static void a_step_past_pi_is_refused(void **state)
 {
     (void)state;
-    sim_opened o;
-    sim_open_text(&o, "turning_gears_step.xml", turning_model);
-    hx_simulation_options so = {0};
-    hx_integrator_defaults(&so.integration);
-    so.integration.method = HX_METHOD_RK4;
-    so.integration.step = 1.0;
-    so.integration.t_end = 3.0;
-    so.integration.output_interval = 1.0;
-    hx_simulation_result result;
-    assert_int_equal(hx_simulate(&o.d, &so, NULL, &result), -1);
-    print_message("%s\n", result.message);
-    assert_contains(result.message, "Constraint_Coupler 1: joint 2 turned",
-                    "one step, from t = 0 to 1", "more than pi");
-    sim_close_opened(&o);
+    const char *message = sim_rk4_refused("turning_gears_step.xml", turning_model, 1.0, 3.0);
+    print_message("%s\n", message);
+    assert_contains(message, "Constraint_Coupler 1: joint 2 turned", "one step, from t = 0 to 1",
+                    "more than pi");
 }
 
 /* What the accept hook and the outputs saw. */

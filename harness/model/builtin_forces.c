@@ -96,7 +96,7 @@ void hx_build_springdamper(hx_draft *d, const hx_element_read *e)
     const double k = hx_attr_number(e, "stiffness", 0.0), c = hx_attr_number(e, "damping", 0.0);
     const double free = hx_attr_number(e, "length", 0.0), pre = hx_attr_number(e, "preload", 0.0);
     char text[1][TEXT_MAX];
-    if (rotational) /* AZ in (-pi, pi]: no full turns counted (docs/interface.md §7.17) */
+    if (rotational) /* AZ in (-pi, pi]: its full turns added by the dynamics (§7.17) */
         snprintf(text[0], TEXT_MAX, "-(%.17g)*WZ(%d,%d,%d)-(%.17g)*(AZ(%d,%d)-(%.17g))+(%.17g)",
                  c, i, j, j, k, i, j, free, pre);
     else
@@ -108,6 +108,8 @@ void hx_build_springdamper(hx_draft *d, const hx_element_read *e)
     const int before = d->m->nloads;
     hx_build_scalar_load(d, &x, rotational, "val_expression");
     tag_last(d, before, HX_LOAD_SPRINGDAMPER);
+    if (rotational && d->m->nloads > before) /* AZ's turns counted where it is evaluated */
+        d->m->loads[d->m->nloads - 1].turn_stiffness = k;
 }
 
 void hx_build_bushing(hx_draft *d, const hx_element_read *e)

@@ -141,6 +141,8 @@ typedef struct hx_load {
     int id;
     enum hx_load_kind kind;
     enum hx_load_builtin builtin;
+    double turn_stiffness; /* a ROTATIONAL Force_SpringDamper's stiffness, its angle's full
+                            * turns counted (sim/dynamics/joint_turns.h); 0 otherwise */
     int i_marker, j_marker, ref_marker; /* indices, -1 when not used; a vector load's j_marker
                                          * (Force_Vector_TwoBody) takes the reaction */
     /* the expressions (docs/interface.md §8), linked against the model; NULL: a

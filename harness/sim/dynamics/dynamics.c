@@ -134,8 +134,8 @@ int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message
     dd->free_accelerations = calloc(nu + 1, sizeof(double));
     dd->lambda = calloc((size_t)d->nrows + 1, sizeof(double));
     dd->gcon_twist = calloc(6 * HX_CONSTRAINT_ROW_BLOCKS * (size_t)m->ngcons + 1, sizeof(double));
-    dd->turn = calloc((size_t)m->njoints + 1, sizeof(double));
-    dd->turn_rate = calloc((size_t)m->njoints + 1, sizeof(double));
+    dd->turn = calloc((size_t)m->njoints + (size_t)m->nloads + 1, sizeof(double));
+    dd->turn_rate = calloc((size_t)m->njoints + (size_t)m->nloads + 1, sizeof(double));
     dd->constraint_work = calloc(hx_constraints_work_size(d), sizeof(double));
     dd->stateeqn_work = malloc(sizeof(double) * (size_t)hx_stateeqns_work_size(d));
     dd->implicit_start = calloc((size_t)d->nimplicit + 1, sizeof(double));

@@ -161,7 +161,8 @@ typedef struct hx_dynamics_data {
                                    * its turn about it; world), the last row evaluated with G
                                    * (expression_rows.h): lambda times it is the force it
                                    * puts on that body */
-    double *turn, *turn_rate;     /* per joint: the angle its rotation is unwrapped against
+    double *turn, *turn_rate;     /* per joint, then per load (a ROTATIONAL Force_SpringDamper's
+                                   * AZ(I,J)): the angle its rotation is unwrapped against
                                    * and its rate there (joint_turns.h): the model's
                                    * placement, and in a run the last accepted step's */
     double turn_time;             /* the time of those */

@@ -2,9 +2,11 @@
  * The turns of the rotations couplers take between two moving bodies
  * (docs/interface.md §2, docs/architecture.md, the constraint system): a
  * REVOLUTE joint's AZ(I,J), or a CYLINDRICAL one's 'R' freedom, of a joint
- * that is not reduced. atan2 gives such a rotation in (-pi, pi] only; an
- * evaluation unwraps it against the angle its data holds for the joint
- * (dd->turn): the model's placement in a new data (what check, rig and bench
+ * that is not reduced; and a ROTATIONAL Force_SpringDamper's AZ(I,J), whose
+ * full turns its torque counts, as Adams' does (docs/interface.md §7.17).
+ * atan2 gives such a rotation in (-pi, pi] only; an evaluation unwraps it
+ * against the angle its data holds for the joint or the load (dd->turn,
+ * joints first): the model's placement in a new data (what check, rig and bench
  * sample against), and in a run the angle at the last accepted step, set by
  * hx_joint_turns_accept from the integrator's accept hook alone, so that
  * DOPRI5's stages, BDF's Newton iterations and a rejected step all read the

@@ -1,10 +1,12 @@
 /* Gravity and the model's loads on the bodies (loads.h). */
 #include "sim/dynamics/loads.h"
 
+#include <math.h>
 #include <stdio.h>
 
 #include "base/vecmath.h"
 #include "expr/evaluate.h"
+#include "frames/measures.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/failure.h"
 #include "sim/dynamics/varsub_reads.h"
@@ -25,8 +27,8 @@ static int value_at(const hx_load *l, const hx_expr_program *p, const hx_frames 
     return hx_expr_fail(msg, p, &fault, element);
 }
 
-int hx_load_share_at(const hx_model *m, const hx_frames *fr, int k, hx_load_share *share,
-                     hx_message *msg)
+int hx_load_share_at(const hx_model *m, const hx_frames *fr, const double *turn, int k,
+                     hx_load_share *share, hx_message *msg)
 {
     const hx_load *l = &m->loads[k];
     hx_frame scratch[3];
@@ -62,6 +64,13 @@ int hx_load_share_at(const hx_model *m, const hx_frames *fr, int k, hx_load_shar
     if (value_at(l, l->value, fr, &value, msg) != 0)
         return -1;
     if (l->kind == HX_LOAD_SCALAR_TORQUE) {
+        if (l->turn_stiffness != 0.0) { /* its AZ's full turns since the angle held (§7.17) */
+            double R[9];
+            hx_relative_rotation(I, J, R);
+            const double az = hx_projection_angle(R, 2);
+            const double two_pi = 6.283185307179586;
+            value -= l->turn_stiffness * (turn[k] - az - remainder(turn[k] - az, two_pi));
+        }
         v3_set(T, J->R[2] * value, J->R[5] * value, J->R[8] * value);
     } else {
         double r[3];
@@ -210,7 +219,7 @@ int hx_loads_output(const hx_dynamics *d, const hx_dynamics_data *dd, int k, dou
     if (d->load_off[k])
         return 0; /* switched off: it puts nothing on the bodies */
     hx_load_share share;
-    if (hx_load_share_at(d->m, &dd->frames, k, &share, msg) != 0)
+    if (hx_load_share_at(d->m, &dd->frames, dd->turn + d->m->njoints, k, &share, msg) != 0)
         return -1;
     for (int s = 0; s < share.count; ++s)
         for (int j = 0; j < 3; ++j)
@@ -241,7 +250,7 @@ int hx_loads_apply(const hx_dynamics *d, hx_dynamics_data *dd, double *power)
             continue;
         hx_load_share share;
         hx_message msg;
-        if (hx_load_share_at(m, &dd->frames, k, &share, &msg) != 0)
+        if (hx_load_share_at(m, &dd->frames, dd->turn + m->njoints, k, &share, &msg) != 0)
             return hx_dynamics_fail(dd, "%s", msg.text);
         for (int i = 0; i < share.count; ++i)
             *power += hx_bodies_apply_load(d, dd, share.body[i], share.point[i], share.F[i],

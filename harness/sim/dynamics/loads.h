@@ -14,11 +14,12 @@ typedef struct hx_load_share {
 } hx_load_share;
 
 /* Load k at frames fr (at their time): its expressions evaluated
- * (docs/interface.md §8). 0, or -1 with "file:line:column: element: what at
- * t = ..." in msg when an expression faults (a division by zero, a value
- * that is not finite, ...). */
-int hx_load_share_at(const hx_model *m, const hx_frames *fr, int k, hx_load_share *share,
-                     hx_message *msg);
+ * (docs/interface.md §8), a ROTATIONAL Force_SpringDamper's AZ unwrapped
+ * against its angle held in turn (a data's turn + njoints, joint_turns.h).
+ * 0, or -1 with "file:line:column: element: what at t = ..." in msg when an
+ * expression faults (a division by zero, a value that is not finite, ...). */
+int hx_load_share_at(const hx_model *m, const hx_frames *fr, const double *turn, int k,
+                     hx_load_share *share, hx_message *msg);
 
 /* The most bodies hx_load_bodies lists: the three markers the load names and
  * the four of each of its expressions' inputs (a variable read adds those it

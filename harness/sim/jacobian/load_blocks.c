@@ -76,7 +76,8 @@ static int diff_columns(hx_jacobian *jac, int k)
             if (m->variables_read && hx_variables_values(&jac->moved, d->routine_binding,
                                                          jac->moved.variables, &msg) != 0)
                 status = -1;
-            if (status == 0 && hx_load_share_at(m, &jac->moved, k, &share[side], &msg) != 0)
+            if (status == 0 && hx_load_share_at(m, &jac->moved, jac->dd.turn + m->njoints, k,
+                                                &share[side], &msg) != 0)
                 status = -1;
             for (int a = 0; status == 0 && a < share[side].count; ++a)
                 wrench(&share[side], a, &jac->moved, W[side][a], W[side][a] + 3);
@@ -113,7 +114,8 @@ static int differences(hx_jacobian *jac, int k)
                 jac->y[c] = keep + (side == 0 ? h : -h);
                 hx_jacobian_move_body(jac, b, jac->y);
                 hx_message msg;
-                if (hx_load_share_at(d->m, &jac->moved, k, &share[side], &msg) != 0) {
+                if (hx_load_share_at(d->m, &jac->moved, jac->dd.turn + d->m->njoints, k,
+                                     &share[side], &msg) != 0) {
                     jac->y[c] = keep;
                     hx_jacobian_restore_body(jac, b);
                     return hx_dynamics_fail(&jac->dd, "%s", msg.text);

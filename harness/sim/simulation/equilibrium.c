@@ -331,7 +331,8 @@ static int model_force(solver *sv)
         hx_message msg;
         if (d->load_off[k])
             continue;
-        if (hx_load_share_at(m, &sv->dd->frames, k, &share, &msg) != 0)
+        if (hx_load_share_at(m, &sv->dd->frames, sv->dd->turn + m->njoints, k, &share,
+                             &msg) != 0)
             return hx_dynamics_fail(sv->dd, "%s", msg.text);
         for (int j = 0; j < share.count; ++j)
             F = fmax(F, fmax(v3_norm(share.F[j]), v3_norm(share.T[j]) / sv->L));
