@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "base/vecmath.h"
+#include "frames/measures.h"
 #include "sim/dynamics/bodies.h"
 #include "sim/dynamics/coordinate_rows.h"
 #include "sim/dynamics/failure.h"
@@ -41,16 +42,16 @@ static double spring_angle(const hx_dynamics *d, const hx_load *l, const double 
                            double *rate)
 {
     const hx_marker *mi = &d->m->markers[l->i_marker], *mj = &d->m->markers[l->j_marker];
-    hx_frame fi, fj;
+    hx_frame fi, fj, I, J;
     hx_bodies_frame(d, mi->body, y, &fi);
     hx_bodies_frame(d, mj->body, y, &fj);
-    double Ai[9], Aj[9], w[3];
-    m3_mul(Ai, fi.R, mi->R_local);
-    m3_mul(Aj, fj.R, mj->R_local);
+    m3_mul(I.R, fi.R, mi->R_local);
+    m3_mul(J.R, fj.R, mj->R_local);
+    double w[3], R[9];
     v3_sub(w, fi.w, fj.w);
-    *rate = w[0] * Aj[2] + w[1] * Aj[5] + w[2] * Aj[8];
-    const double xy = Ai[0] * Aj[1] + Ai[3] * Aj[4] + Ai[6] * Aj[7];
-    return atan2(xy, Ai[0] * Aj[0] + Ai[3] * Aj[3] + Ai[6] * Aj[6]);
+    *rate = w[0] * J.R[2] + w[1] * J.R[5] + w[2] * J.R[8];
+    hx_relative_rotation(&I, &J, R);
+    return hx_projection_angle(R, 2); /* the AZ loads.c unwraps */
 }
 
 void hx_joint_turns_placed(const hx_dynamics *d, hx_dynamics_data *dd)
