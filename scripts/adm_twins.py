@@ -164,8 +164,23 @@ def twin(path):
             if "ref_marker_id" in a:
                 args.append("RM = " + a["ref_marker_id"])
             statement(kind, i, args + user(a))
-        elif tag == "Force_Field":
+        elif tag == "Force_Field" and "usrsub_param_string" in a:
             statement("FIELD", i, ["I = " + a["i_marker_id"], "J = " + a["j_marker_id"]] + user(a))
+        elif tag == "Force_Field":  # linear: Adams lists KMATRIX and CMATRIX by columns
+            args = ["I = " + a["i_marker_id"], "J = " + a["j_marker_id"]]
+            for key, m in (("KMATRIX", "k"), ("CMATRIX", "c")):
+                names = ["%s%d%d" % (m, r, c) for c in range(1, 7) for r in range(1, 7)]
+                if any(n in a for n in names):  # a column a line
+                    values = [a.get(n, "0") for n in names]
+                    rows = [", ".join(values[k:k + 6]) for k in range(0, 36, 6)]
+                    args += ["%s = %s," % (key, rows[0])] + [r + "," for r in rows[1:5]] + [rows[5]]
+            if "cratio" in a:
+                args.append("CRATIO = " + a["cratio"])
+            for key, prefix in (("LENGTH", "length_"), ("FORCE", "preload_")):
+                names = [prefix + n for n in ("x", "y", "z", "tx", "ty", "tz")]
+                if any(n in a for n in names):
+                    args.append("%s = %s" % (key, ", ".join(a.get(n, "0") for n in names)))
+            statement("FIELD", i, args)
         elif tag == "Force_Vector_OneBody":
             if "usrsub_param_string" in a:
                 sys.exit("%s: Force_Vector_OneBody %s: a user routine on one body has no twin" % (path, i))

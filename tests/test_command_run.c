@@ -203,7 +203,9 @@ static void what_the_run_cannot_do_is_refused(void **state)
     (void)state;
     refuse("DEACTIVATE/JOINT, ID=1", "refused.acf:4: ", "DEACTIVATE/JOINT",
            "the harness switches SFORCE, VFORCE, VTORQUE and GFORCE given by FUNCTION"
-           " expressions, SPRINGDAMPER, BUSHING and BEAM, not other elements yet");
+           " expressions, SPRINGDAMPER, BUSHING, BEAM and linear FIELDs, not other elements yet");
+    refuse("DEACTIVATE/FIELD, ID=1", "refused.acf:4: ", "DEACTIVATE/FIELD",
+           "the model has no FIELD/1 that is linear (one calling FIESUB is not switched yet)");
     refuse("ACTIVATE/SFORCE, ID=1,2", "refused.acf:4: ", "ACTIVATE/SFORCE",
            "the model has no SFORCE/2 given by FUNCTION expressions");
     refuse("DEACTIVATE/GFORCE, ID=1", "refused.acf:4: ", "DEACTIVATE/GFORCE",
@@ -266,10 +268,10 @@ static void a_deactivated_spring_lets_the_mass_fall(void **state)
     }
 }
 
-/* A 2 kg part held at (1, 0, 0) by a SPRINGDAMPER (1), a BUSHING (2) and a
- * BEAM (3) to the ground's origin, all three deactivated: it falls freely,
- * y = -9.81 t^2 / 2, x = 1 (each would pull it once it moves; the bushing
- * at once, 1000 N along -x); the BUSHING activated again at 0.3 s pulls it
+/* A 2 kg part held at (1, 0, 0) by a SPRINGDAMPER (1), a BUSHING (2), a
+ * BEAM (3) and a linear FIELD (4) to the ground's origin, all four
+ * deactivated: it falls freely, y = -9.81 t^2 / 2, x = 1 (each would pull
+ * it once it moves; the bushing at once, 1000 N along -x); the BUSHING activated again at 0.3 s pulls it
  * towards the origin. */
 static void built_in_forces_are_switched(void **state)
 {
@@ -280,11 +282,15 @@ static void built_in_forces_are_switched(void **state)
                     "SPRINGDAMPER/1, TRANSLATION, I = 20, J = 10, K = 100, C = 1, LENGTH = 1\n"
                     "BUSHING/2, I = 20, J = 10, K = 1000, 1000, 1000, KT = 10, 10, 10\n"
                     "BEAM/3, I = 20, J = 10, LENGTH = 1, EMODULUS = 1E6, GMODULUS = 4E5,\n"
-                    ", AREA = 1E-2, IXX = 1E-4, IYY = 1E-4, IZZ = 1E-4\nEND\n");
+                    ", AREA = 1E-2, IXX = 1E-4, IYY = 1E-4, IZZ = 1E-4\n"
+                    "FIELD/4, I = 20, J = 10, LENGTH = 1, 0, 0, 0, 0, 0, KMATRIX = 500, 0, 0,\n"
+                    ", 0, 0, 0, 0, 500, 0, 0, 0, 0, 0, 0, 500, 0, 0, 0, 0, 0, 0, 5, 0, 0,\n"
+                    ", 0, 0, 0, 0, 5, 0, 0, 0, 0, 0, 0, 5\nEND\n");
     const char *acf = test_write_file("held.acf", "held\n\n"
                                       "DEACTIVATE/SPRINGDAMPER, ID=1\n"
                                       "DEACTIVATE/BUSHING, ID=2\n"
                                       "DEACTIVATE/BEAM, ID=3\n"
+                                      "DEACTIVATE/FIELD, ID=4\n"
                                       "SIMULATE/DYNAMIC, END=0.3, STEPS=3\n"
                                       "ACTIVATE/BUSHING, ID=2\n"
                                       "SIMULATE/DYNAMIC, END=0.5, STEPS=2\n");

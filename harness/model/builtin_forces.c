@@ -242,39 +242,31 @@ static int append(char *out, size_t *used, const char *format, ...)
     return 0;
 }
 
-void hx_build_beam(hx_draft *d, const hx_element_read *e)
+/* The six components -K (d - length) - C v + preload on I in J's axes (d
+ * I's place from J in J's axes and its angles AX AY AZ, v its velocity and
+ * angular velocity from J in J's axes), J's body taking the reaction: a
+ * vector load tagged as the element it stands for (§7.17). */
+static void build_six(hx_draft *d, const hx_element_read *e, double K[6][6], double C[6][6],
+                      const double length[6], const double preload[6],
+                      enum hx_load_builtin builtin)
 {
-    static const char *const positive[4] = {"length", "E", "G", "area"};
-    static const char *const signs[6] = {"ixx", "iyy", "izz", "ASY", "ASZ", "cratio"};
-    static const char *const preloads[6] = {"preload_x", "preload_y", "preload_z",
-                                            "preload_tx", "preload_ty", "preload_tz"};
-    for (int k = 0; k < 4; ++k)
-        if (!(hx_attr_number(e, positive[k], 0.0) > 0.0)) {
-            hx_draft_fail(d, e->line, "%s %d: %s = %g: it must be positive", e->name, e->id,
-                          positive[k], hx_attr_number(e, positive[k], 0.0));
-            return;
-        }
-    double K[6][6], C[6][6];
-    if (refuse_negative(d, e, signs, 6) != 0)
-        return;
-    beam_stiffness(e, K);
-    if (beam_damping(d, e, K, C) != 0 || refuse_infinite(d, e, K, C) != 0)
-        return;
     const int i = hx_attr_int(e, "i_marker_id", 0), j = hx_attr_int(e, "j_marker_id", 0);
-    const double L = hx_attr_number(e, "length", 0.0);
     char text[6][TEXT_MAX];
     for (int r = 0; r < 6; ++r) {
         size_t used = 0;
-        int bad = append(text[r], &used, "(%.17g)", hx_attr_number(e, preloads[r], 0.0));
+        int bad = append(text[r], &used, "(%.17g)", preload[r]);
         for (int c = 0; c < 6 && bad == 0; ++c) {
             const char axis = (char)('X' + c % 3);
-            if (K[r][c] != 0.0 && c == 0) /* the stretch from the free length */
-                bad = append(text[r], &used, "-(%.17g)*(DX(%d,%d,%d)-(%.17g))", K[r][c], i, j,
-                             j, L);
-            else if (K[r][c] != 0.0 && c < 3)
-                bad = append(text[r], &used, "-(%.17g)*D%c(%d,%d,%d)", K[r][c], axis, i, j, j);
+            char measure[48]; /* DX(I,J,J) in J's axes; AX(I,J) */
+            if (c < 3)
+                snprintf(measure, sizeof measure, "D%c(%d,%d,%d)", axis, i, j, j);
+            else
+                snprintf(measure, sizeof measure, "A%c(%d,%d)", axis, i, j);
+            if (K[r][c] != 0.0 && length[c] != 0.0) /* from the free length or angle */
+                bad = append(text[r], &used, "-(%.17g)*(%s-(%.17g))", K[r][c], measure,
+                             length[c]);
             else if (K[r][c] != 0.0)
-                bad = append(text[r], &used, "-(%.17g)*A%c(%d,%d)", K[r][c], axis, i, j);
+                bad = append(text[r], &used, "-(%.17g)*%s", K[r][c], measure);
             if (bad == 0 && C[r][c] != 0.0 && c < 3)
                 bad = append(text[r], &used, "-(%.17g)*V%c(%d,%d,%d,%d)", C[r][c], axis, i, j,
                              j, j);
@@ -289,5 +281,100 @@ void hx_build_beam(hx_draft *d, const hx_element_read *e)
     hx_element_read x = as_load(e, vector_load, 6, text);
     const int before = d->m->nloads;
     hx_build_vector_load(d, &x, i, j, j);
-    tag_last(d, before, HX_LOAD_BEAM);
+    tag_last(d, before, builtin);
+}
+
+static const char *const preload_names[6] = {"preload_x",  "preload_y",  "preload_z",
+                                             "preload_tx", "preload_ty", "preload_tz"};
+
+void hx_build_beam(hx_draft *d, const hx_element_read *e)
+{
+    static const char *const positive[4] = {"length", "E", "G", "area"};
+    static const char *const signs[6] = {"ixx", "iyy", "izz", "ASY", "ASZ", "cratio"};
+    for (int k = 0; k < 4; ++k)
+        if (!(hx_attr_number(e, positive[k], 0.0) > 0.0)) {
+            hx_draft_fail(d, e->line, "%s %d: %s = %g: it must be positive", e->name, e->id,
+                          positive[k], hx_attr_number(e, positive[k], 0.0));
+            return;
+        }
+    double K[6][6], C[6][6];
+    if (refuse_negative(d, e, signs, 6) != 0)
+        return;
+    beam_stiffness(e, K);
+    if (beam_damping(d, e, K, C) != 0 || refuse_infinite(d, e, K, C) != 0)
+        return;
+    double length[6] = {hx_attr_number(e, "length", 0.0), 0, 0, 0, 0, 0}, preload[6];
+    for (int k = 0; k < 6; ++k)
+        preload[k] = hx_attr_number(e, preload_names[k], 0.0);
+    build_six(d, e, K, C, length, preload, HX_LOAD_BEAM);
+}
+
+/* A linear field's attributes (MotionSolve's names): Krc, Crc row r, column c. */
+#define MATRIX_ROW(m, r)                                                                       \
+    REAL(m #r "1"), REAL(m #r "2"), REAL(m #r "3"), REAL(m #r "4"), REAL(m #r "5"),            \
+        REAL(m #r "6")
+#define MATRIX(m)                                                                              \
+    MATRIX_ROW(m, 1), MATRIX_ROW(m, 2), MATRIX_ROW(m, 3), MATRIX_ROW(m, 4), MATRIX_ROW(m, 5),  \
+        MATRIX_ROW(m, 6)
+const hx_attr_spec hx_field_attrs[] = {
+    ID, REQUIRED("i_marker_id", HX_ATTR_INT), REQUIRED("j_marker_id", HX_ATTR_INT),
+    IGNORED("body1_id"), IGNORED("body2_id"), USER_CALL, REAL("length_x"), REAL("length_y"),
+    REAL("length_z"), REAL("length_tx"), REAL("length_ty"), REAL("length_tz"),
+    REAL("preload_x"), REAL("preload_y"), REAL("preload_z"), REAL("preload_tx"),
+    REAL("preload_ty"), REAL("preload_tz"), MATRIX("K"), REAL("CRATIO"), MATRIX("C"), END};
+
+/* The first linear attribute e has (its spec's name), or NULL. */
+const char *hx_field_linear_attribute(const hx_element_read *e)
+{
+    for (int k = 0; k < e->nspec; ++k)
+        if (e->value[k].present && (strncmp(e->spec[k].name, "length_", 7) == 0 ||
+                                    strncmp(e->spec[k].name, "preload_", 8) == 0 ||
+                                    strcmp(e->spec[k].name, "CRATIO") == 0 ||
+                                    ((e->spec[k].name[0] == 'K' || e->spec[k].name[0] == 'C') &&
+                                     strlen(e->spec[k].name) == 3)))
+            return e->spec[k].name;
+    return NULL;
+}
+
+void hx_build_field(hx_draft *d, const hx_element_read *e)
+{
+    static const char *const lengths[6] = {"length_x",  "length_y",  "length_z",
+                                           "length_tx", "length_ty", "length_tz"};
+    double K[6][6], C[6][6], length[6], preload[6];
+    int damped = 0;
+    for (int r = 0; r < 6; ++r)
+        for (int c = 0; c < 6; ++c) {
+            char name[4] = {'K', (char)('1' + r), (char)('1' + c), '\0'};
+            K[r][c] = hx_attr_number(e, name, 0.0);
+            name[0] = 'C';
+            C[r][c] = hx_attr_number(e, name, 0.0);
+            damped |= hx_attr_present(e, name);
+        }
+    const double ratio = hx_attr_number(e, "CRATIO", 0.0);
+    if (damped && hx_attr_present(e, "CRATIO")) {
+        hx_draft_fail(d, e->line, "%s %d: give CRATIO or the damping matrix (C11 .. C66), not"
+                      " both", e->name, e->id);
+        return;
+    }
+    static const char *const ratio_name[1] = {"CRATIO"};
+    if (refuse_negative(d, e, ratio_name, 1) != 0)
+        return;
+    for (int r = 0; r < 6 && !damped; ++r)
+        for (int c = 0; c < 6; ++c)
+            C[r][c] = ratio * K[r][c];
+    for (int k = 0; k < 6; ++k)
+        if (K[k][k] < 0.0 || C[k][k] < 0.0) { /* feeds energy in, as a bushing's would */
+            hx_draft_fail(d, e->line, "%s %d: %c%d%d = %g: a %s on the diagonal must not be"
+                          " negative", e->name, e->id, K[k][k] < 0.0 ? 'K' : 'C', k + 1, k + 1,
+                          K[k][k] < 0.0 ? K[k][k] : C[k][k],
+                          K[k][k] < 0.0 ? "stiffness" : "damping");
+            return;
+        }
+    if (refuse_infinite(d, e, K, C) != 0)
+        return;
+    for (int k = 0; k < 6; ++k) {
+        length[k] = hx_attr_number(e, lengths[k], 0.0);
+        preload[k] = hx_attr_number(e, preload_names[k], 0.0);
+    }
+    build_six(d, e, K, C, length, preload, HX_LOAD_FIELD);
 }

@@ -1,6 +1,6 @@
 /*
  * MotionSolve's built-in linear force elements (docs/interface.md §7.17):
- * Force_SpringDamper, Force_Bushing and Force_Beam, each built as the expression load
+ * Force_SpringDamper, Force_Bushing, Force_Beam and the linear Force_Field, each built as the expression load
  * that is the same force (load_elements.h), so that the Jacobian's exact
  * partials, the force functions of requests and the energy balance are the
  * loads' own.
@@ -13,6 +13,7 @@
 extern const hx_attr_spec hx_springdamper_attrs[];
 extern const hx_attr_spec hx_bushing_attrs[];
 extern const hx_attr_spec hx_beam_attrs[];
+extern const hx_attr_spec hx_field_attrs[];
 
 /* A Force_SpringDamper: a Force_Scalar_TwoBody whose value is
  * -damping VR(I,J) - stiffness (DM(I,J) - length) + preload (TRANSLATIONAL),
@@ -30,5 +31,15 @@ void hx_build_bushing(hx_draft *d, const hx_element_read *e);
  * length along J's x and its angles AX AY AZ, v its velocity and angular
  * velocity in J's axes, K Timoshenko's stiffness, C cratio K or cmatrix. */
 void hx_build_beam(hx_draft *d, const hx_element_read *e);
+
+/* A linear Force_Field (no user routine): a Force_Vector_TwoBody on I in
+ * J's axes, J's body taking the reaction, of -K (d - length) - C v + preload,
+ * d and v as a beam's, K from K11 .. K66 (row, column), C from C11 .. C66 or
+ * CRATIO K, length from length_x .. length_tz, preload from preload_x .. tz. */
+void hx_build_field(hx_draft *d, const hx_element_read *e);
+
+/* The name of the first linear field attribute e has (K11, CRATIO,
+ * length_x, ...), or NULL: a Force_Field calls its routine or is linear. */
+const char *hx_field_linear_attribute(const hx_element_read *e);
 
 #endif

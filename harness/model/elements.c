@@ -410,12 +410,26 @@ static void build_force_vector(hx_draft *d, const hx_element_read *e)
                            hx_attr_int(e, "ref_marker_id", 0));
 }
 
-static const hx_attr_spec force_field_attrs[] = {
-    ID, REQUIRED("i_marker_id", HX_ATTR_INT), REQUIRED("j_marker_id", HX_ATTR_INT),
-    IGNORED("body1_id"), IGNORED("body2_id"), USER_CALL, END};
-
+/* A Force_Field calling FIESUB, or, with no routine named, the linear one
+ * (builtin_forces.h); a routine and linear attributes both: refused. */
 static void build_force_field(hx_draft *d, const hx_element_read *e)
 {
+    static const char *const routine[] = {"usrsub_param_string", "usrsub_dll_name",
+                                          "usrsub_fnc_name", "script_name", "interpreter"};
+    const char *named = NULL;
+    for (size_t k = 0; k < sizeof routine / sizeof routine[0] && named == NULL; ++k)
+        if (hx_attr_present(e, routine[k]))
+            named = routine[k];
+    const char *linear = hx_field_linear_attribute(e);
+    if (named == NULL) {
+        hx_build_field(d, e);
+        return;
+    }
+    if (linear != NULL) {
+        hx_draft_fail(d, e->line, "%s %d: %s is a linear field's, and %s names a routine (FIESUB):"
+                      " give one of them", e->name, e->id, linear, named);
+        return;
+    }
     hx_force *f = push_force(d, e, HX_FORCE_FIESUB);
     if (f == NULL)
         return;
@@ -527,7 +541,7 @@ const hx_element_spec hx_element_specs[] = {
     {"Constraint_Coupler", coupler_attrs, build_coupler, NULL, 0},
     {"Constraint_General", hx_gcon_attrs, hx_build_gcon, NULL, 0},
     {"Force_Vector_TwoBody", force_vector_attrs, build_force_vector, NULL, 0},
-    {"Force_Field", force_field_attrs, build_force_field, NULL, 0},
+    {"Force_Field", hx_field_attrs, build_force_field, NULL, 0},
     {"Force_Vector_OneBody", vector_load_attrs, build_vector_load, NULL, 0},
     {"Force_Scalar_TwoBody", scalar_load_attrs, build_scalar_load, NULL, 0},
     {"Force_StateEqn", hx_stateeqn_attrs, hx_build_stateeqn, NULL, 0},

@@ -14,7 +14,8 @@ int hx_marker_between(int a, int b, int i, int j)
  * (SFORCE; a Force_SpringDamper, when no Force_Scalar_TwoBody has its id),
  * any Force_Vector element (VFORCE, VTORQ and GFORCE alike, as MotionSolve's
  * pages define them), a Force_Bushing (BUSHING), a Force_Beam (BEAM), a
- * Force_SpringDamper (SPDP), a Force_Field (FIELD). */
+ * Force_SpringDamper (SPDP), a Force_Field (FIELD: a linear one, or one calling
+ * FIESUB). */
 static int reads_load(int function, const hx_load *l, enum hx_load_builtin builtin)
 {
     if (l->builtin != builtin)
@@ -32,6 +33,7 @@ static enum hx_load_builtin builtin_of(int function)
     switch (function) {
     case HX_FN_BUSHING: return HX_LOAD_BUSHING;
     case HX_FN_BEAM: return HX_LOAD_BEAM;
+    case HX_FN_FIELD: return HX_LOAD_FIELD;
     case HX_FN_SPDP: return HX_LOAD_SPRINGDAMPER;
     default: return HX_LOAD_AS_WRITTEN;
     }

@@ -147,6 +147,7 @@ const char *hx_load_element_name(const hx_load *l)
     case HX_LOAD_SPRINGDAMPER: return "Force_SpringDamper";
     case HX_LOAD_BUSHING: return "Force_Bushing";
     case HX_LOAD_BEAM: return "Force_Beam";
+    case HX_LOAD_FIELD: return "Force_Field";
     case HX_LOAD_AS_WRITTEN: break;
     }
     if (l->kind != HX_LOAD_VECTOR)

@@ -134,7 +134,8 @@ enum hx_load_builtin {
     HX_LOAD_AS_WRITTEN,   /* a Force_Vector_* or Force_Scalar_TwoBody */
     HX_LOAD_SPRINGDAMPER, /* a Force_SpringDamper: a scalar load */
     HX_LOAD_BUSHING,      /* a Force_Bushing: a vector load, j_marker its J marker */
-    HX_LOAD_BEAM          /* a Force_Beam: a vector load, j_marker its J marker */
+    HX_LOAD_BEAM,         /* a Force_Beam: a vector load, j_marker its J marker */
+    HX_LOAD_FIELD         /* a linear Force_Field: a vector load, j_marker its J marker */
 };
 
 typedef struct hx_load {

@@ -24,7 +24,7 @@ typedef struct hx_attr_spec {
     int required;
 } hx_attr_spec;
 
-#define HX_MAX_ATTRS 40
+#define HX_MAX_ATTRS 96 /* a linear Force_Field's 72 matrix entries and the rest */
 
 /* An element as read: the value of each described attribute. */
 typedef struct hx_element_read {

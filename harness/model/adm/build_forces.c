@@ -93,14 +93,57 @@ int hx_adm_build_sforce(hx_adm_reader *r, hx_adm_entry *e)
     return hx_adm_element_build(r, e, &el, NULL);
 }
 
+/* MotionSolve's names of a linear field's matrix entries, Krc row r column c,
+ * in the order Adams' KMATRIX and CMATRIX list them: by columns. */
+#define COLUMN(m, c) m "1" #c, m "2" #c, m "3" #c, m "4" #c, m "5" #c, m "6" #c
+static const char *const field_k[36] = {COLUMN("K", 1), COLUMN("K", 2), COLUMN("K", 3),
+                                        COLUMN("K", 4), COLUMN("K", 5), COLUMN("K", 6)};
+static const char *const field_c[36] = {COLUMN("C", 1), COLUMN("C", 2), COLUMN("C", 3),
+                                        COLUMN("C", 4), COLUMN("C", 5), COLUMN("C", 6)};
+static const char *const field_length[6] = {"length_x",  "length_y",  "length_z",
+                                            "length_tx", "length_ty", "length_tz"};
+static const char *const field_preload[6] = {"preload_x",  "preload_y",  "preload_z",
+                                             "preload_tx", "preload_ty", "preload_tz"};
+
+/* FIELD: FUNCTION=USER(...) calls FIESUB; without FUNCTION it is linear:
+ * KMATRIX, CMATRIX (36 values by columns) or CRATIO, LENGTH and FORCE. */
 int hx_adm_build_field(hx_adm_reader *r, hx_adm_entry *e)
 {
+    static const char *const linear[5] = {"KMATRIX", "CMATRIX", "CRATIO", "LENGTH", "FORCE"};
     hx_adm_element el;
     hx_adm_element_init(&el, "Force_Field");
     hx_adm_element_number(&el, "i_marker_id", hx_adm_ref(e, "I"));
     hx_adm_element_number(&el, "j_marker_id", hx_adm_ref(e, "J"));
-    if (hx_adm_element_user(r, e, &el, NULL) != 0)
+    if (hx_adm_has(e, "FUNCTION")) {
+        for (int k = 0; k < 5; ++k)
+            if (hx_adm_has(e, linear[k]))
+                return hx_adm_fail(r, e, hx_adm_get(e, linear[k])->line, "%s is a linear"
+                                   " FIELD's, and FUNCTION=USER(...) calls FIESUB: give one of"
+                                   " them", linear[k]);
+        if (hx_adm_element_user(r, e, &el, NULL) != 0)
+            return -1;
+        return hx_adm_element_build(r, e, &el, NULL);
+    }
+    if (hx_adm_no_routine(r, e) != 0)
         return -1;
+    if (hx_adm_has(e, "CRATIO") && !hx_adm_has(e, "KMATRIX"))
+        return hx_adm_fail(r, e, hx_adm_get(e, "CRATIO")->line, "CRATIO without KMATRIX:"
+                           " CRATIO scales the stiffness matrix");
+    if (hx_adm_has(e, "CRATIO") && hx_adm_has(e, "CMATRIX"))
+        return hx_adm_fail(r, e, hx_adm_get(e, "CRATIO")->line, "give CMATRIX or CRATIO, not"
+                           " both");
+    for (int k = 0; k < 36; ++k) {
+        if (hx_adm_has(e, "KMATRIX"))
+            hx_adm_element_number(&el, field_k[k], hx_adm_number(e, "KMATRIX", k, 0.0));
+        if (hx_adm_has(e, "CMATRIX"))
+            hx_adm_element_number(&el, field_c[k], hx_adm_number(e, "CMATRIX", k, 0.0));
+    }
+    if (hx_adm_has(e, "CRATIO"))
+        hx_adm_element_number(&el, "CRATIO", hx_adm_number(e, "CRATIO", 0, 0.0));
+    for (int k = 0; k < 6; ++k) {
+        hx_adm_element_number(&el, field_length[k], hx_adm_number(e, "LENGTH", k, 0.0));
+        hx_adm_element_number(&el, field_preload[k], hx_adm_number(e, "FORCE", k, 0.0));
+    }
     return hx_adm_element_build(r, e, &el, NULL);
 }
 

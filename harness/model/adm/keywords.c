@@ -238,7 +238,8 @@ static int read_values(const hx_adm_keyword *kw, const hx_adm_statement *st,
     v->texts = NULL;
     for (int i = 0; i < n; ++i) {
         const hx_adm_token *t = &st->values[a->first + i];
-        const int status = parse_number(t->text, kw->kind == HX_ADM_ANGLE, &v->numbers[i]);
+        const int angle = kw->kind == HX_ADM_ANGLE || (kw->kind == HX_ADM_POSE && i >= 3);
+        const int status = parse_number(t->text, angle, &v->numbers[i]);
         *line = t->line;
         char which[32] = "";
         if (n > 1)

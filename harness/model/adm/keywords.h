@@ -18,6 +18,7 @@ typedef enum hx_adm_kind {
     HX_ADM_INT,     /* integers */
     HX_ADM_REAL,    /* finite numbers */
     HX_ADM_ANGLE,   /* finite numbers, radians, or degrees with a trailing D (90D) */
+    HX_ADM_POSE,    /* six finite numbers: three lengths, then three angles (a FIELD's LENGTH) */
     HX_ADM_WORD,    /* a name or names separated by ':' (NEWTON, T:R) */
     HX_ADM_TEXT,    /* any text, a quoted string's quotes taken off */
     HX_ADM_EXPR,    /* an expression or USER(...), kept as written with its position */

@@ -63,11 +63,8 @@ static const char *why_not(const hx_adm_entry *e, char *why, size_t size)
         if (!hx_adm_has(e, "JOINT"))
             snprintf(why, size, "a motion between markers (I, J), which the harness does not"
                      " simulate yet (it simulates a joint's MOTION)");
-    } else if (is(e, "FIELD")) { /* a DIFF's FUNCTION expression is its rate (§9.6) */
-        if (function == NULL)
-            snprintf(why, size, "a linear FIELD (KMATRIX, CMATRIX, ...), which the harness does"
-                     " not simulate yet (it runs FIELD=USER(...), FIESUB)");
-        else if (!hx_adm_is_user(function))
+    } else if (is(e, "FIELD")) { /* linear (no FUNCTION), or USER(...) calling FIESUB */
+        if (function != NULL && !hx_adm_is_user(function))
             snprintf(why, size, "a FUNCTION expression, which this harness does not evaluate yet");
     }
     return why;

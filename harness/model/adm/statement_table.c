@@ -95,7 +95,7 @@ static const hx_adm_keyword beam[] = {
 static const hx_adm_keyword field[] = {
     NEED_ID("I", "MARKER"), NEED_ID("J", "MARKER"), EXPR("FUNCTION"), ROUTINES(1),
     REAL("CMATRIX", 36), REAL("KMATRIX", 36), REAL("CRATIO", 1), REAL("FORCE", 6),
-    REAL("LENGTH", 6), KEND};
+    K("LENGTH", HX_ADM_POSE, 6, 6, 0, NULL), KEND};
 
 static const hx_adm_keyword force_stateeqn[] = {
     NEED_ID("I", "MARKER"), NEED_ID("JFLOAT", "MARKER"), NEED_ID("RM", "MARKER"),

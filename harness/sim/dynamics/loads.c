@@ -225,8 +225,9 @@ int hx_loads_output(const hx_dynamics *d, const hx_dynamics_data *dd, int k, dou
         for (int j = 0; j < 3; ++j)
             out[6 * s + j] = share.F[s][j], out[6 * s + 3 + j] = share.T[s][j];
     const hx_load *l = &d->m->loads[k];
-    if ((l->builtin == HX_LOAD_BUSHING || l->builtin == HX_LOAD_BEAM) && share.count == 2) {
-        /* a bushing's or a beam's J side at J's origin: the moment of the offset added
+    if ((l->builtin == HX_LOAD_BUSHING || l->builtin == HX_LOAD_BEAM ||
+         l->builtin == HX_LOAD_FIELD) && share.count == 2) {
+        /* a bushing's, a beam's or a linear field's J side at J's origin: the moment of the offset added
          * (§7.17) */
         hx_frame scratch;
         const hx_frame *J = hx_frames_marker(&dd->frames, l->j_marker, &scratch);

@@ -42,11 +42,11 @@ static int switched_element(const char *element, int *scalar, enum hx_load_built
         const char *name;
         int scalar;
         enum hx_load_builtin builtin;
-    } switched[7] = {{"SFORCE", 1, HX_LOAD_AS_WRITTEN},       {"VFORCE", 0, HX_LOAD_AS_WRITTEN},
+    } switched[8] = {{"SFORCE", 1, HX_LOAD_AS_WRITTEN},       {"VFORCE", 0, HX_LOAD_AS_WRITTEN},
                      {"VTORQUE", 0, HX_LOAD_AS_WRITTEN},      {"GFORCE", 0, HX_LOAD_AS_WRITTEN},
                      {"SPRINGDAMPER", 1, HX_LOAD_SPRINGDAMPER}, {"BUSHING", 0, HX_LOAD_BUSHING},
-                     {"BEAM", 0, HX_LOAD_BEAM}};
-    for (int k = 0; k < 7; ++k)
+                     {"BEAM", 0, HX_LOAD_BEAM},               {"FIELD", 0, HX_LOAD_FIELD}};
+    for (int k = 0; k < 8; ++k)
         if (strcmp(element, switched[k].name) == 0) {
             *scalar = switched[k].scalar, *builtin = switched[k].builtin;
             return 0;
@@ -56,7 +56,8 @@ static int switched_element(const char *element, int *scalar, enum hx_load_built
 
 /* ACTIVATE or DEACTIVATE c on the flags of the loads (docs/interface.md
  * §9.9): SFORCE and SPRINGDAMPER name a scalar load, VFORCE, VTORQUE, GFORCE,
- * BUSHING and BEAM a vector one, by id; 0, or -1 with the reason. */
+ * BUSHING, BEAM and a linear FIELD a vector one, by id; 0, or -1 with the
+ * reason. */
 static int switch_loads(const hx_command *c, const char *path, const hx_model *m,
                         unsigned char *off, hx_message *msg)
 {
@@ -65,8 +66,8 @@ static int switch_loads(const hx_command *c, const char *path, const hx_model *m
     enum hx_load_builtin builtin;
     if (switched_element(c->element, &scalar, &builtin) != 0)
         return hx_fail(msg, "%s:%d: %s/%s: the harness switches SFORCE, VFORCE, VTORQUE and"
-                       " GFORCE given by FUNCTION expressions, SPRINGDAMPER, BUSHING and BEAM,"
-                       " not other elements yet", path, c->line, what, c->element);
+                       " GFORCE given by FUNCTION expressions, SPRINGDAMPER, BUSHING, BEAM and"
+                       " linear FIELDs, not other elements yet", path, c->line, what, c->element);
     for (int i = 0; i < c->nids; ++i) {
         int found = 0;
         for (int k = 0; k < m->nloads; ++k)
@@ -78,10 +79,12 @@ static int switch_loads(const hx_command *c, const char *path, const hx_model *m
         if (!found)
             return hx_fail(msg, "%s:%d: %s/%s: the model has no %s/%d%s", path, c->line, what,
                            c->element, c->element, c->ids[i],
-                           builtin != HX_LOAD_AS_WRITTEN ? ""
-                                                         : " given by FUNCTION expressions (one"
-                                                           " given by a user routine is not"
-                                                           " switched yet)");
+                           builtin == HX_LOAD_FIELD ? " that is linear (one calling FIESUB is"
+                                                      " not switched yet)"
+                           : builtin != HX_LOAD_AS_WRITTEN ? ""
+                                                           : " given by FUNCTION expressions (one"
+                                                             " given by a user routine is not"
+                                                             " switched yet)");
     }
     return 0;
 }
