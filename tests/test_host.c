@@ -150,7 +150,15 @@ static void angles_and_arrays(void **state)
     double acc[6] = {1, 1, 1, 1, 1, 1};
     assert_int_equal(hx_answer_query(&s.frames, "ACC", ipar, 2, 1, acc), 6);
     assert_true(acc[0] == 0.0 && acc[5] == 0.0);
-    assert_int_equal(hx_answer_query(&s.frames, "FX", ipar, 2, 0, a), -1);
+    /* a force's the same: a value of the loop (a zero here); its ids and count checked */
+    a[0] = 1.0;
+    assert_int_equal(hx_answer_query(&s.frames, "FX", ipar, 2, 0, a), 1);
+    assert_true(a[0] == 0.0);
+    assert_int_equal(hx_answer_query(&s.frames, "FX", ipar, 2, 1, a), -1); /* a scalar */
+    const int joint[4] = {1, 0, 4, 0};
+    assert_int_equal(hx_answer_query(&s.frames, "JOINT", joint, 4, 0, a), 1);
+    assert_int_equal(hx_answer_query(&s.frames, "JOINT", joint, 3, 0, a), -1); /* rm left out */
+    assert_int_equal(hx_answer_query(&s.frames, "FORCE", joint, 4, 0, a), -1); /* unknown */
     assert_int_equal(hx_answer_query(&s.frames, "YAW", ipar, 2, 1, a), -1); /* a scalar */
     hx_session_close(&s);
 }

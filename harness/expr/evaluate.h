@@ -82,10 +82,10 @@ int hx_expr_eval_partials_forward(const hx_expr_program *p, const hx_expr_contex
 int hx_expr_input_value(const hx_expr_program *p, const hx_expr_context *c, int k,
                         double *value, hx_expr_fault *fault);
 
-/* The value at c of an acceleration read outside any program (a user
- * routine's query, model/loop_inputs.h), from c's outputs' accelerations: 0,
- * or -1 with the fault (none given). */
-int hx_expr_acceleration_value(const hx_expr_context *c, const hx_expr_input *in,
-                               double *value, hx_expr_fault *fault);
+/* The value at c of an acceleration or a force read outside any program (a
+ * user routine's query, model/loop_inputs.h), from c's outputs: 0, or -1
+ * with the fault (none given). */
+int hx_expr_query_value(const hx_expr_context *c, const hx_expr_input *in, double *value,
+                        hx_expr_fault *fault);
 
 #endif

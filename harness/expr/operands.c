@@ -157,10 +157,15 @@ static int acceleration(const hx_expr_context *c, const hx_expr_input *in, doubl
     return 0;
 }
 
-int hx_expr_acceleration_value(const hx_expr_context *c, const hx_expr_input *in,
-                               double *value, hx_expr_fault *fault)
+int hx_expr_query_value(const hx_expr_context *c, const hx_expr_input *in, double *value,
+                        hx_expr_fault *fault)
 {
-    return acceleration(c, in, value, fault);
+    switch (in->kind) {
+    case HX_EXPR_INPUT_REACTION: return reaction(c, in, value, fault);
+    case HX_EXPR_INPUT_LOAD: return load(c, in, value, fault);
+    case HX_EXPR_INPUT_MARKER_FORCE: return marker_force(c, in, value, fault);
+    default: return acceleration(c, in, value, fault);
+    }
 }
 
 int hx_expr_operand_input(const hx_expr_program *p, const hx_expr_context *c, int k,

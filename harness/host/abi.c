@@ -202,14 +202,14 @@ static int find_declared(hx_call *c, const hx_query *q)
     return -1;
 }
 
-/* An acceleration declared as query k, from the algebraic loop's values in
+/* An acceleration or a force declared as query k, from the algebraic loop's values in
  * the frames (host/loop_queries.h); 0, or -1 refused. */
 static int answer_loop(hx_call *c, const hx_query *q, int k, double *values, int count)
 {
     for (int i = 0; i < count; ++i) {
         const int slot = c->loop_slot != NULL ? c->loop_slot[k][i] : -1;
         if (slot < 0 || c->frames->loop == NULL) {
-            report_refused(c, q, "the acceleration has no place among the algebraic loop's inputs"
+            report_refused(c, q, "the value has no place among the algebraic loop's inputs"
                            " (this call is not an element's within a right-hand side:"
                            " docs/interface.md §5.1)");
             return -1;
@@ -243,8 +243,10 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
                        " RDISP VEL TVEL RVEL, ACC TACC RACC, ARRAY of an IC Reference_Array;"
                        " c_sysfnc: DX DY DZ DM AX AY AZ PSI THETA PHI YAW PITCH ROLL INCANG VX VY VZ"
                        " VM VR WX WY WZ WM, ACCX ACCY ACCZ ACCM WDTX WDTY WDTZ WDTM, DIF DIF1 of a"
-                       " Control_Diff, VARVAL of a Reference_Variable; existing ids). Other elements' forces (FX ... TZ) are not"
-                       " answered: docs/interface.md §5.1");
+                       " Control_Diff, VARVAL of a Reference_Variable, JOINT JPRIM MOTION COUPLER GCON"
+                       " SFORCE VFORCE VTORQ GFORCE FIELD BUSHING BEAM SPDP (id, jflag, comp, rm),"
+                       " FX FY FZ FM TX TY TZ TM (I[, J[, K]]); existing ids): docs/interface.md"
+                       " §5.1");
         return -1;
     }
     if (c->dependency_pass) {
@@ -258,23 +260,25 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
         }
         return count;
     }
-    const int accelerations = hx_query_reads(&q) == HX_READS_ACCELERATIONS;
+    /* accelerations and forces: the algebraic loop's inputs (host/loop_queries.h) */
+    const int reads = hx_query_reads(&q);
+    const int loop_read = reads == HX_READS_ACCELERATIONS || reads == HX_READS_FORCES;
     if (c->declared != NULL) {
         const int k = find_declared(c, &q);
         if (k < 0) {
             report_undeclared(c, &q);
-            if (accelerations)
+            if (loop_read)
                 return -1; /* no place in the loop to answer it from */
         } else {
-            if (accelerations && answer_loop(c, &q, k, values, count) != 0)
+            if (loop_read && answer_loop(c, &q, k, values, count) != 0)
                 return -1;
             c->used |= 1u << k;
             if (k == c->perturb_query && c->perturb_component < count)
                 values[c->perturb_component] += c->perturb_delta;
         }
-    } else if (accelerations) {
-        report_refused(c, &q, "an acceleration is answered only to a routine that declared it in"
-                       " its dependency pass (docs/interface.md §5.1)");
+    } else if (loop_read) {
+        report_refused(c, &q, "an acceleration or a force is answered only to a routine that"
+                       " declared it in its dependency pass (docs/interface.md §5.1)");
         return -1;
     }
     return count;

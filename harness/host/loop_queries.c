@@ -1,4 +1,5 @@
-/* The accelerations user routines ask, as loop inputs (loop_queries.h). */
+/* The accelerations and forces user routines ask, as loop inputs
+ * (loop_queries.h). */
 #include "host/loop_queries.h"
 
 #include <stdio.h>
@@ -22,12 +23,31 @@ static void as_input(const hx_model *m, const hx_query *q, int measure, hx_expr_
     in->variable = in->loop = -1;
 }
 
+/* Force query q (function `function`) as an expression's input, linked;
+ * 0, or -1 with why. */
+static int as_force(const hx_model *m, const hx_query *q, int function, hx_expr_input *in,
+                    char *why, size_t size)
+{
+    memset(in, 0, sizeof *in);
+    const hx_expr_function_kind kind = hx_expr_function_at(function)->kind;
+    in->kind = kind == HX_FK_REACTION ? HX_EXPR_INPUT_REACTION
+               : kind == HX_FK_LOAD   ? HX_EXPR_INPUT_LOAD
+                                      : HX_EXPR_INPUT_MARKER_FORCE;
+    in->function = function;
+    in->nids = q->nsize;
+    for (int j = 0; j < 4; ++j)
+        in->ids[j] = q->ipar[j];
+    in->variable = in->loop = -1;
+    return hx_expr_link_force(in, m, why, size);
+}
+
 /* Binding b's declared query k given its slots; 0 or -1 with msg. */
 static int bind_query(hx_model *m, hx_binding *b, int k, hx_message *msg)
 {
     const hx_query *q = &b->deps.query[k];
     int measures[6];
-    const int count = hx_query_accelerations(q, measures);
+    const int force = hx_query_force(q);
+    const int count = force >= 0 ? 1 : hx_query_accelerations(q, measures);
     if (count == 0)
         return 0;
     const char *routine = hx_binding_routine(b, 0);
@@ -42,7 +62,13 @@ static int bind_query(hx_model *m, hx_binding *b, int k, hx_message *msg)
     snprintf(element, sizeof element, "%s of %s %d", routine, b->element, b->id);
     for (int i = 0; i < count; ++i) {
         hx_expr_input in;
-        as_input(m, q, measures[i], &in);
+        char why[320];
+        if (force < 0)
+            as_input(m, q, measures[i], &in);
+        else if (as_force(m, q, force, &in, why, sizeof why) != 0)
+            return hx_fail(msg, "%s:%d: %s %d (%s) declares %s in its dependency pass: %s",
+                           m->path, hx_binding_line(m, b), b->element, b->id, routine, asked,
+                           why);
         if (count > 1)
             snprintf(text, sizeof text, "%s[%d]", asked, i + 1);
         else

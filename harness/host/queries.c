@@ -9,11 +9,13 @@
 #include "frames/acceleration_measures.h"
 #include "frames/measure_functions.h"
 #include "frames/measures.h"
+#include "model/expr/functions.h"
 
 /* Function codes: the arrays, then the scalar measures (F_MEASURE plus the
  * measure, frames/measure_functions.h), then DIF and DIF1, then the
  * accelerations: the arrays ACC TACC RACC and the scalars (F_ACCX plus
- * frames/acceleration_measures.h's measure). */
+ * frames/acceleration_measures.h's measure), then the forces (F_FORCE plus
+ * the place in force_functions). */
 enum {
     F_DISP, F_TDISP, F_RDISP, F_VEL, F_TVEL, F_RVEL, F_ARRAY,
     F_MEASURE,
@@ -22,8 +24,14 @@ enum {
     F_VARVAL, /* a Reference_Variable's value, as the variables stage computed it */
     F_ACC, F_TACC, F_RACC,
     F_ACCX,
-    F_COUNT = F_ACCX + HX_WDT_M + 1
+    F_FORCE = F_ACCX + HX_WDT_M + 1
 };
+/* The forces' expression functions (model/expr/functions.h), F_FORCE's order. */
+static const int force_functions[] = {
+    HX_FN_JOINT,  HX_FN_JPRIM, HX_FN_MOTION, HX_FN_COUPLER, HX_FN_GCON,    HX_FN_SFORCE,
+    HX_FN_VFORCE, HX_FN_VTORQ, HX_FN_GFORCE, HX_FN_FIELD,   HX_FN_BUSHING, HX_FN_BEAM,
+    HX_FN_SPDP,   HX_FN_FX,    HX_FN_FY,     HX_FN_FZ,      HX_FN_FM,      HX_FN_TX,
+    HX_FN_TY,     HX_FN_TZ,    HX_FN_TM};
 /* the most ids each array function and DIF, DIF1 take */
 static const int array_nsize[F_MEASURE] = {3, 3, 2, 4, 4, 3, 1};
 
@@ -35,6 +43,7 @@ static const int array_nsize[F_MEASURE] = {3, 3, 2, 4, 4, 3, 1};
 #define PACK4(a, b, c, d) (PACK3(a, b, c) | (unsigned long long)(d) << 24)
 #define PACK5(a, b, c, d, e) (PACK4(a, b, c, d) | (unsigned long long)(e) << 32)
 #define PACK6(a, b, c, d, e, f) (PACK5(a, b, c, d, e) | (unsigned long long)(f) << 40)
+#define PACK7(a, b, c, d, e, f, g) (PACK6(a, b, c, d, e, f) | (unsigned long long)(g) << 48)
 
 static int function_code(unsigned long long name)
 {
@@ -83,6 +92,27 @@ static int function_code(unsigned long long name)
     case PACK4('W', 'D', 'T', 'Y'): return F_ACCX + HX_WDT_Y;
     case PACK4('W', 'D', 'T', 'Z'): return F_ACCX + HX_WDT_Z;
     case PACK4('W', 'D', 'T', 'M'): return F_ACCX + HX_WDT_M;
+    case PACK5('J', 'O', 'I', 'N', 'T'): return F_FORCE;
+    case PACK5('J', 'P', 'R', 'I', 'M'): return F_FORCE + 1;
+    case PACK6('M', 'O', 'T', 'I', 'O', 'N'): return F_FORCE + 2;
+    case PACK7('C', 'O', 'U', 'P', 'L', 'E', 'R'): return F_FORCE + 3;
+    case PACK4('G', 'C', 'O', 'N'): return F_FORCE + 4;
+    case PACK6('S', 'F', 'O', 'R', 'C', 'E'): return F_FORCE + 5;
+    case PACK6('V', 'F', 'O', 'R', 'C', 'E'): return F_FORCE + 6;
+    case PACK5('V', 'T', 'O', 'R', 'Q'): return F_FORCE + 7;
+    case PACK6('G', 'F', 'O', 'R', 'C', 'E'): return F_FORCE + 8;
+    case PACK5('F', 'I', 'E', 'L', 'D'): return F_FORCE + 9;
+    case PACK7('B', 'U', 'S', 'H', 'I', 'N', 'G'): return F_FORCE + 10;
+    case PACK4('B', 'E', 'A', 'M'): return F_FORCE + 11;
+    case PACK4('S', 'P', 'D', 'P'): return F_FORCE + 12;
+    case PACK2('F', 'X'): return F_FORCE + 13;
+    case PACK2('F', 'Y'): return F_FORCE + 14;
+    case PACK2('F', 'Z'): return F_FORCE + 15;
+    case PACK2('F', 'M'): return F_FORCE + 16;
+    case PACK2('T', 'X'): return F_FORCE + 17;
+    case PACK2('T', 'Y'): return F_FORCE + 18;
+    case PACK2('T', 'Z'): return F_FORCE + 19;
+    case PACK2('T', 'M'): return F_FORCE + 20;
     default: return -1;
     }
 }
@@ -91,7 +121,10 @@ static int function_code(unsigned long long name)
 static void nsize_range(int code, int *least, int *most)
 {
     *least = 1;
-    if (code >= F_MEASURE && code < F_DIF)
+    if (code >= F_FORCE) { /* as the function language takes them (id, jflag, comp, rm) */
+        const hx_expr_function *f = hx_expr_function_at(force_functions[code - F_FORCE]);
+        *least = f->least, *most = f->most;
+    } else if (code >= F_MEASURE && code < F_DIF)
         hx_measure_markers((hx_measure)(code - F_MEASURE), least, most);
     else if (code >= F_ACC) /* (I[, J[, K[, L]]]); the magnitudes (I[, J[, L]]) */
         *most = code == F_ACCX + HX_ACC_M || code == F_ACCX + HX_WDT_M ? 3 : 4;
@@ -125,6 +158,8 @@ int hx_query_reads(const hx_query *q)
         return HX_READS_DIFF;
     if (q->function == F_VARVAL)
         return HX_READS_VARIABLE;
+    if (q->function >= F_FORCE)
+        return HX_READS_FORCES;
     if (q->function >= F_ACC)
         return HX_READS_ACCELERATIONS;
     return q->function == F_ARRAY ? HX_READS_ARRAY : HX_READS_MARKERS;
@@ -190,11 +225,16 @@ int hx_query_accelerations(const hx_query *q, int measures[6])
         memcpy(measures, acc + 3, 3 * sizeof *acc);
         return 3;
     default:
-        if (q->function < F_ACCX)
+        if (q->function < F_ACCX || q->function >= F_FORCE)
             return 0;
         measures[0] = q->function - F_ACCX;
         return 1;
     }
+}
+
+int hx_query_force(const hx_query *q)
+{
+    return q->function >= F_FORCE ? force_functions[q->function - F_FORCE] : -1;
 }
 
 int hx_answer(const hx_frames *fr, const hx_query *q, const int *ipar, double *values)
@@ -208,6 +248,10 @@ int hx_answer(const hx_frames *fr, const hx_query *q, const int *ipar, double *v
     if (fr == NULL || code < 0 || array_function != q->is_array || nsize < least ||
         nsize > most || ipar == NULL || ipar[0] == 0)
         return -1;
+    if (code >= F_FORCE) { /* the element is linked where it is declared; the loop's value */
+        values[0] = 0.0;
+        return 1;
+    }
     if (code == F_ARRAY)
         return array_numbers(fr->model, ipar[0], values);
     if (code == F_DIF || code == F_DIF1) {

@@ -22,9 +22,10 @@ typedef struct hx_loop_input {
     int input;                      /* ... and its place among that program's inputs */
     char element[64];               /* that program's element: "Force_Scalar_TwoBody 1";
                                      * a routine's: "GFOSUB of Force_Vector_OneBody 5" */
-    /* program NULL: the acceleration a user routine asks (c_sysfnc ACCZ, one
-     * value of c_sysary ACC: host/loop_queries.h) as an expression's input
-     * would read it, linked (its markers' indices), and as asked: "ACC(20)[3]" */
+    /* program NULL: the acceleration or force a user routine asks (c_sysfnc
+     * ACCZ or JOINT, one value of c_sysary ACC: host/loop_queries.h) as an
+     * expression's input would read it, linked (its markers' or element's
+     * indices), and as asked: "ACC(20)[3]", "JOINT(9,0,4,0)" */
     hx_expr_input query;
     char text[40];
 } hx_loop_input;
@@ -35,7 +36,7 @@ typedef struct hx_loop_input {
  * 0, or -1 with the draft failed (out of memory). */
 int hx_draft_find_loop_inputs(hx_draft *d);
 
-/* The slot of acceleration `in` (linked) that a user routine's query reads,
+/* The slot of acceleration or force `in` (linked) that a user routine's query reads,
  * the one an expression's same acceleration has, or a new one (with text
  * and element); -1 out of memory. After hx_draft_find_loop_inputs, by
  * whoever knows the routines' queries (host/loop_queries.h). */

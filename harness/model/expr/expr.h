@@ -120,6 +120,11 @@ int hx_expr_link_output(hx_expr_program *p, const hx_model *m, hx_message *msg);
  * dynamics solves (sim/dynamics/algebraic_loop.h), each given its slot by
  * hx_expr_set_loop once the model is read. */
 int hx_expr_link_loop(hx_expr_program *p, const hx_model *m, hx_message *msg);
+/* A force input standing alone (a user routine's c_sysfnc JOINT .. TM, as
+ * host/loop_queries.h makes it: kind, function, ids set): its element's,
+ * markers' and rm's indices, as hx_expr_link_loop links an expression's; 0,
+ * or -1 with why ("no Constraint_Joint (JOINT) 9 in the model"). */
+int hx_expr_link_force(hx_expr_input *in, const hx_model *m, char *why, size_t size);
 /* Input k's slot among the model's loop inputs (model/loop_inputs.c). */
 void hx_expr_set_loop(hx_expr_program *p, int k, int slot);
 

@@ -92,70 +92,93 @@ static int constraint_element(hx_expr_input *in, const hx_model *m, char *what, 
     return 0;
 }
 
-/* JOINT, JPRIM, MOTION, COUPLER, GCON (id, jflag, comp, rm): the element, its
- * markers and rm. */
-static int link_reaction(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
-                         const char *text, int where, hx_message *msg)
+/* rm (argument 4) into in->index[3]; 0, or -1 with why. */
+static int link_rm(hx_expr_input *in, const hx_model *m, char *why, size_t size)
 {
-    if (where == LINK_STATE)
-        return fail_at(p, msg, in->line, in->column, "%s: a constraint element's force is known"
-                       " only once the accelerations are: here it would close an algebraic"
-                       " loop, which the harness solves for forces, variables and Control_Diff"
-                       " rates only (REQUEST and Post_Request expressions may read it)", text);
-    char what[256];
-    if (constraint_element(in, m, what, sizeof what) != 0)
-        return fail_at(p, msg, in->line, in->column, "%s: %s", text, what);
     in->index[3] = in->ids[3] == 0 ? -1 : hx_model_marker(m, in->ids[3]);
-    if (in->ids[3] != 0 && in->index[3] < 0)
-        return fail_at(p, msg, in->line, in->column, "%s: rm (argument 4): no Reference_Marker"
-                       " %d in the model", text, in->ids[3]);
-    return 0;
-}
-
-/* SFORCE, VFORCE, VTORQ, GFORCE, BUSHING, FIELD (id, jflag, comp, rm): the
- * force element (model/marker_elements.h) and rm. */
-static int link_load(hx_expr_program *p, hx_expr_input *in, const hx_model *m, const char *text,
-                     int where, hx_message *msg)
-{
-    if (where == LINK_STATE)
-        return fail_at(p, msg, in->line, in->column, "%s: another element's force: here it"
-                       " would close an algebraic loop, which the harness solves for forces,"
-                       " variables and Control_Diff rates only (REQUEST and Post_Request"
-                       " expressions may read it)", text);
-    char what[256];
-    int force;
-    if (hx_marker_element_find(m, in->function, in->ids[0], &force, &in->index[0], what,
-                               sizeof what) != 0)
-        return fail_at(p, msg, in->line, in->column, "%s: no %s", text, what);
-    in->index[1] = force;
-    in->index[3] = in->ids[3] == 0 ? -1 : hx_model_marker(m, in->ids[3]);
-    if (in->ids[3] != 0 && in->index[3] < 0)
-        return fail_at(p, msg, in->line, in->column, "%s: rm (argument 4): no Reference_Marker"
-                       " %d in the model", text, in->ids[3]);
-    return 0;
-}
-
-/* FX .. TM (I[, J[, K]]): the markers, and no element acting between I and J
- * whose force the harness does not sum. */
-static int link_marker_force(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
-                             const char *text, int where, hx_message *msg)
-{
-    if (where == LINK_STATE)
-        return fail_at(p, msg, in->line, in->column, "%s: the forces at a marker are known only"
-                       " once the accelerations are: here they would close an algebraic loop,"
-                       " which the harness solves for forces, variables and Control_Diff rates"
-                       " only (REQUEST and Post_Request expressions may read them)", text);
-    for (int k = 0; k < 3; ++k) {
-        in->index[k] = in->ids[k] == 0 ? -1 : hx_model_marker(m, in->ids[k]);
-        if (in->ids[k] != 0 && in->index[k] < 0)
-            return fail_at(p, msg, in->line, in->column, "%s: no Reference_Marker %d in the"
-                           " model", text, in->ids[k]);
+    if (in->ids[3] != 0 && in->index[3] < 0) {
+        snprintf(why, size, "rm (argument 4): no Reference_Marker %d in the model", in->ids[3]);
+        return -1;
     }
-    char what[128];
-    if (hx_marker_unsummed(m, in->index[0], in->index[1], what, sizeof what))
-        return fail_at(p, msg, in->line, in->column, "%s: %s acts at marker %d%s, and the harness"
-                       " does not sum its force at a marker yet", text, what, in->ids[0],
-                       in->index[1] >= 0 ? " (between it and J)" : "");
+    return 0;
+}
+
+int hx_expr_link_force(hx_expr_input *in, const hx_model *m, char *why, size_t size)
+{
+    const char *name = hx_expr_function_at(in->function)->name;
+    const int jflags = in->function == HX_FN_COUPLER ? 5 : in->function == HX_FN_GCON ? 0 : 1;
+    if ((in->kind == HX_EXPR_INPUT_REACTION || in->kind == HX_EXPR_INPUT_LOAD) &&
+        (in->ids[1] < 0 || in->ids[1] > jflags)) { /* the parser's checks, for a query's */
+        snprintf(why, size, "%s: jflag (argument 2) is %d: 0 to %d", name, in->ids[1], jflags);
+        return -1;
+    }
+    if ((in->kind == HX_EXPR_INPUT_REACTION || in->kind == HX_EXPR_INPUT_LOAD) &&
+        (in->ids[2] < 1 || in->ids[2] > 8)) {
+        snprintf(why, size, "%s: comp (argument 3) is %d: 1 to 8 (FM, FX, FY, FZ, TM, TX, TY,"
+                 " TZ)", name, in->ids[2]);
+        return -1;
+    }
+    switch (in->kind) {
+    case HX_EXPR_INPUT_REACTION: /* JOINT .. GCON (id, jflag, comp, rm): the element, its
+                                  * markers, rm */
+        if (constraint_element(in, m, why, size) != 0)
+            return -1;
+        return link_rm(in, m, why, size);
+    case HX_EXPR_INPUT_LOAD: { /* SFORCE .. SPDP (id, jflag, comp, rm): the force element
+                                * (model/marker_elements.h), rm */
+        char what[200];
+        int force;
+        if (hx_marker_element_find(m, in->function, in->ids[0], &force, &in->index[0], what,
+                                   sizeof what) != 0) {
+            snprintf(why, size, "no %s", what);
+            return -1;
+        }
+        in->index[1] = force;
+        return link_rm(in, m, why, size);
+    }
+    case HX_EXPR_INPUT_MARKER_FORCE: { /* FX .. TM (I[, J[, K]]): the markers, and no element
+                                        * acting between I and J whose force is not summed */
+        for (int k = 0; k < 3; ++k) {
+            in->index[k] = in->ids[k] == 0 ? -1 : hx_model_marker(m, in->ids[k]);
+            if (in->ids[k] != 0 && in->index[k] < 0) {
+                snprintf(why, size, "no Reference_Marker %d in the model", in->ids[k]);
+                return -1;
+            }
+        }
+        char what[128];
+        if (hx_marker_unsummed(m, in->index[0], in->index[1], what, sizeof what)) {
+            snprintf(why, size, "%s acts at marker %d%s, and the harness does not sum its force"
+                     " at a marker yet", what, in->ids[0],
+                     in->index[1] >= 0 ? " (between it and J)" : "");
+            return -1;
+        }
+        return 0;
+    }
+    default: snprintf(why, size, "not a force"); return -1;
+    }
+}
+
+/* A constraint element's (JOINT .. GCON), a force element's (SFORCE .. SPDP)
+ * or the net force at a marker (FX .. TM): refused where the state alone is
+ * known, else linked (hx_expr_link_force). */
+static int link_force(hx_expr_program *p, hx_expr_input *in, const hx_model *m,
+                      const char *text, int where, hx_message *msg)
+{
+    if (where == LINK_STATE)
+        return fail_at(p, msg, in->line, in->column, "%s: %s, which the harness solves for"
+                       " forces, variables and Control_Diff rates only (REQUEST and Post_Request"
+                       " expressions may read %s)", text,
+                       in->kind == HX_EXPR_INPUT_REACTION
+                       ? "a constraint element's force is known only once the accelerations"
+                         " are: here it would close an algebraic loop"
+                       : in->kind == HX_EXPR_INPUT_LOAD
+                       ? "another element's force: here it would close an algebraic loop"
+                       : "the forces at a marker are known only once the accelerations are:"
+                         " here they would close an algebraic loop",
+                       in->kind == HX_EXPR_INPUT_MARKER_FORCE ? "them" : "it");
+    char why[320];
+    if (hx_expr_link_force(in, m, why, sizeof why) != 0)
+        return fail_at(p, msg, in->line, in->column, "%s: %s", text, why);
     return 0;
 }
 
@@ -169,9 +192,9 @@ static int link_input(hx_expr_program *p, hx_expr_input *in, const hx_model *m, 
     in->loop = -1;
     switch (in->kind) {
     case HX_EXPR_INPUT_TIME: return 0;
-    case HX_EXPR_INPUT_REACTION: return link_reaction(p, in, m, text, where, msg);
-    case HX_EXPR_INPUT_LOAD: return link_load(p, in, m, text, where, msg);
-    case HX_EXPR_INPUT_MARKER_FORCE: return link_marker_force(p, in, m, text, where, msg);
+    case HX_EXPR_INPUT_REACTION:
+    case HX_EXPR_INPUT_LOAD:
+    case HX_EXPR_INPUT_MARKER_FORCE: return link_force(p, in, m, text, where, msg);
     case HX_EXPR_INPUT_ACCELERATION:
         if (where == LINK_STATE)
             return fail_at(p, msg, in->line, in->column, "%s: an acceleration is known only once"

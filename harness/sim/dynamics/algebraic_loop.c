@@ -41,14 +41,17 @@ typedef struct loop_reads {
     int all, users, constraints;
 } loop_reads;
 
+/* What loop input li reads: its program's input, or a user routine's query. */
+static const hx_expr_input *input_of(const hx_loop_input *li)
+{
+    return li->program != NULL ? &hx_expr_inputs(li->program)[li->input] : &li->query;
+}
+
 static loop_reads reads_of(const hx_model *m)
 {
     loop_reads r = {0, 0, 0};
     for (int i = 0; i < m->nloop_inputs; ++i) {
-        const hx_loop_input *li = &m->loop_inputs[i];
-        if (li->program == NULL)
-            continue;
-        const hx_expr_input *in = &hx_expr_inputs(li->program)[li->input];
+        const hx_expr_input *in = input_of(&m->loop_inputs[i]);
         r.all |= in->kind == HX_EXPR_INPUT_MARKER_FORCE;
         r.users |= in->kind == HX_EXPR_INPUT_LOAD && in->index[1];
         r.constraints |= in->kind == HX_EXPR_INPUT_REACTION && in->function != HX_FN_JOINT &&
@@ -109,18 +112,18 @@ static int loop_values(const hx_dynamics *d, hx_dynamics_data *dd, double t, con
     for (int i = 0; i < nz; ++i) {
         const hx_loop_input *li = &m->loop_inputs[i];
         hx_expr_fault fault;
-        if (li->program == NULL) { /* a user routine's acceleration (host/loop_queries.h) */
-            if (hx_expr_acceleration_value(&c, &li->query, &gz[i], &fault) != 0)
-                return hx_dynamics_fail(dd, "%s of %s: %s", li->text, li->element, fault.what);
-            continue;
-        }
-        const hx_expr_input *in = &hx_expr_inputs(li->program)[li->input];
+        const hx_expr_input *in = input_of(li);
         const int joint = in->function == HX_FN_JOINT || in->function == HX_FN_JPRIM;
         if (!r.all && in->kind == HX_EXPR_INPUT_REACTION && joint)
             hx_reactions_joint(d, dd, ydot, in->index[0], reactions + 6 * in->index[0]);
         else if (!r.all && in->kind == HX_EXPR_INPUT_LOAD && !in->index[1] &&
                  hx_loads_output(d, dd, in->index[0], loads + 12 * in->index[0], &msg) != 0)
             return hx_dynamics_fail(dd, "%s", msg.text);
+        if (li->program == NULL) { /* a user routine's query (host/loop_queries.h) */
+            if (hx_expr_query_value(&c, in, &gz[i], &fault) != 0)
+                return hx_dynamics_fail(dd, "%s of %s: %s", li->text, li->element, fault.what);
+            continue;
+        }
         if (hx_expr_input_value(li->program, &c, li->input, &gz[i], &fault) != 0) {
             hx_expr_fail(&msg, li->program, &fault, li->element);
             return hx_dynamics_fail(dd, "%s", msg.text);
