@@ -265,3 +265,35 @@ void expect_read_errors(const char *name, const char *head, const char *const (*
         assert_contains(msg.text, cases[k][1], cases[k][2]);
     }
 }
+
+/* a in the axes R's columns are (R^T a). */
+static void in_axes(const double R[9], const double a[3], double out[3])
+{
+    for (int i = 0; i < 3; ++i)
+        out[i] = R[i] * a[0] + R[3 + i] * a[1] + R[6 + i] * a[2];
+}
+
+void marker_motion(const evaluated *e, int i, int j, double L[3], double angles[3], double v[6],
+                   double RJ[9])
+{
+    const hx_model *m = e->m.session.model;
+    hx_frame si, sj;
+    const hx_frame *I = hx_frames_marker(&e->m.data.frames, hx_model_marker(m, i), &si);
+    const hx_frame *J = hx_frames_marker(&e->m.data.frames, hx_model_marker(m, j), &sj);
+    double dp[3], dv[3], dw[3];
+    for (int k = 0; k < 3; ++k)
+        dp[k] = I->p[k] - J->p[k], dw[k] = I->w[k] - J->w[k];
+    for (int k = 0; k < 3; ++k)
+        dv[k] = I->v[k] - J->v[k] - (J->w[(k + 1) % 3] * dp[(k + 2) % 3] -
+                                     J->w[(k + 2) % 3] * dp[(k + 1) % 3]);
+    in_axes(J->R, dp, L);
+    in_axes(J->R, dv, v);
+    in_axes(J->R, dw, v + 3);
+    memcpy(RJ, J->R, 9 * sizeof *RJ);
+    static const char *const names[3] = {"AX", "AY", "AZ"};
+    for (int k = 0; k < 3; ++k) {
+        char text[48];
+        snprintf(text, sizeof text, "%s(%d,%d)", names[k], i, j);
+        angles[k] = output(e, text);
+    }
+}

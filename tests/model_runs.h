@@ -103,4 +103,13 @@ void expect_read_errors(const char *name, const char *head, const char *const (*
             fail_msg("%s = %.15g, expected %.15g", text, got_, (double)(want));                 \
     } while (0)
 
+/* At e's state, marker i's place from marker j (L), its velocity seen by j
+ * and its angular velocity from j (v), in j's axes, worked from the two
+ * frames rather than from the measures: L = R^T dp, v = (R^T (v_I - v_J - w_J
+ * x dp), R^T (w_I - w_J)), R = RJ j's axes (columns) in the world's; and its
+ * angles from j, the projected ones of §8.5 as the measures AX AY AZ give
+ * them. */
+void marker_motion(const evaluated *e, int i, int j, double L[3], double angles[3], double v[6],
+                   double RJ[9]);
+
 #endif

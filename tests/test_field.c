@@ -92,37 +92,14 @@ static void check_field(const evaluated *e, int id, const double K[6][6], const 
     }
 }
 
-/* a in J's axes (R^T a, R's columns J's axes in the world's). */
-static void in_axes(const double R[9], const double a[3], double out[3])
-{
-    for (int i = 0; i < 3; ++i)
-        out[i] = R[i] * a[0] + R[3 + i] * a[1] + R[6 + i] * a[2];
-}
-
 static void field_components_by_hand(void **state)
 {
     (void)state;
     evaluated e;
     evaluate_text(&e, "field.adm", field);
-    /* I's place, velocity seen by J and angular velocity from J, in J's axes,
-     * from the two frames: R^T dp, R^T (v_I - v_J - w_J x dp), R^T (w_I - w_J) */
-    hx_frame si, sj;
-    const hx_model *m = e.m.session.model;
-    const hx_frame I = *hx_frames_marker(&e.m.data.frames, hx_model_marker(m, 20), &si);
-    const hx_frame J = *hx_frames_marker(&e.m.data.frames, hx_model_marker(m, 10), &sj);
-    double dp[3], dv[3], dw[3], L[3], d[6], v[6];
-    for (int k = 0; k < 3; ++k)
-        dp[k] = I.p[k] - J.p[k], dw[k] = I.w[k] - J.w[k];
-    for (int k = 0; k < 3; ++k)
-        dv[k] = I.v[k] - J.v[k] - (J.w[(k + 1) % 3] * dp[(k + 2) % 3] -
-                                   J.w[(k + 2) % 3] * dp[(k + 1) % 3]);
-    in_axes(J.R, dp, L);
-    in_axes(J.R, dv, v);
-    in_axes(J.R, dw, v + 3);
-    for (int k = 0; k < 3; ++k)
-        d[k] = L[k];
-    /* the angles: the projected ones of §8.5, as the measures give them */
-    d[3] = output(&e, "AX(20,10)"), d[4] = output(&e, "AY(20,10)"), d[5] = output(&e, "AZ(20,10)");
+    double L[3], d[6], v[6], RJ[9];
+    marker_motion(&e, 20, 10, L, d + 3, v, RJ);
+    d[0] = L[0], d[1] = L[1], d[2] = L[2];
     const double length5[6] = {2, 0.1, -0.2, 0.05, -0.03, 0.02};
     const double length6[6] = {2, 0.1, -0.2, 3 * DEG, -2 * DEG, 1 * DEG};
     for (int k = 0; k < 6; ++k) /* every entry of K and C acts */
@@ -137,11 +114,11 @@ static void field_components_by_hand(void **state)
         for (int col = 0; col < 6; ++col)
             C[row][col] = 0.1 * K[row][col];
     const double F0[6] = {1, 2, 3, 4, 5, 6}, none[6] = {0};
-    check_field(&e, 5, K, C, length5, F0, d, v, L, J.R);
+    check_field(&e, 5, K, C, length5, F0, d, v, L, RJ);
     for (int k = 0; k < 36; ++k)
         r[k] = 0.5 * (k + 1.0);
     by_columns(r, C);
-    check_field(&e, 6, K, C, length6, none, d, v, L, J.R);
+    check_field(&e, 6, K, C, length6, none, d, v, L, RJ);
     release(&e);
 }
 
