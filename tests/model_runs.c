@@ -266,6 +266,22 @@ void expect_read_errors(const char *name, const char *head, const char *const (*
     }
 }
 
+void expect_xml_errors(const char *element, const char *const (*cases)[2], size_t count)
+{
+    for (size_t k = 0; k < count; ++k) {
+        char text[2048];
+        snprintf(text, sizeof text,
+                 "<MotionSolve><Model>\n<Body_Ground id=\"1\"/>\n"
+                 "<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+                 "%s %s/>\n</Model></MotionSolve>\n",
+                 element, cases[k][0]);
+        hx_message msg;
+        if (hx_model_parse(text, strlen(text), "bad.xml", NULL, &msg) != NULL)
+            fail_msg("read: %s", cases[k][0]);
+        assert_contains(msg.text, "bad.xml:4:", cases[k][1]);
+    }
+}
+
 /* a in the axes R's columns are (R^T a). */
 static void in_axes(const double R[9], const double a[3], double out[3])
 {

@@ -95,6 +95,10 @@ double output(const evaluated *e, const char *text);
  * as `name`, its message holding [1] and [2]. */
 void expect_read_errors(const char *name, const char *head, const char *const (*cases)[3],
                         size_t count);
+/* The same of an XML element: `element` (its start, "<Force_Beam id=\"3\" ...")
+ * closed after each case's attributes (cases[k][0]), on the ground of bad.xml
+ * with its marker 10, at line 4; the reader refuses each with cases[k][1]. */
+void expect_xml_errors(const char *element, const char *const (*cases)[2], size_t count);
 
 #define EXPECT(e, text, want, tol)                                                              \
     do {                                                                                        \
