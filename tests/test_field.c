@@ -245,6 +245,9 @@ static void bad_input_named(void **state)
 {
     (void)state;
     static const char *const cases[][3] = {
+        {"FIELD/5, I=20, J=10", "bad.adm:6:",
+         "FIELD/5: Force_Field 5: neither a routine (usrsub_param_string: FIESUB) nor a linear"
+         " field's attributes"},
         {"FIELD/5, I=20, J=10, CRATIO=0.1", "bad.adm:6:",
          "FIELD/5: CRATIO without KMATRIX: CRATIO scales the stiffness matrix"},
         {"FIELD/5, I=20, J=10,\n, KMATRIX=1,2,3", "bad.adm:7:",
@@ -276,14 +279,28 @@ static void bad_input_named(void **state)
         {"usrsub_param_string=\"USER(1)\" K11=\"1\"",
          "Force_Field 3: K11 is a linear field's, and usrsub_param_string names a routine"
          " (FIESUB): give one of them"},
-        {"C11=\"1\" CRATIO=\"0.1\"",
+        {"K11=\"1\" C11=\"1\" CRATIO=\"0.1\"",
          "Force_Field 3: give CRATIO or the damping matrix (C11 .. C66), not both"},
-        {"CRATIO=\"-0.5\"", "Force_Field 3: CRATIO = -0.5: it must not be negative"},
+        {"K11=\"1\" CRATIO=\"-0.5\"", "Force_Field 3: CRATIO = -0.5: it must not be negative"},
         {"K12=\"x\"", "attribute K12 = \"x\" is not a finite number"},
         {"K67=\"1\"", "attribute K67 is not one the harness reads"},
+        {"", "Force_Field 3: neither a routine (usrsub_param_string: FIESUB) nor a linear"
+             " field's attributes"},
+        {"CRATIO=\"0.1\"", "Force_Field 3: CRATIO without a stiffness entry (K11 .. K66)"},
     };
     expect_xml_errors("<Force_Field id=\"3\" i_marker_id=\"10\" j_marker_id=\"10\"", xml,
                       sizeof xml / sizeof xml[0]);
+    /* a second Force_Field of an id, of either form */
+    static const char twice[] =
+        "<MotionSolve><Model>\n<Body_Ground id=\"1\"/>\n"
+        "<Reference_Marker id=\"10\" body_id=\"1\"/>\n"
+        "<Force_Field id=\"3\" i_marker_id=\"10\" j_marker_id=\"10\" K11=\"1\"/>\n"
+        "<Force_Field id=\"3\" i_marker_id=\"10\" j_marker_id=\"10\""
+        " usrsub_param_string=\"USER(1)\"/>\n"
+        "</Model></MotionSolve>\n";
+    hx_message msg;
+    assert_null(hx_model_parse(twice, strlen(twice), "bad.xml", NULL, &msg));
+    assert_contains(msg.text, "bad.xml:5:", "Force_Field 3 is defined twice (line 4)");
 }
 
 int main(void)

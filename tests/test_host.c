@@ -14,6 +14,7 @@
 #include "host/binding.h"
 #include "session/session.h"
 #include "host/queries.h"
+#include "model/expr/functions.h"
 #include "test_support.h"
 #include "tools/check/checks.h"
 
@@ -159,6 +160,23 @@ static void angles_and_arrays(void **state)
     assert_int_equal(hx_answer_query(&s.frames, "JOINT", joint, 4, 0, a), 1);
     assert_int_equal(hx_answer_query(&s.frames, "JOINT", joint, 3, 0, a), -1); /* rm left out */
     assert_int_equal(hx_answer_query(&s.frames, "FORCE", joint, 4, 0, a), -1); /* unknown */
+    /* every force's name is its function's, with the function's argument counts */
+    static const char *const forces[] = {"JOINT", "JPRIM", "MOTION", "COUPLER", "GCON", "SFORCE",
+                                         "VFORCE", "VTORQ", "GFORCE", "FIELD", "BUSHING", "BEAM",
+                                         "SPDP", "FX", "FY", "FZ", "FM", "TX", "TY", "TZ", "TM"};
+    for (size_t k = 0; k < sizeof forces / sizeof forces[0]; ++k) {
+        hx_query q;
+        hx_query_make(&q, forces[k], joint, 1, 0);
+        const int code = hx_expr_function_find(forces[k]);
+        assert_true(code >= 0);
+        assert_int_equal(hx_query_force(&q), code);
+        const hx_expr_function *f = hx_expr_function_at(code);
+        assert_int_equal(hx_answer_query(&s.frames, forces[k], joint, f->most, 0, a), 1);
+        assert_int_equal(hx_answer_query(&s.frames, forces[k], joint, f->most + 1, 0, a), -1);
+        if (f->least > 1)
+            assert_int_equal(hx_answer_query(&s.frames, forces[k], joint, f->least - 1, 0, a),
+                             -1);
+    }
     assert_int_equal(hx_answer_query(&s.frames, "YAW", ipar, 2, 1, a), -1); /* a scalar */
     hx_session_close(&s);
 }

@@ -14,6 +14,7 @@
 
 #include "session/session.h"
 #include "model/model.h"
+#include "model/xml_schema.h"
 #include "sim/dynamics/dynamics.h"
 #include "test_support.h"
 
@@ -455,6 +456,21 @@ static void a_folder_is_not_malformed_xml(void **state)
     assert_null(strstr(msg.text, "malformed"));
 }
 
+/* Every element description within the readers' room (an attribute past
+ * HX_MAX_ATTRS would be read as unknown, and a dataset's twin of it lost). */
+static void every_description_fits_the_readers(void **state)
+{
+    (void)state;
+    for (int k = 0; k < hx_element_spec_count; ++k) {
+        int n = 0;
+        while (hx_element_specs[k].attrs != NULL && hx_element_specs[k].attrs[n].name != NULL)
+            ++n;
+        if (n >= HX_MAX_ATTRS)
+            fail_msg("%s: %d attributes, the readers hold %d", hx_element_specs[k].name, n,
+                     HX_MAX_ATTRS - 1);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -475,6 +491,7 @@ int main(void)
         cmocka_unit_test(unsimulated_elements_are_read_and_refused_by_the_dynamics),
         cmocka_unit_test(output_only_elements_are_skipped_silently),
         cmocka_unit_test(a_folder_is_not_malformed_xml),
+        cmocka_unit_test(every_description_fits_the_readers),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -216,6 +216,23 @@ static void a_read_outside_the_dependency_pass_is_undeclared(void **state)
     hx_session_close(&s);
 }
 
+/* A request's REQSUB runs at output times, where no loop answers: its force
+ * is not made a loop input, the model opens, and its calls are refused as
+ * any unanswered query's (docs/interface.md §5.1). */
+static void a_request_routine_reading_one_is_not_a_loop_input(void **state)
+{
+    (void)state;
+    hx_session s;
+    hx_message msg;
+    const char *path = slider("request.xml", "<Post_Request id=\"8\" usrsub_param_string=\"USER(1)\""
+                                             " usrsub_fnc_name=\"REQUEST_FORCE\" usrsub_dll_name=\""
+                                             FORCE_LIBRARY "\"/>\n");
+    if (hx_session_open(&s, path, stderr, &msg) != 0)
+        fail_msg("%s", msg.text);
+    assert_int_equal(s.model->nloop_inputs, 0);
+    hx_session_close(&s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -223,6 +240,7 @@ int main(void)
         cmocka_unit_test(a_spring_force_read_by_sforce_is_the_oscillator),
         cmocka_unit_test(an_unknown_joint_or_comp_is_refused_naming_the_query),
         cmocka_unit_test(a_read_outside_the_dependency_pass_is_undeclared),
+        cmocka_unit_test(a_request_routine_reading_one_is_not_a_loop_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -245,7 +245,8 @@ static int query(const char *fnc, const int *ipar, int nsize, double *values, in
                        " VM VR WX WY WZ WM, ACCX ACCY ACCZ ACCM WDTX WDTY WDTZ WDTM, DIF DIF1 of a"
                        " Control_Diff, VARVAL of a Reference_Variable, JOINT JPRIM MOTION COUPLER GCON"
                        " SFORCE VFORCE VTORQ GFORCE FIELD BUSHING BEAM SPDP (id, jflag, comp, rm),"
-                       " FX FY FZ FM TX TY TZ TM (I[, J[, K]]); existing ids): docs/interface.md"
+                       " FX FY FZ TX TY TZ (I[, J[, K]]), FM TM (I[, J]); existing ids):"
+                       " docs/interface.md"
                        " §5.1");
         return -1;
     }

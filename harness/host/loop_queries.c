@@ -50,11 +50,15 @@ static int bind_query(hx_model *m, hx_binding *b, int k, hx_message *msg)
     const int count = force >= 0 ? 1 : hx_query_accelerations(q, measures);
     if (count == 0)
         return 0;
+    const int in_loop = b->kind == HX_BIND_FORCE || b->kind == HX_BIND_VARIABLE ||
+                        b->kind == HX_BIND_DIFF;
+    if (force >= 0 && !in_loop)
+        return 0; /* its calls refused, as before forces were answered (abi.c's answer_loop) */
     const char *routine = hx_binding_routine(b, 0);
     char asked[40], text[64], element[64];
     hx_query_text(q, asked, sizeof asked);
     /* a request's REQSUB runs at output times, outside any right-hand side */
-    if (b->kind != HX_BIND_FORCE && b->kind != HX_BIND_VARIABLE && b->kind != HX_BIND_DIFF)
+    if (!in_loop)
         return hx_fail(msg, "%s:%d: %s %d (%s) declares %s in its dependency pass, which the host"
                        " answers only to a force, variable or Control_Diff routine (within a"
                        " right-hand side's algebraic loop): docs/interface.md §5.1", m->path,

@@ -2,7 +2,7 @@
  * The accelerations and forces user routines ask (docs/interface.md §5.1): a
  * routine that declares c_sysfnc's ACCX .. WDTM or c_sysary's ACC TACC RACC,
  * or c_sysfnc's JOINT .. SPDP (id, jflag, comp, rm) or FX .. TM (I[, J[,
- * K]]), in its dependency pass reads inputs of the model's algebraic loop, as
+ * K]]; FM, TM I[, J]), in its dependency pass reads inputs of the model's algebraic loop, as
  * an expression's ACCZ or JOINT does (model/loop_inputs.h): each value gets its slot,
  * and the routine's calls are answered from the frames' loop values, which
  * the dynamics solves at each right-hand side (sim/dynamics/algebraic_loop.h).

@@ -4,7 +4,7 @@
  * (frames/measure_functions.h), DIF and DIF1, with their arguments, and the
  * answers computed from a state; and the accelerations (c_sysary's ACC TACC
  * RACC, c_sysfnc's ACCX .. WDTM) and the forces (c_sysfnc's JOINT .. SPDP of
- * (id, jflag, comp, rm) and FX .. TM of (I[, J[, K]]), as the function
+ * (id, jflag, comp, rm) and FX .. TM of (I[, J[, K]]; FM, TM of I[, J]), as the function
  * language's), whose values the algebraic loop gives (host/loop_queries.h),
  * not the state.
  */

@@ -341,16 +341,22 @@ void hx_build_field(hx_draft *d, const hx_element_read *e)
     static const char *const lengths[6] = {"length_x",  "length_y",  "length_z",
                                            "length_tx", "length_ty", "length_tz"};
     double K[6][6], C[6][6], length[6], preload[6];
-    int damped = 0;
+    int damped = 0, stiff = 0;
     for (int r = 0; r < 6; ++r)
         for (int c = 0; c < 6; ++c) {
             char name[4] = {'K', (char)('1' + r), (char)('1' + c), '\0'};
             K[r][c] = hx_attr_number(e, name, 0.0);
+            stiff |= hx_attr_present(e, name);
             name[0] = 'C';
             C[r][c] = hx_attr_number(e, name, 0.0);
             damped |= hx_attr_present(e, name);
         }
     const double ratio = hx_attr_number(e, "CRATIO", 0.0);
+    if (!stiff && hx_attr_present(e, "CRATIO")) { /* as Adams' CRATIO without KMATRIX */
+        hx_draft_fail(d, e->line, "%s %d: CRATIO without a stiffness entry (K11 .. K66):"
+                      " CRATIO scales the stiffness matrix", e->name, e->id);
+        return;
+    }
     if (damped && hx_attr_present(e, "CRATIO")) {
         hx_draft_fail(d, e->line, "%s %d: give CRATIO or the damping matrix (C11 .. C66), not"
                       " both", e->name, e->id);

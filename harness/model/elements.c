@@ -411,9 +411,22 @@ static void build_force_vector(hx_draft *d, const hx_element_read *e)
 }
 
 /* A Force_Field calling FIESUB, or, with no routine named, the linear one
- * (builtin_forces.h); a routine and linear attributes both: refused. */
+ * (builtin_forces.h); a routine and linear attributes both, or neither, and
+ * a second Force_Field of an id (of either form): refused. */
 static void build_force_field(hx_draft *d, const hx_element_read *e)
 {
+    const hx_model *m = d->m;
+    int before = 0;
+    for (int k = 0; k < m->nforces && before == 0; ++k)
+        if (m->forces[k].id == e->id && m->forces[k].interface == HX_FORCE_FIESUB)
+            before = m->forces[k].line;
+    for (int k = 0; k < m->nloads && before == 0; ++k)
+        if (m->loads[k].id == e->id && m->loads[k].builtin == HX_LOAD_FIELD)
+            before = m->loads[k].line;
+    if (before != 0) {
+        hx_draft_fail(d, e->line, "%s %d is defined twice (line %d)", e->name, e->id, before);
+        return;
+    }
     static const char *const routine[] = {"usrsub_param_string", "usrsub_dll_name",
                                           "usrsub_fnc_name", "script_name", "interpreter"};
     const char *named = NULL;
@@ -421,6 +434,12 @@ static void build_force_field(hx_draft *d, const hx_element_read *e)
         if (hx_attr_present(e, routine[k]))
             named = routine[k];
     const char *linear = hx_field_linear_attribute(e);
+    if (named == NULL && linear == NULL) {
+        hx_draft_fail(d, e->line, "%s %d: neither a routine (usrsub_param_string: FIESUB) nor a"
+                      " linear field's attributes (K11 .. K66, C11 .. C66, CRATIO, length_*,"
+                      " preload_*): it would apply nothing", e->name, e->id);
+        return;
+    }
     if (named == NULL) {
         hx_build_field(d, e);
         return;

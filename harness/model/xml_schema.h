@@ -24,7 +24,8 @@ typedef struct hx_attr_spec {
     int required;
 } hx_attr_spec;
 
-#define HX_MAX_ATTRS 96 /* a linear Force_Field's 72 matrix entries and the rest */
+#define HX_MAX_ATTRS 128 /* a linear Force_Field's 96 (72 matrix entries): test_model_reader
+                          * holds every description below it */
 
 /* An element as read: the value of each described attribute. */
 typedef struct hx_element_read {

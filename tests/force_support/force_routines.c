@@ -6,7 +6,10 @@
  */
 #include "usrsub/solver_abi.h"
 
+typedef void STDCALL request_fn(int *id, double *time, double *par, int *npar, int *iflag,
+                                double *result);
 USRSUB_EXPORT usrsub_gfosub_fn READ_FORCE;
+USRSUB_EXPORT request_fn REQUEST_FORCE;
 
 /* USER(code, a, b, c, d, gx, gz[, late]): the force (gx v, 0, gz v) on I in
  * RM's axes, v c_sysfnc's JOINT(a, b, c, d) (code 1), FZ(a, b, c) (code 2) or
@@ -31,4 +34,17 @@ void STDCALL READ_FORCE(int *id, double *time, double *par, int *npar, int *dfla
         return;
     result[0] = par[5] * v;
     result[2] = par[6] * v;
+}
+
+/* USER(joint): result[2] = c_sysfnc's JOINT(joint, 0, 4, 0), a REQSUB's
+ * read of a reaction (0 when the host refuses it). */
+void STDCALL REQUEST_FORCE(int *id, double *time, double *par, int *npar, int *iflag,
+                           double *result)
+{
+    (void)id, (void)time, (void)npar, (void)iflag;
+    const int ipar[4] = {(int)par[0], 0, 4, 0};
+    int errflg = 0;
+    for (int k = 0; k < 8; ++k)
+        result[k] = 0.0;
+    c_sysfnc("JOINT", ipar, 4, &result[2], &errflg);
 }

@@ -141,8 +141,10 @@ int hx_adm_build_field(hx_adm_reader *r, hx_adm_entry *e)
     if (hx_adm_has(e, "CRATIO"))
         hx_adm_element_number(&el, "CRATIO", hx_adm_number(e, "CRATIO", 0, 0.0));
     for (int k = 0; k < 6; ++k) {
-        hx_adm_element_number(&el, field_length[k], hx_adm_number(e, "LENGTH", k, 0.0));
-        hx_adm_element_number(&el, field_preload[k], hx_adm_number(e, "FORCE", k, 0.0));
+        if (hx_adm_has(e, "LENGTH"))
+            hx_adm_element_number(&el, field_length[k], hx_adm_number(e, "LENGTH", k, 0.0));
+        if (hx_adm_has(e, "FORCE"))
+            hx_adm_element_number(&el, field_preload[k], hx_adm_number(e, "FORCE", k, 0.0));
     }
     return hx_adm_element_build(r, e, &el, NULL);
 }

@@ -9,7 +9,7 @@
 
 #include "model/adm/reader.h"
 
-#define HX_ADM_MAX_ATTRS 96 /* as the XML reader's (a linear FIELD: 72 matrix entries) */
+#define HX_ADM_MAX_ATTRS 128 /* as the XML reader's (a linear FIELD: 72 matrix entries) */
 
 typedef struct hx_adm_element {
     const char *name;          /* the XML element, e.g. "Body_Rigid" */
