@@ -282,6 +282,30 @@ void expect_xml_errors(const char *element, const char *const (*cases)[2], size_
     }
 }
 
+void expect_sides(const evaluated *e, const char *name, int id, int jmarker, const double f[6],
+                  const double L[3], const double RJ[9], double tol)
+{
+    char text[64];
+    for (int k = 0; k < 3; ++k) {
+        snprintf(text, sizeof text, "%s(%d,0,%d,%d)", name, id, k + 2, jmarker);
+        EXPECT(e, text, f[k], tol);
+        snprintf(text, sizeof text, "%s(%d,0,%d,%d)", name, id, k + 6, jmarker);
+        EXPECT(e, text, f[3 + k], tol);
+    }
+    const double TJ[3] = {-f[3] - (L[1] * f[2] - L[2] * f[1]), -f[4] - (L[2] * f[0] - L[0] * f[2]),
+                          -f[5] - (L[0] * f[1] - L[1] * f[0])};
+    for (int k = 0; k < 3; ++k) {
+        snprintf(text, sizeof text, "%s(%d,1,%d,%d)", name, id, k + 2, jmarker);
+        EXPECT(e, text, -f[k], tol);
+        snprintf(text, sizeof text, "%s(%d,1,%d,%d)", name, id, k + 6, jmarker);
+        EXPECT(e, text, TJ[k], tol);
+    }
+    for (int k = 0; k < 3; ++k) { /* in the world's axes */
+        snprintf(text, sizeof text, "%s(%d,0,%d,0)", name, id, k + 2);
+        EXPECT(e, text, RJ[3 * k] * f[0] + RJ[3 * k + 1] * f[1] + RJ[3 * k + 2] * f[2], tol);
+    }
+}
+
 /* a in the axes R's columns are (R^T a). */
 static void in_axes(const double R[9], const double a[3], double out[3])
 {

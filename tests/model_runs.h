@@ -107,6 +107,13 @@ void expect_xml_errors(const char *element, const char *const (*cases)[2], size_
             fail_msg("%s = %.15g, expected %.15g", text, got_, (double)(want));                 \
     } while (0)
 
+/* A two-marker element's force f (force, torque) on I in J's axes, read by
+ * its function `name` (BEAM, FIELD, ...) of element id: on I in J's (jmarker)
+ * axes, on J at J (-F and -T - L x F, L I's place from J in J's axes), and on
+ * I in the world's axes (RJ J's axes, columns, in the world's); within tol. */
+void expect_sides(const evaluated *e, const char *name, int id, int jmarker, const double f[6],
+                  const double L[3], const double RJ[9], double tol);
+
 /* At e's state, marker i's place from marker j (L), its velocity seen by j
  * and its angular velocity from j (v), in j's axes, worked from the two
  * frames rather than from the measures: L = R^T dp, v = (R^T (v_I - v_J - w_J
