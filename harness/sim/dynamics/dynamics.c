@@ -53,9 +53,10 @@ static int init_parts(hx_dynamics *d, hx_session *s, hx_message *msg)
     d->force_binding = calloc((size_t)nf + 1, sizeof *d->force_binding);
     d->world_aligned = calloc((size_t)nf + 1, 1);
     d->load_off = calloc((size_t)m->nloads + 1, 1);
+    d->force_off = calloc((size_t)nf + 1, 1);
     d->gravity = malloc(3 * sizeof(double));
     if (!d->dof || !d->coupler_binding || !d->force_binding || !d->world_aligned ||
-        !d->load_off || !d->gravity)
+        !d->load_off || !d->force_off || !d->gravity)
         return hx_fail(msg, "out of memory");
     memcpy(d->gravity, m->gravity, 3 * sizeof(double));
     if (hx_bodies_init(d, msg) != 0 || hx_constraints_init(d, msg) != 0 ||
@@ -111,6 +112,7 @@ void hx_dynamics_free(hx_dynamics *d)
     free(d->force_binding);
     free(d->world_aligned);
     free(d->load_off);
+    free(d->force_off);
     free(d->gravity);
     free(d->turn_joint);
     free(d->turn_coupler);

@@ -128,8 +128,11 @@ typedef struct hx_dynamics {
     struct hx_stateeqns *stateeqns; /* the Force_StateEqn elements (stateeqns.h) */
     unsigned char *load_off;      /* per load: switched off (a command file's DEACTIVATE,
                                    * docs/interface.md §9.9): it puts nothing on the bodies
-                                   * nor in the Jacobian. The one thing a run changes, and
-                                   * only between its segments, when nothing evaluates */
+                                   * nor in the Jacobian. With force_off and gravity what a
+                                   * run changes, only between its segments, when nothing
+                                   * evaluates */
+    unsigned char *force_off;     /* per force element: the same for the user force
+                                   * elements (their routines not called) */
     double *gravity;              /* 3: the gravity the loads and the energy use, the model's
                                    * or a command file's ACCGRAV (§9.9), changed like
                                    * load_off, between segments only */

@@ -1,8 +1,10 @@
 /* The user force elements in the equations of motion (dynamics.h): each is
  * called with the dynamics' state bound, its
  * result turned into world axes and applied at I, its reaction on J's body at
- * the same point. */
+ * the same point; one switched off (d->force_off) is not called and gives
+ * nothing. */
 #include <math.h>
+#include <string.h>
 
 #include "host/invoke.h"
 #include "base/vecmath.h"
@@ -70,6 +72,14 @@ int hx_element_forces_apply(const hx_dynamics *d, hx_dynamics_data *dd, int part
         hx_binding *b = d->force_binding[k];
         const hx_frame *I = &fr->markers[f->i_marker], *J = &fr->markers[f->j_marker];
         double *out = dd->element_outputs + 6 * k;
+        double *F = dd->element_load + 6 * k, *T = F + 3;
+        if (d->force_off[k]) { /* switched off: not called, nothing on the bodies */
+            for (int j = 0; j < 6; ++j)
+                out[j] = F[j] = 0.0;
+            if (partials && f->interface == HX_FORCE_FIESUB)
+                memset(dd->element_partials + 72 * k, 0, 72 * sizeof(double));
+            continue;
+        }
         const int axes_marker = hx_force_output_axes(f);
         const double *axes = axes_marker >= 0 ? fr->markers[axes_marker].R : hx_world_frame.R;
         if (f->interface == HX_FORCE_GFOSUB) {
@@ -81,7 +91,6 @@ int hx_element_forces_apply(const hx_dynamics *d, hx_dynamics_data *dd, int part
         }
         if (hx_dynamics_check_call(d, dd, b, out, 6, "force", fr->time) != 0)
             return -1;
-        double *F = dd->element_load + 6 * k, *T = F + 3;
         if (d->world_aligned[k]) {
             v3_copy(F, out);
             v3_copy(T, out + 3);

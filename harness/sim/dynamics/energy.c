@@ -27,7 +27,8 @@ hx_energy hx_energy_of(const hx_dynamics *d, hx_dynamics_data *dd, double t, con
     double elastic = 0.0;
     hx_frames_copy(&dd->moved, &dd->frames);
     for (int k = 0; k < m->nforces; ++k)
-        elastic += hx_element_potential(d->s, &dd->moved, &dd->frames, k, t);
+        if (!d->force_off[k]) /* one switched off stores nothing */
+            elastic += hx_element_potential(d->s, &dd->moved, &dd->frames, k, t);
     hx_energy e;
     e.kinetic = kinetic / d->ucf;
     e.elastic = elastic;

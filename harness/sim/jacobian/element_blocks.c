@@ -440,7 +440,7 @@ int hx_element_blocks(hx_jacobian *jac, double t, const double *y)
 {
     (void)t;
     for (int k = 0; k < jac->nf; ++k)
-        if (element_block(jac, k, y) != 0)
-            return -1;
+        if (!jac->d->force_off[k] && element_block(jac, k, y) != 0)
+            return -1; /* one switched off puts nothing on the bodies, nothing here */
     return 0;
 }

@@ -54,20 +54,40 @@ static int switched_element(const char *element, int *scalar, enum hx_load_built
     return -1;
 }
 
-/* ACTIVATE or DEACTIVATE c on the flags of the loads (docs/interface.md
- * §9.9): SFORCE and SPRINGDAMPER name a scalar load, VFORCE, VTORQUE, GFORCE,
- * BUSHING, BEAM and a linear FIELD a vector one, by id; 0, or -1 with the
- * reason. */
-static int switch_loads(const hx_command *c, const char *path, const hx_model *m,
-                        unsigned char *off, hx_message *msg)
+/* Whether statement (SFORCE, ...) names the user force element f, as the
+ * dataset's statements are read (docs/interface.md §9.5): an SFORCE a
+ * Force_Scalar_TwoBody's routine, a GFORCE, VFORCE or VTORQUE a
+ * Force_Vector's of type ForceAndTorque, ForceOnly or TorqueOnly, a FIELD a
+ * FIESUB. */
+static int names_force(const hx_force *f, const char *statement)
+{
+    if (f->interface == HX_FORCE_FIESUB)
+        return strcmp(statement, "FIELD") == 0;
+    switch (f->part) {
+    case HX_OUTPUT_FORCE_AND_TORQUE: return strcmp(statement, "GFORCE") == 0;
+    case HX_OUTPUT_FORCE: return strcmp(statement, "VFORCE") == 0;
+    case HX_OUTPUT_TORQUE: return strcmp(statement, "VTORQUE") == 0;
+    case HX_OUTPUT_SCALAR_FORCE:
+    case HX_OUTPUT_SCALAR_TORQUE: return strcmp(statement, "SFORCE") == 0;
+    }
+    return 0;
+}
+
+/* ACTIVATE or DEACTIVATE c on the flags of the loads, then of the force
+ * elements (docs/interface.md §9.9): SFORCE and SPRINGDAMPER name a scalar
+ * load, VFORCE, VTORQUE, GFORCE, BUSHING, BEAM and a linear FIELD a vector
+ * one, and each of SFORCE, VFORCE, VTORQUE, GFORCE and FIELD the user force
+ * elements of its kind (names_force), by id; 0, or -1 with the reason. */
+static int switch_elements(const hx_command *c, const char *path, const hx_model *m,
+                           unsigned char *off, hx_message *msg)
 {
     const char *what = c->kind == HX_COMMAND_ACTIVATE ? "ACTIVATE" : "DEACTIVATE";
     int scalar;
     enum hx_load_builtin builtin;
     if (switched_element(c->element, &scalar, &builtin) != 0)
-        return hx_fail(msg, "%s:%d: %s/%s: the harness switches SFORCE, VFORCE, VTORQUE and"
-                       " GFORCE given by FUNCTION expressions, SPRINGDAMPER, BUSHING, BEAM and"
-                       " linear FIELDs, not other elements yet", path, c->line, what, c->element);
+        return hx_fail(msg, "%s:%d: %s/%s: the harness switches SFORCE, VFORCE, VTORQUE,"
+                       " GFORCE, SPRINGDAMPER, BUSHING, BEAM and FIELD, not other elements yet",
+                       path, c->line, what, c->element);
     for (int i = 0; i < c->nids; ++i) {
         int found = 0;
         for (int k = 0; k < m->nloads; ++k)
@@ -76,15 +96,14 @@ static int switch_loads(const hx_command *c, const char *path, const hx_model *m
                 off[k] = c->kind == HX_COMMAND_DEACTIVATE;
                 found = 1;
             }
+        for (int k = 0; k < m->nforces; ++k)
+            if (m->forces[k].id == c->ids[i] && names_force(&m->forces[k], c->element)) {
+                off[m->nloads + k] = c->kind == HX_COMMAND_DEACTIVATE;
+                found = 1;
+            }
         if (!found)
-            return hx_fail(msg, "%s:%d: %s/%s: the model has no %s/%d%s", path, c->line, what,
-                           c->element, c->element, c->ids[i],
-                           builtin == HX_LOAD_FIELD ? " that is linear (one calling FIESUB is"
-                                                      " not switched yet)"
-                           : builtin != HX_LOAD_AS_WRITTEN ? ""
-                                                           : " given by FUNCTION expressions (one"
-                                                             " given by a user routine is not"
-                                                             " switched yet)");
+            return hx_fail(msg, "%s:%d: %s/%s: the model has no %s/%d", path, c->line, what,
+                           c->element, c->element, c->ids[i]);
     }
     return 0;
 }
@@ -93,11 +112,11 @@ static int switch_loads(const hx_command *c, const char *path, const hx_model *m
  * switched off and the gravity so far (a SIMULATE/STATIC that no SIMULATE/DYNAMIC
  * follows before a switch or the end). */
 static void equilibrium_alone(hx_command_schedule *out, double t, double rtol, double atol,
-                              const unsigned char *off, size_t nloads, const double gravity[3],
+                              const unsigned char *off, size_t nflags, const double gravity[3],
                               const hx_variable_definitions *variables)
 {
-    unsigned char *flags = out->loads_off + (size_t)out->nsegments * nloads;
-    memcpy(flags, off, nloads);
+    unsigned char *flags = out->switched_off + (size_t)out->nsegments * nflags;
+    memcpy(flags, off, nflags);
     double *g = out->gravity + 3 * (size_t)out->nsegments;
     memcpy(g, gravity, 3 * sizeof(double));
     out->segments[out->nsegments++] = (hx_segment){t, 0.0, rtol, atol, flags, g, 1, variables};
@@ -215,11 +234,11 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
 {
     memset(out, 0, sizeof *out);
     check_names(f, path, model_path, notes);
-    const size_t nloads = (size_t)m->nloads;
-    unsigned char *off = calloc(nloads + 1, 1); /* the loads switched off so far */
+    const size_t nflags = (size_t)m->nloads + (size_t)m->nforces; /* loads, then force elements */
+    unsigned char *off = calloc(nflags + 1, 1); /* those switched off so far */
     if (off == NULL || (f->ncommands > 0 &&
                         ((out->segments = calloc((size_t)f->ncommands, sizeof(hx_segment))) == NULL ||
-                         (out->loads_off = calloc((size_t)f->ncommands * nloads + 1, 1)) == NULL ||
+                         (out->switched_off = calloc((size_t)f->ncommands * nflags + 1, 1)) == NULL ||
                          (out->gravity = calloc(3 * (size_t)f->ncommands, sizeof(double))) ==
                              NULL ||
                          (out->variables = calloc((size_t)f->ncommands, sizeof *out->variables)) ==
@@ -253,7 +272,7 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
         if (statics && (c->kind == HX_COMMAND_ACTIVATE || c->kind == HX_COMMAND_DEACTIVATE ||
                         c->kind == HX_COMMAND_ACCGRAV || c->kind == HX_COMMAND_VARIABLE)) {
             /* the equilibrium is the one under the switches before this command */
-            equilibrium_alone(out, t, rtol, atol, off, nloads, gravity, variables);
+            equilibrium_alone(out, t, rtol, atol, off, nflags, gravity, variables);
             statics = 0;
         }
         if (c->kind == HX_COMMAND_VARIABLE) {
@@ -265,7 +284,7 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
             continue;
         }
         if (c->kind == HX_COMMAND_ACTIVATE || c->kind == HX_COMMAND_DEACTIVATE) {
-            if (switch_loads(c, path, m, off, msg) != 0) {
+            if (switch_elements(c, path, m, off, msg) != 0) {
                 free(off);
                 hx_command_schedule_free(out);
                 return -1;
@@ -301,8 +320,8 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
             fprintf(notes, "%s:%d: warning: SIMULATE/DYNAMIC: DTOUT=%g does not divide the"
                     " segment from %g to %g: its last output is before its end\n", path,
                     c->line, dt, t, end);
-        unsigned char *flags = out->loads_off + (size_t)out->nsegments * nloads;
-        memcpy(flags, off, nloads);
+        unsigned char *flags = out->switched_off + (size_t)out->nsegments * nflags;
+        memcpy(flags, off, nflags);
         double *g = out->gravity + 3 * (size_t)out->nsegments;
         memcpy(g, gravity, sizeof gravity);
         out->segments[out->nsegments++] =
@@ -311,7 +330,7 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
         t = end;
     }
     if (statics) /* a SIMULATE/STATIC last: the equilibrium alone */
-        equilibrium_alone(out, t, rtol, atol, off, nloads, gravity, variables);
+        equilibrium_alone(out, t, rtol, atol, off, nflags, gravity, variables);
     free(off);
     if (out->nsegments == 0) {
         hx_command_schedule_free(out);
@@ -324,7 +343,7 @@ int hx_command_schedule_make(const hx_command_file *f, const char *path, const h
 void hx_command_schedule_free(hx_command_schedule *s)
 {
     free(s->segments);
-    free(s->loads_off);
+    free(s->switched_off);
     free(s->gravity);
     for (int k = 0; k < s->nvariables; ++k)
         hx_variable_definitions_free(&s->variables[k]);

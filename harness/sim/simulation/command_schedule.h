@@ -4,8 +4,10 @@
  * DURATION after the time reached; STEPS or DTOUT their output times), its
  * INTEGRATOR's ERROR as the tolerances of the segments after it, and the
  * command line's --end, --output-interval, --rtol and --atol over the file's;
- * ACTIVATE and DEACTIVATE of the loads given by expressions (SFORCE, VFORCE,
- * VTORQUE, GFORCE) and ACCGRAV's gravity, for the segments after them;
+ * ACTIVATE and DEACTIVATE of the force elements (SFORCE, VFORCE, VTORQUE,
+ * GFORCE, SPRINGDAMPER, BUSHING, BEAM, FIELD: the loads by expressions or
+ * built in, and those calling user routines) and ACCGRAV's gravity, for the
+ * segments after them;
  * SIMULATE/STATIC as the next segment's start from the static equilibrium
  * (or a segment of no length, the equilibrium alone, when a switch or the
  * end comes first); VARIABLE/id, FUNCTION= as the variables' definitions of
@@ -33,7 +35,7 @@ typedef struct hx_command_schedule {
     hx_segment *segments;
     int nsegments;
     double t_end; /* the last segment's end */
-    unsigned char *loads_off; /* the segments' flags, nloads a segment */
+    unsigned char *switched_off; /* the segments' flags, nloads + nforces a segment */
     double *gravity;          /* the segments' gravity, 3 a segment (ACCGRAV) */
     hx_variable_definitions *variables; /* one set a VARIABLE command: the definitions
                                          * in force after it (segments point here) */

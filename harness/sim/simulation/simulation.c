@@ -143,13 +143,16 @@ static void add_stats(hx_integrator_stats *run, const hx_integrator_stats *segme
     }
 }
 
-/* The loads a segment switches off, its gravity and its variables'
- * definitions (docs/interface.md §9.9). */
+/* The loads and force elements a segment switches off, its gravity and its
+ * variables' definitions (docs/interface.md §9.9). */
 static void switch_segment(const run_context *rc, const hx_segment *g)
 {
     const hx_dynamics *d = rc->d;
-    for (int j = 0; j < d->m->nloads; ++j)
-        d->load_off[j] = g->loads_off != NULL ? g->loads_off[j] : 0;
+    const int nloads = d->m->nloads;
+    for (int j = 0; j < nloads; ++j)
+        d->load_off[j] = g->switched_off != NULL ? g->switched_off[j] : 0;
+    for (int j = 0; j < d->m->nforces; ++j)
+        d->force_off[j] = g->switched_off != NULL ? g->switched_off[nloads + j] : 0;
     memcpy(d->gravity, g->gravity != NULL ? g->gravity : d->m->gravity, 3 * sizeof(double));
     if (rc->own != NULL)
         hx_variable_definitions_apply(g->variables != NULL ? g->variables : rc->own, d->m);
@@ -260,11 +263,10 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
     for (int k = 0; k < nsegments; ++k) {
         /* each segment from the state the one before it ended in (docs/interface.md
          * §9.9): the integrator restarts there; its first output is after t */
-        const double *g = segments[k].gravity != NULL ? segments[k].gravity : d->m->gravity;
-        const int regravity = k > 0 && memcmp(g, d->gravity, 3 * sizeof(double)) != 0;
-        const hx_energy before = regravity ? hx_energy_of(d, dd, t, y) : result->energy0;
+        const hx_energy before = k > 0 ? hx_energy_of(d, dd, t, y) : result->energy0;
         switch_segment(rc, &segments[k]);
-        if (regravity) { /* an ACCGRAV: the potential's new zero, not work done */
+        if (k > 0) { /* an ACCGRAV moves the potential's zero, a switched force element takes
+                      * its stored energy along: neither is work done */
             const hx_energy after = hx_energy_of(d, dd, t, y);
             result->energy0.total += after.total - before.total;
             result->energy0.balance += after.balance - before.balance;
@@ -391,9 +393,10 @@ int hx_simulate_segments(hx_dynamics *d, const hx_simulation_options *opt,
                           redefines ? &own : NULL};
         status = simulate(&rc, segments, nsegments, y, y_end);
     }
-    /* every load on again, the model's gravity, variables and redundant rows, as the
+    /* every load and force element on again, the model's gravity, variables and redundant rows, as the
      * set-up has them, however the run ended: the next run on d starts from the model */
     memset(d->load_off, 0, (size_t)d->m->nloads);
+    memset(d->force_off, 0, (size_t)d->m->nforces);
     if (result->redundancy_changes > 0 && hx_redundancy_use(d, removed, nremoved, &msg) != 0)
         status = -1; /* out of memory: the run's message stands */
     free(removed);

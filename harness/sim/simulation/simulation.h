@@ -69,15 +69,15 @@ int hx_simulate(hx_dynamics *d, const hx_simulation_options *opt, double *y_end,
 
 /* One segment of a run (a command file's SIMULATE/DYNAMIC, docs/interface.md
  * §9.9): its end time (absolute), the time between its CSV rows (0: every
- * step), its tolerances, the loads switched off during it (one flag per
- * load of the model; NULL: none), its gravity (3; NULL: the model's),
+ * step), its tolerances, the elements switched off during it (a flag per
+ * load of the model, then per force element; NULL: none), its gravity (3; NULL: the model's),
  * whether it starts with the static equilibrium (a SIMULATE/STATIC before it; a
  * segment that ends where it starts is that equilibrium alone), and its
  * variables' definitions (a VARIABLE/id, FUNCTION= before it; NULL: the
  * model's own). */
 typedef struct hx_segment {
     double t_end, output_interval, rtol, atol;
-    const unsigned char *loads_off;
+    const unsigned char *switched_off;
     const double *gravity;
     int equilibrium;
     const hx_variable_definitions *variables;

@@ -1,0 +1,235 @@
+/*
+ * A command file's DEACTIVATE and ACTIVATE of force elements given by user
+ * routines (docs/interface.md §9.9): an SFOSUB SFORCE, a FIESUB FIELD and a
+ * GFOSUB GFORCE holding a part. Switched off, none is called into the
+ * right-hand side or BDF's Jacobian and the part falls freely (worked by
+ * hand); activated again, each pulls it as the spring it is (the closed form
+ * of a spring-mass under gravity), its force in the CSV, the energy it then
+ * stores not counted as dissipated.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cmd/commands.h"
+#include "model_runs.h"
+#include "sim_support.h"
+#include "test_support.h"
+
+/* A 2 kg part at (1, 0, 0), at rest, under 9.81 along -y, held to the
+ * ground's origin by three linear springs of k = 50 N/m and no free length,
+ * each calling a user routine: LINE_SPRING (tests/user_libraries/tp_scalar.c,
+ * -k DM along the line: -k r on I), SCALED_SPRING_FIELD and SCALED_SPRING
+ * (tests/implicit_support/scaled_field.c: -k (DX, DY, DZ) of I in J, and
+ * -kr the angles). */
+static const char *dataset(void)
+{
+    /* a dataset's ROUTINE names a library found in MS_USERDLL_DIR, where the
+     * build puts both */
+    setenv("MS_USERDLL_DIR", TP_LIBRARY_DIR, 1);
+    const char *slash = strrchr(SCALED_FIELD_LIBRARY, '/');
+    const char *scaled = slash != NULL ? slash + 1 : SCALED_FIELD_LIBRARY;
+    static char text[2048];
+    snprintf(text, sizeof text,
+             "switched: three user force elements holding a part\n"
+             "ACCGRAV/JGRAV = -9.81\n"
+             "PART/1, GROUND\nMARKER/10, PART = 1\n"
+             "PART/2, MASS = 2, CM = 20, IP = 1, 1, 1\nMARKER/20, PART = 2, QP = 1, 0, 0\n"
+             "SFORCE/1, TRANSLATION, I = 20, J = 10, FUNCTION = USER(20, 10, 50, 0)\n"
+             ", ROUTINE = libtp_scalar.so::LINE_SPRING\n"
+             "FIELD/2, I = 20, J = 10, FUNCTION = USER(50, 0, 5, 0, 1)\n"
+             ", ROUTINE = %s::SCALED_SPRING_FIELD\n"
+             "GFORCE/3, I = 20, JFLOAT = 10, RM = 10, FUNCTION = USER(20, 10, 50, 0, 5, 0, 1)\n"
+             ", ROUTINE = %s::SCALED_SPRING\n"
+             "END\n",
+             scaled, scaled);
+    return test_write_file("switched.adm", text);
+}
+
+/* ---- in the equations ---------------------------------------------------------------------- */
+
+/* Each element switched off alone, then all three: the right-hand side's
+ * accelerations are gravity's and the others' (-25 x m/s^2 an element on, at
+ * x = 1), and the Jacobian agrees with differences of the switched
+ * right-hand side (a Jacobian that kept an element would carry its k / m =
+ * 25 where the differences have 0). */
+static void switched_off_elements_are_in_neither(void **state)
+{
+    (void)state;
+    model m;
+    open_model(&m, dataset());
+    assert_int_equal(m.session.model->nforces, 3);
+    assert_int_equal(m.session.model->nloads, 0);
+    double *y = model_state(&m), *fy = model_state(&m);
+    model_initial_state(&m, y);
+    const hx_body_dof *part = &m.d.dof[1];
+    assert_int_equal(part->kind, HX_DOF_FREE);
+    for (int off = 0; off <= 4; ++off) { /* 0: none, 1..3 that one, 4: all three */
+        int on = 0;
+        for (int k = 0; k < 3; ++k) {
+            m.d.force_off[k] = off == 4 || off == k + 1;
+            on += !m.d.force_off[k];
+        }
+        if (hx_dynamics_rhs(&m.d, &m.data, 0.0, y, fy) != 0)
+            fail_msg("%s", m.data.message);
+        const double *a = fy + m.d.nq + part->u;
+        assert_close(a[0], -25.0 * on, 0.0, 1e-12);
+        assert_close(a[1], -9.81, 0.0, 1e-12);
+        for (int j = 2; j < 6; ++j)
+            assert_close(a[j], 0.0, 0.0, 1e-12);
+        for (int k = 0; k < 3; ++k)
+            if (m.d.force_off[k])
+                for (int j = 0; j < 6; ++j) /* what the CSV and FIELD() read */
+                    assert_true(m.data.element_load[6 * k + j] == 0.0);
+        char what[64];
+        snprintf(what, sizeof what, "user elements, case %d", off);
+        y[m.d.nq + part->u + 1] = -0.7; /* moving: the velocity columns act too */
+        long outside = 0;
+        const double worst = jacobian_against_differences(&m.d, 0.0, y, what, &outside);
+        assert_int_equal(outside, 0);
+        assert_true(worst < 1e-6);
+        y[m.d.nq + part->u + 1] = 0.0;
+    }
+    free(y), free(fy);
+    close_model(&m);
+}
+
+/* ---- in a run ------------------------------------------------------------------------------ */
+
+static void run(const char *const *args, test_captured *c)
+{
+    const char *argv[32] = {"run"};
+    for (int i = 0; args[i] != NULL && i < 30; ++i)
+        argv[i + 1] = args[i];
+    test_capture(hx_command_run, argv, c);
+}
+
+/* The column of the CSV header (its first line) named name. */
+static int column_of(const char *header, const char *name)
+{
+    const size_t n = strlen(name);
+    int column = 0;
+    for (const char *p = header; *p != '\0' && *p != '\n'; ++column) {
+        if (strncmp(p, name, n) == 0 && (p[n] == ',' || p[n] == '\n'))
+            return column;
+        p = strchr(p, ',');
+        if (p == NULL)
+            break;
+        ++p;
+    }
+    fail_msg("no column %s", name);
+    return -1;
+}
+
+/* Row r's value in column `column` of the CSV lines. */
+static double value_at(char lines[][4096], int r, int column)
+{
+    const char *p = lines[r];
+    for (int k = 0; k < column; ++k) {
+        p = strchr(p, ',');
+        assert_non_null(p);
+        ++p;
+    }
+    return strtod(p, NULL);
+}
+
+/* All three deactivated to 0.3 s: the part falls freely, x = 1, y = -g t^2 / 2
+ * (DOPRI5 exact on the quadratic; every element would pull it at once, 50 N
+ * along -x). Then `element` alone activated: from y0 = -0.44145, vy0 =
+ * -2.943 at t0 = 0.3 a spring-mass of w = sqrt(50 / 2) = 5 1/s,
+ * x = cos(w s), y = -g / w^2 + (y0 + g / w^2) cos(w s) + vy0 / w sin(w s),
+ * s = t - t0; its force on the part in the CSV -k (x, y) from then, 0
+ * before; the others' 0 throughout; no energy dissipated (no damping). With
+ * DOPRI5 and with BDF (its Jacobian from each element's partials). */
+static void activated_again_each_pulls_as_a_spring(void **state)
+{
+    (void)state;
+    const char *model_path = dataset();
+    static const char *const statements[3] = {"SFORCE", "FIELD", "GFORCE"};
+    static const char *const integrators[2] = {"dopri5", "bdf"}; /* bdf: with its Jacobian */
+    const double g = 9.81, w = 5.0, y0 = -0.5 * g * 0.09, vy0 = -g * 0.3;
+    for (int trial = 0; trial < 6; ++trial) {
+        const int e = trial % 3;
+        const double tol = trial < 3 ? 1e-8 : 1e-6;
+        char acf_text[512];
+        snprintf(acf_text, sizeof acf_text,
+                 "switched\n\nDEACTIVATE/SFORCE, ID=1\nDEACTIVATE/FIELD, ID=2\n"
+                 "DEACTIVATE/GFORCE, ID=3\nSIMULATE/DYNAMIC, END=0.3, STEPS=3\n"
+                 "ACTIVATE/%s, ID=%d\nSIMULATE/DYNAMIC, END=0.6, STEPS=3\n", statements[e],
+                 e + 1);
+        const char *acf = test_write_file("switched.acf", acf_text);
+        test_captured c;
+        run((const char *const[]){model_path, "--acf", acf, "--integrator", integrators[trial / 3],
+                                  "--rtol", "1e-11", "--atol", "1e-12", "--quiet", "--out",
+                                  test_temp_path("switched.csv"), NULL},
+            &c);
+        if (c.status != 0)
+            fail_msg("%s", c.err);
+        FILE *f = fopen(test_temp_path("switched.csv"), "r");
+        assert_non_null(f);
+        static char lines[8][4096];
+        int n = 0;
+        while (n < 8 && fgets(lines[n], sizeof lines[0], f) != NULL)
+            ++n;
+        fclose(f);
+        assert_int_equal(n, 8); /* the header and t = 0, 0.1, .., 0.6 */
+        const int tc = column_of(lines[0], "t"), xc = column_of(lines[0], "body2.x");
+        const int yc = column_of(lines[0], "body2.y"), dc = column_of(lines[0], "dissipated");
+        for (int r = 1; r < 8; ++r) {
+            const double t = value_at(lines, r, tc), s = t - 0.3;
+            assert_close(t, 0.1 * (r - 1), 0.0, 1e-12);
+            double x = 1.0, y = -0.5 * g * t * t;
+            if (s > 1e-9) {
+                x = cos(w * s);
+                y = -g / (w * w) + (y0 + g / (w * w)) * cos(w * s) + vy0 / w * sin(w * s);
+            }
+            assert_close(value_at(lines, r, xc), x, 0.0, tol);
+            assert_close(value_at(lines, r, yc), y, 0.0, tol);
+            assert_close(value_at(lines, r, dc), 0.0, 0.0, tol);
+            for (int k = 0; k < 3; ++k) {
+                char name[32];
+                const int active = k == e && s > 1e-9;
+                snprintf(name, sizeof name, "force%d.fx", k + 1);
+                assert_close(value_at(lines, r, column_of(lines[0], name)),
+                             active ? -50.0 * x : 0.0, 0.0, 100 * tol);
+                snprintf(name, sizeof name, "force%d.fy", k + 1);
+                assert_close(value_at(lines, r, column_of(lines[0], name)),
+                             active ? -50.0 * y : 0.0, 0.0, 100 * tol);
+            }
+        }
+    }
+}
+
+/* An id the model lacks among the statement's elements is refused by name
+ * and line: FIELD/1 is an SFORCE's id, SFORCE/2 a FIELD's. */
+static void ids_the_model_lacks_are_refused(void **state)
+{
+    (void)state;
+    const char *model_path = dataset();
+    static const char *const cases[3][2] = {
+        {"DEACTIVATE/FIELD, ID=1", "DEACTIVATE/FIELD: the model has no FIELD/1"},
+        {"ACTIVATE/SFORCE, ID=1,2", "ACTIVATE/SFORCE: the model has no SFORCE/2"},
+        {"DEACTIVATE/VFORCE, ID=3", "DEACTIVATE/VFORCE: the model has no VFORCE/3"},
+    };
+    for (int k = 0; k < 3; ++k) {
+        char text[256];
+        snprintf(text, sizeof text, "switched\n\n%s\nSIMULATE/DYNAMIC, END=0.1, STEPS=1\n",
+                 cases[k][0]);
+        const char *acf = test_write_file("refused.acf", text);
+        test_captured c;
+        run((const char *const[]){model_path, "--acf", acf, "--quiet", NULL}, &c);
+        assert_int_equal(c.status, 1);
+        assert_contains(c.err, "refused.acf:3: ", cases[k][1]);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(switched_off_elements_are_in_neither),
+        cmocka_unit_test(activated_again_each_pulls_as_a_spring),
+        cmocka_unit_test(ids_the_model_lacks_are_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
