@@ -377,7 +377,8 @@ static void velocity_motion_between_moving_bodies(void **state)
             size_t size = 0;
             FILE *f = open_memstream(&text, &size);
             s.data.frames.time = s.path.t[last];
-            assert_int_equal(hx_routines_csv_row(f, &s.dynamics, &s.data, y), 0);
+            const hx_expr_outputs none = {0}; /* no REQSUB asks for any */
+            assert_int_equal(hx_routines_csv_row(f, &s.dynamics, &s.data, y, &none), 0);
             fclose(f);
             assert_close(strtod(text + 1, NULL), pass, 0, 1e-9);
             free(text);

@@ -9,7 +9,7 @@
  * model by expression; the same through FZ at the joint's marker; a spring's
  * force read by SFORCE against the oscillator's closed form; and the bad
  * paths: an unknown joint, a comp out of range, a read outside the
- * dependency pass.
+ * dependency pass; a request's routine answered at its output times.
  */
 #include <math.h>
 #include <stdio.h>
@@ -18,6 +18,7 @@
 
 #include "model/loop_inputs.h"
 #include "model_runs.h"
+#include "sim_support.h"
 #include "test_support.h"
 
 #define G 9.81
@@ -216,21 +217,48 @@ static void a_read_outside_the_dependency_pass_is_undeclared(void **state)
     hx_session_close(&s);
 }
 
-/* A request's REQSUB runs at output times, where no loop answers: its force
- * is not made a loop input, the model opens, and its calls are refused as
- * any unanswered query's (docs/interface.md §5.1). */
-static void a_request_routine_reading_one_is_not_a_loop_input(void **state)
+/* A request's REQSUB runs at output times, once the forces are known: its
+ * JOINT(1, 0, 4, 0) is an output query, not a loop input (the model alone
+ * has no loop), answered at every output time from that time's reaction
+ * (docs/interface.md §5.1): the slider's normal force m g = 19.62 N, and
+ * with the brake's push 2 m g = 39.24 N, the loop's answer (request8.3; its
+ * other values 0). */
+static void a_request_routine_reads_the_output_times_force(void **state)
 {
     (void)state;
-    hx_session s;
-    hx_message msg;
-    const char *path = slider("request.xml", "<Post_Request id=\"8\" usrsub_param_string=\"USER(1)\""
-                                             " usrsub_fnc_name=\"REQUEST_FORCE\" usrsub_dll_name=\""
-                                             FORCE_LIBRARY "\"/>\n");
-    if (hx_session_open(&s, path, stderr, &msg) != 0)
-        fail_msg("%s", msg.text);
-    assert_int_equal(s.model->nloop_inputs, 0);
-    hx_session_close(&s);
+    const char *request = "<Post_Request id=\"8\" usrsub_param_string=\"USER(1)\""
+                          " usrsub_fnc_name=\"REQUEST_FORCE\" usrsub_dll_name=\""
+                          FORCE_LIBRARY "\"/>\n";
+    char braked[2048];
+    snprintf(braked, sizeof braked, "%s%s", request, READER("USER(1, 1, 0, 4, 10, -0.2, -0.5)"));
+    const char *const models[2] = {request, braked};
+    const double normal[2] = {2 * G, NORMAL};
+    for (int k = 0; k < 2; ++k) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s", slider("request.xml", models[k]));
+        model m;
+        open_model(&m, path);
+        assert_int_equal(m.session.model->nloop_inputs, k); /* the brake's JOINT alone */
+        assert_int_equal(m.session.model->noutput_queries, 1);
+        close_model(&m);
+        const char *csv = test_temp_path("request.csv");
+        assert_int_equal(sim_run_csv(path, csv,
+                                     (const char *const[]){"--end", "0.5", "--output-interval",
+                                                           "0.1", "--quiet", NULL}),
+                         0);
+        csv_table tb;
+        csv_read(csv, &tb);
+        assert_int_equal(tb.rows, 6);
+        for (int j = 1; j <= 8; ++j) {
+            char name[32];
+            snprintf(name, sizeof name, "request8.%d", j);
+            const int c = csv_column(csv, name);
+            assert_true(c >= 0);
+            for (int r = 0; r < tb.rows; ++r)
+                assert_close(csv_at(&tb, r, c), j == 3 ? normal[k] : 0.0, 0, 1e-8);
+        }
+        csv_free(&tb);
+    }
 }
 
 int main(void)
@@ -240,7 +268,7 @@ int main(void)
         cmocka_unit_test(a_spring_force_read_by_sforce_is_the_oscillator),
         cmocka_unit_test(an_unknown_joint_or_comp_is_refused_naming_the_query),
         cmocka_unit_test(a_read_outside_the_dependency_pass_is_undeclared),
-        cmocka_unit_test(a_request_routine_reading_one_is_not_a_loop_input),
+        cmocka_unit_test(a_request_routine_reads_the_output_times_force),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

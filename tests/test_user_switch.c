@@ -97,43 +97,6 @@ static void switched_off_elements_are_in_neither(void **state)
 
 /* ---- in a run ------------------------------------------------------------------------------ */
 
-static void run(const char *const *args, test_captured *c)
-{
-    const char *argv[32] = {"run"};
-    for (int i = 0; args[i] != NULL && i < 30; ++i)
-        argv[i + 1] = args[i];
-    test_capture(hx_command_run, argv, c);
-}
-
-/* The column of the CSV header (its first line) named name. */
-static int column_of(const char *header, const char *name)
-{
-    const size_t n = strlen(name);
-    int column = 0;
-    for (const char *p = header; *p != '\0' && *p != '\n'; ++column) {
-        if (strncmp(p, name, n) == 0 && (p[n] == ',' || p[n] == '\n'))
-            return column;
-        p = strchr(p, ',');
-        if (p == NULL)
-            break;
-        ++p;
-    }
-    fail_msg("no column %s", name);
-    return -1;
-}
-
-/* Row r's value in column `column` of the CSV lines. */
-static double value_at(char lines[][4096], int r, int column)
-{
-    const char *p = lines[r];
-    for (int k = 0; k < column; ++k) {
-        p = strchr(p, ',');
-        assert_non_null(p);
-        ++p;
-    }
-    return strtod(p, NULL);
-}
-
 /* All three deactivated to 0.3 s: the part falls freely, x = 1, y = -g t^2 / 2
  * (DOPRI5 exact on the quadratic; every element would pull it at once, 50 N
  * along -x). Then `element` alone activated: from y0 = -0.44145, vy0 =
@@ -159,45 +122,46 @@ static void activated_again_each_pulls_as_a_spring(void **state)
                  "ACTIVATE/%s, ID=%d\nSIMULATE/DYNAMIC, END=0.6, STEPS=3\n", statements[e],
                  e + 1);
         const char *acf = test_write_file("switched.acf", acf_text);
-        test_captured c;
-        run((const char *const[]){model_path, "--acf", acf, "--integrator", integrators[trial / 3],
-                                  "--rtol", "1e-11", "--atol", "1e-12", "--quiet", "--out",
-                                  test_temp_path("switched.csv"), NULL},
-            &c);
-        if (c.status != 0)
-            fail_msg("%s", c.err);
-        FILE *f = fopen(test_temp_path("switched.csv"), "r");
-        assert_non_null(f);
-        static char lines[8][4096];
-        int n = 0;
-        while (n < 8 && fgets(lines[n], sizeof lines[0], f) != NULL)
-            ++n;
-        fclose(f);
-        assert_int_equal(n, 8); /* the header and t = 0, 0.1, .., 0.6 */
-        const int tc = column_of(lines[0], "t"), xc = column_of(lines[0], "body2.x");
-        const int yc = column_of(lines[0], "body2.y"), dc = column_of(lines[0], "dissipated");
-        for (int r = 1; r < 8; ++r) {
-            const double t = value_at(lines, r, tc), s = t - 0.3;
-            assert_close(t, 0.1 * (r - 1), 0.0, 1e-12);
+        const char *csv = test_temp_path("switched.csv");
+        assert_int_equal(sim_run_csv(model_path, csv,
+                                     (const char *const[]){"--acf", acf, "--integrator",
+                                                           integrators[trial / 3], "--rtol",
+                                                           "1e-11", "--atol", "1e-12", "--quiet",
+                                                           NULL}),
+                         0);
+        csv_table tb;
+        csv_read(csv, &tb);
+        assert_int_equal(tb.rows, 7); /* t = 0, 0.1, .., 0.6 */
+        const int tc = csv_column(csv, "t"), xc = csv_column(csv, "body2.x");
+        const int yc = csv_column(csv, "body2.y"), dc = csv_column(csv, "dissipated");
+        int fc[3][2];
+        for (int k = 0; k < 3; ++k) {
+            char name[32];
+            snprintf(name, sizeof name, "force%d.fx", k + 1);
+            fc[k][0] = csv_column(csv, name);
+            snprintf(name, sizeof name, "force%d.fy", k + 1);
+            fc[k][1] = csv_column(csv, name);
+            assert_true(fc[k][0] >= 0 && fc[k][1] >= 0);
+        }
+        assert_true(tc >= 0 && xc >= 0 && yc >= 0 && dc >= 0);
+        for (int r = 0; r < 7; ++r) {
+            const double t = csv_at(&tb, r, tc), s = t - 0.3;
+            assert_close(t, 0.1 * r, 0.0, 1e-12);
             double x = 1.0, y = -0.5 * g * t * t;
             if (s > 1e-9) {
                 x = cos(w * s);
                 y = -g / (w * w) + (y0 + g / (w * w)) * cos(w * s) + vy0 / w * sin(w * s);
             }
-            assert_close(value_at(lines, r, xc), x, 0.0, tol);
-            assert_close(value_at(lines, r, yc), y, 0.0, tol);
-            assert_close(value_at(lines, r, dc), 0.0, 0.0, tol);
+            assert_close(csv_at(&tb, r, xc), x, 0.0, tol);
+            assert_close(csv_at(&tb, r, yc), y, 0.0, tol);
+            assert_close(csv_at(&tb, r, dc), 0.0, 0.0, tol);
             for (int k = 0; k < 3; ++k) {
-                char name[32];
                 const int active = k == e && s > 1e-9;
-                snprintf(name, sizeof name, "force%d.fx", k + 1);
-                assert_close(value_at(lines, r, column_of(lines[0], name)),
-                             active ? -50.0 * x : 0.0, 0.0, 100 * tol);
-                snprintf(name, sizeof name, "force%d.fy", k + 1);
-                assert_close(value_at(lines, r, column_of(lines[0], name)),
-                             active ? -50.0 * y : 0.0, 0.0, 100 * tol);
+                assert_close(csv_at(&tb, r, fc[k][0]), active ? -50.0 * x : 0.0, 0.0, 100 * tol);
+                assert_close(csv_at(&tb, r, fc[k][1]), active ? -50.0 * y : 0.0, 0.0, 100 * tol);
             }
         }
+        csv_free(&tb);
     }
 }
 
@@ -218,7 +182,8 @@ static void ids_the_model_lacks_are_refused(void **state)
                  cases[k][0]);
         const char *acf = test_write_file("refused.acf", text);
         test_captured c;
-        run((const char *const[]){model_path, "--acf", acf, "--quiet", NULL}, &c);
+        test_capture(hx_command_run,
+                     (const char *const[]){"run", model_path, "--acf", acf, "--quiet", NULL}, &c);
         assert_int_equal(c.status, 1);
         assert_contains(c.err, "refused.acf:3: ", cases[k][1]);
     }

@@ -203,11 +203,16 @@ static int find_declared(hx_call *c, const hx_query *q)
 }
 
 /* An acceleration or a force declared as query k, from the algebraic loop's values in
- * the frames (host/loop_queries.h); 0, or -1 refused. */
+ * the frames, or a REQSUB's from the output queries' values given with the call
+ * (host/loop_queries.h); 0, or -1 refused. */
 static int answer_loop(hx_call *c, const hx_query *q, int k, double *values, int count)
 {
     for (int i = 0; i < count; ++i) {
         const int slot = c->loop_slot != NULL ? c->loop_slot[k][i] : -1;
+        if (slot >= 0 && c->at_output) {
+            values[i] = c->answers != NULL ? c->answers[slot] : 0.0;
+            continue;
+        }
         if (slot < 0 || c->frames->loop == NULL) {
             report_refused(c, q, "the value has no place among the algebraic loop's inputs"
                            " (this call is not an element's within a right-hand side:"

@@ -261,6 +261,7 @@ void hx_binding_call_init(hx_binding *b, hx_call *call, int which, const hx_fram
     call->may_query = b->kind == HX_BIND_FORCE || b->kind == HX_BIND_REQUEST ||
                       b->kind == HX_BIND_VARIABLE || b->kind == HX_BIND_DIFF;
     call->loop_slot = b->loop_slot;
+    call->at_output = b->kind == HX_BIND_REQUEST;
     call->reported_undeclared = &b->reported_undeclared;
     call->reported_refused = &b->reported_refused;
     call->reported_unoffered = &b->reported_unoffered;

@@ -30,6 +30,8 @@ void hx_call_init(hx_call *c, const char *element, int id, const char *routine,
     c->declared = declared;
     c->perturb_query = -1;
     c->loop_slot = NULL;
+    c->at_output = 0;
+    c->answers = NULL;
     if (dependency_pass && declared != NULL)
         memset(declared, 0, sizeof *declared);
 }

@@ -57,8 +57,14 @@ typedef struct hx_call {
     unsigned used;             /* bit k: declared query k was asked */
     int next_declared;         /* where the look-up starts: libraries ask in order */
     /* per declared query, per value: its slot among the algebraic loop's inputs
-     * (an acceleration, host/loop_queries.h), -1 elsewhere; NULL: none */
+     * (an acceleration or a force, host/loop_queries.h), among the model's
+     * output queries for a REQSUB (at_output), -1 elsewhere; NULL: none */
     const int (*loop_slot)[6];
+    int at_output;             /* a REQSUB: its accelerations and forces from answers */
+    const double *answers;     /* at_output: the model's output queries' values at the
+                                * output time of the call, by slot; NULL (a call at any
+                                * other time, check's probes): zeros, as in a dependency
+                                * pass */
     int perturb_query;         /* -1, or the declared query whose answer is shifted */
     int perturb_component;
     double perturb_delta;

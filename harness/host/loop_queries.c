@@ -50,19 +50,13 @@ static int bind_query(hx_model *m, hx_binding *b, int k, hx_message *msg)
     const int count = force >= 0 ? 1 : hx_query_accelerations(q, measures);
     if (count == 0)
         return 0;
-    const int in_loop = b->kind == HX_BIND_FORCE || b->kind == HX_BIND_VARIABLE ||
-                        b->kind == HX_BIND_DIFF;
-    if (force >= 0 && !in_loop)
-        return 0; /* its calls refused, as before forces were answered (abi.c's answer_loop) */
+    /* a request's REQSUB runs at output times, once the forces and accelerations are
+     * known: what it reads closes no loop. Only routines that may query declare any
+     * (a force, a request, a variable, a Control_Diff: host/binding.c) */
+    const int at_output = b->kind == HX_BIND_REQUEST;
     const char *routine = hx_binding_routine(b, 0);
     char asked[40], text[64], element[64];
     hx_query_text(q, asked, sizeof asked);
-    /* a request's REQSUB runs at output times, outside any right-hand side */
-    if (!in_loop)
-        return hx_fail(msg, "%s:%d: %s %d (%s) declares %s in its dependency pass, which the host"
-                       " answers only to a force, variable or Control_Diff routine (within a"
-                       " right-hand side's algebraic loop): docs/interface.md §5.1", m->path,
-                       hx_binding_line(m, b), b->element, b->id, routine, asked);
     snprintf(element, sizeof element, "%s of %s %d", routine, b->element, b->id);
     for (int i = 0; i < count; ++i) {
         hx_expr_input in;
@@ -77,7 +71,9 @@ static int bind_query(hx_model *m, hx_binding *b, int k, hx_message *msg)
             snprintf(text, sizeof text, "%s[%d]", asked, i + 1);
         else
             snprintf(text, sizeof text, "%s", asked);
-        if ((b->loop_slot[k][i] = hx_model_loop_query(m, &in, text, element)) < 0)
+        b->loop_slot[k][i] = at_output ? hx_model_output_query(m, &in)
+                                       : hx_model_loop_query(m, &in, text, element);
+        if (b->loop_slot[k][i] < 0)
             return hx_fail(msg, "out of memory");
     }
     return 0;

@@ -96,6 +96,20 @@ int hx_model_loop_query(hx_model *m, const hx_expr_input *in, const char *text,
     return m->nloop_inputs++;
 }
 
+int hx_model_output_query(hx_model *m, const hx_expr_input *in)
+{
+    for (int slot = 0; slot < m->noutput_queries; ++slot)
+        if (same(&m->output_queries[slot], in))
+            return slot;
+    hx_expr_input *more =
+        realloc(m->output_queries, sizeof *more * (size_t)(m->noutput_queries + 1));
+    if (more == NULL)
+        return -1;
+    m->output_queries = more;
+    m->output_queries[m->noutput_queries] = *in;
+    return m->noutput_queries++;
+}
+
 const char *hx_loop_input_text(const hx_model *m, int k, char *text, size_t size)
 {
     const hx_loop_input *li = &m->loop_inputs[k];

@@ -43,6 +43,13 @@ int hx_draft_find_loop_inputs(hx_draft *d);
 int hx_model_loop_query(hx_model *m, const hx_expr_input *in, const char *text,
                         const char *element);
 
+/* The slot among m->output_queries of acceleration or force `in` (linked)
+ * that a REQSUB's query reads: it runs at output times, once the forces and
+ * accelerations are known, and closes no loop (the same slot wherever the
+ * same function of the same ids is asked, a new one else); -1 out of
+ * memory. */
+int hx_model_output_query(hx_model *m, const hx_expr_input *in);
+
 /* "ACCZ(10) (Force_Scalar_TwoBody 1)" for slot k into text; returns text. */
 const char *hx_loop_input_text(const hx_model *m, int k, char *text, size_t size);
 

@@ -285,6 +285,7 @@ void hx_model_free(hx_model *m)
     free(m->varsub_read_start);
     free(m->varsub_reads);
     free(m->loop_inputs);
+    free(m->output_queries);
     free(m->arrays);
     free(m->stateeqns);
     free(m->bodies);

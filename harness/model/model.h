@@ -358,6 +358,10 @@ typedef struct hx_model {
                               * each distinct acceleration, reaction or SFORCE force a
                               * force, variable or Control_Diff rate reads */
     int nloop_inputs;        /* 0: no loop, and a right-hand side does no work for one */
+    struct hx_expr_input *output_queries; /* the distinct accelerations and forces REQSUBs
+                              * ask (c_sysfnc ACCZ, JOINT, ...), linked: answered at the
+                              * output times alone, no loop's inputs (model/loop_inputs.h) */
+    int noutput_queries;
     hx_array *arrays;
     int narrays;
     hx_stateeqn *stateeqns;

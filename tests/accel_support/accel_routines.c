@@ -1,9 +1,9 @@
 /*
  * User routines that read accelerations through the host (docs/interface.md
  * §5.1), for tests/test_user_accelerations.c: an added mass, a rate of an
- * angular acceleration, a probe of c_sysary ACC, and the faulty ones (a
- * request that reads one, a force that reads one only outside its
- * dependency pass). Each names its markers in its USER list.
+ * angular acceleration, a probe of c_sysary ACC, a request that reads one
+ * at its output times, and a faulty one (a force that reads one only
+ * outside its dependency pass). Each names its markers in its USER list.
  */
 #include "usrsub/solver_abi.h"
 
@@ -84,7 +84,7 @@ void STDCALL ACC_PROBE(int *id, double *time, double *par, int *npar, int *dflag
         result[k] = 0.0;
 }
 
-/* REQSUB USER(I): a request's ACCZ(I), which no loop answers (refused). */
+/* REQSUB USER(I): a request's ACCZ(I), answered at its output times. */
 void STDCALL REQUEST_ACC(int *id, double *time, double *par, int *npar, int *iflag,
                         double *result)
 {

@@ -271,9 +271,40 @@ void hx_routines_csv_header(FILE *f, const hx_dynamics *d)
     }
 }
 
-int hx_routines_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, const double *y)
+/* The model's output queries (the accelerations and forces REQSUBs ask,
+ * host/loop_queries.h) at this output time, from its outputs s: malloc'ed,
+ * NULL when there are none; 0, or -1 (dd's message). */
+static int output_answers(const hx_dynamics *d, hx_dynamics_data *dd, const hx_expr_outputs *s,
+                          double **answers)
 {
     const hx_model *m = d->m;
+    *answers = NULL;
+    if (m->noutput_queries == 0)
+        return 0;
+    if ((*answers = malloc(sizeof(double) * (size_t)m->noutput_queries)) == NULL)
+        return hx_dynamics_fail(dd, "out of memory");
+    const hx_expr_context c = {&dd->frames, NULL, s};
+    for (int k = 0; k < m->noutput_queries; ++k) {
+        hx_expr_fault fault;
+        if (hx_expr_query_value(&c, &m->output_queries[k], &(*answers)[k], &fault) != 0) {
+            char text[96];
+            hx_expr_input_text(&m->output_queries[k], text, sizeof text);
+            free(*answers);
+            *answers = NULL;
+            return hx_dynamics_fail(dd, "%s: %s at t = %g, which a REQSUB asks: %s", m->path,
+                                    text, dd->frames.time, fault.what);
+        }
+    }
+    return 0;
+}
+
+int hx_routines_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, const double *y,
+                        const hx_expr_outputs *s)
+{
+    const hx_model *m = d->m;
+    double *answers;
+    if (output_answers(d, dd, s, &answers) != 0)
+        return -1;
     for (int k = 0; k < m->nroutines; ++k) {
         const hx_routine *r = &m->routines[k];
         hx_binding *b = d->routine_binding[k];
@@ -284,8 +315,10 @@ int hx_routines_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, con
             if (r->val_type == 'A')
                 continue;
             const int body = m->markers[m->joints[r->joint].i_marker].body;
-            if (hx_routines_motion(d, dd, k, 0, &values[0]) != 0)
+            if (hx_routines_motion(d, dd, k, 0, &values[0]) != 0) {
+                free(answers);
                 return -1;
+            }
             if (!m->joints[r->joint].reduced) { /* a row: its coordinate near f, or its rate */
                 double value;
                 if (r->val_type == 'V')
@@ -299,13 +332,19 @@ int hx_routines_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, con
             const int driven = r->val_type == 'D' ? d->dof[body].q : d->nq + d->dof[body].u;
             fprintf(f, ",%.6g", y[driven] - values[0]);
         } else {
-            hx_invoke_routine(b, &dd->frames, 0, 0, values, NULL);
-            if (hx_dynamics_check_call(d, dd, b, NULL, 0, "", dd->frames.time) != 0)
+            hx_call call; /* a REQSUB's accelerations and forces: this time's answers */
+            hx_binding_call_init(b, &call, 0, &dd->frames, 0);
+            call.answers = answers;
+            hx_invoke_routine(b, &dd->frames, 0, 0, values, &call);
+            if (hx_dynamics_check_call(d, dd, b, NULL, 0, "", dd->frames.time) != 0) {
+                free(answers);
                 return -1;
+            }
             const int n = r->kind == HX_ROUTINE_REQUEST ? 8 : 1;
             for (int j = 0; j < n; ++j)
                 fprintf(f, ",%.15g", values[j]);
         }
     }
+    free(answers);
     return 0;
 }

@@ -25,6 +25,7 @@
 
 #include <stdio.h>
 
+#include "expr/evaluate.h"
 #include "sim/dynamics/dynamics.h"
 
 /* Sets d->diff_offset and d->ndiffs (after the Force_StateEqn states), the
@@ -66,8 +67,11 @@ int hx_routines_motion(const hx_dynamics *d, hx_dynamics_data *dd, int k, int io
                        double *value);
 
 /* The CSV's columns: diffID, motionID.error (coordinate less MOTSUB's
- * value; for V, rate less it), requestID.1 .. 8, variableID. */
+ * value; for V, rate less it), requestID.1 .. 8, variableID. A row at (t, y)
+ * after the evaluation there, its outputs s answering the accelerations and
+ * forces REQSUBs ask (host/loop_queries.h). */
 void hx_routines_csv_header(FILE *f, const hx_dynamics *d);
-int hx_routines_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, const double *y);
+int hx_routines_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, const double *y,
+                        const hx_expr_outputs *s);
 
 #endif

@@ -97,7 +97,7 @@ static int row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
             fprintf(f, ",%.12g", dd->element_load[6 * k + j]);
     }
     hx_stateeqns_csv_row(f, d, dd, y);
-    if (hx_routines_csv_row(f, d, dd, y) != 0)
+    if (hx_routines_csv_row(f, d, dd, y, s) != 0)
         return -1;
     hx_message msg;
     if (hx_requests_csv_row(f, &dd->frames, d->routine_binding, s, &msg) != 0)
@@ -128,13 +128,14 @@ int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
     hx_accelerations_bodies(d, dd, ydot, accelerations);
     double *loads = accelerations + 6 * m->nbodies;
     hx_message msg;
-    if (m->nrequests > 0 && hx_element_outputs_loads(d, dd, loads, &msg) != 0) {
+    const int read = m->nrequests > 0 || m->noutput_queries > 0; /* the outputs beyond these */
+    if (read && hx_element_outputs_loads(d, dd, loads, &msg) != 0) {
         free(ydot);
         return hx_dynamics_fail(dd, "%s", msg.text);
     }
     double *forces = loads + 12 * m->nloads, *constraints = forces + 12 * m->nforces;
     hx_element_outputs_forces(d, dd, forces);
-    if (m->nrequests > 0 && hx_constraint_forces_all(d, dd, t, y, ydot, constraints) != 0) {
+    if (read && hx_constraint_forces_all(d, dd, t, y, ydot, constraints) != 0) {
         free(ydot);
         return -1;
     }
