@@ -22,7 +22,9 @@
  * each calling a user routine: LINE_SPRING (tests/user_libraries/tp_scalar.c,
  * -k DM along the line: -k r on I), SCALED_SPRING_FIELD and SCALED_SPRING
  * (tests/implicit_support/scaled_field.c: -k (DX, DY, DZ) of I in J, and
- * -kr the angles). */
+ * -kr the angles); and a SPRINGDAMPER of the same spring, a load (its flag
+ * before the force elements': the tests keep it off, so that a flag read at
+ * the wrong place shows). */
 static const char *dataset(void)
 {
     /* a dataset's ROUTINE names a library found in MS_USERDLL_DIR, where the
@@ -42,6 +44,7 @@ static const char *dataset(void)
              ", ROUTINE = %s::SCALED_SPRING_FIELD\n"
              "GFORCE/3, I = 20, JFLOAT = 10, RM = 10, FUNCTION = USER(20, 10, 50, 0, 5, 0, 1)\n"
              ", ROUTINE = %s::SCALED_SPRING\n"
+             "SPRINGDAMPER/4, TRANSLATION, I = 20, J = 10, K = 50, C = 0, LENGTH = 0\n"
              "END\n",
              scaled, scaled);
     return test_write_file("switched.adm", text);
@@ -49,9 +52,11 @@ static const char *dataset(void)
 
 /* ---- in the equations ---------------------------------------------------------------------- */
 
-/* Each element switched off alone, then all three: the right-hand side's
- * accelerations are gravity's and the others' (-25 x m/s^2 an element on, at
- * x = 1), and the Jacobian agrees with differences of the switched
+/* Each element switched off alone, then all three, the SPRINGDAMPER off;
+ * last the SPRINGDAMPER alone on: the right-hand side's accelerations are
+ * gravity's and the others' (-25 x m/s^2 an element on, at x = 1), an
+ * element switched off is not called (its routine's latest time stays before
+ * the evaluation's), and the Jacobian agrees with differences of the switched
  * right-hand side (a Jacobian that kept an element would carry its k / m =
  * 25 where the differences have 0). */
 static void switched_off_elements_are_in_neither(void **state)
@@ -60,19 +65,24 @@ static void switched_off_elements_are_in_neither(void **state)
     model m;
     open_model(&m, dataset());
     assert_int_equal(m.session.model->nforces, 3);
-    assert_int_equal(m.session.model->nloads, 0);
+    assert_int_equal(m.session.model->nloads, 1);
     double *y = model_state(&m), *fy = model_state(&m);
     model_initial_state(&m, y);
     const hx_body_dof *part = &m.d.dof[1];
     assert_int_equal(part->kind, HX_DOF_FREE);
-    for (int off = 0; off <= 4; ++off) { /* 0: none, 1..3 that one, 4: all three */
+    for (int off = 0; off <= 5; ++off) { /* 0: none, 1..3 that one, 4 and 5: all three */
         int on = 0;
         for (int k = 0; k < 3; ++k) {
-            m.d.force_off[k] = off == 4 || off == k + 1;
+            m.d.force_off[k] = off >= 4 || off == k + 1;
             on += !m.d.force_off[k];
         }
-        if (hx_dynamics_rhs(&m.d, &m.data, 0.0, y, fy) != 0)
+        m.d.load_off[0] = off != 5;
+        on += !m.d.load_off[0];
+        const double t = 1.0 + off; /* each evaluation later than any before */
+        if (hx_dynamics_rhs(&m.d, &m.data, t, y, fy) != 0)
             fail_msg("%s", m.data.message);
+        for (int k = 0; k < 3; ++k)
+            assert_true((m.d.force_binding[k]->latest_time == t) == !m.d.force_off[k]);
         const double *a = fy + m.d.nq + part->u;
         assert_close(a[0], -25.0 * on, 0.0, 1e-12);
         assert_close(a[1], -9.81, 0.0, 1e-12);
@@ -97,7 +107,7 @@ static void switched_off_elements_are_in_neither(void **state)
 
 /* ---- in a run ------------------------------------------------------------------------------ */
 
-/* All three deactivated to 0.3 s: the part falls freely, x = 1, y = -g t^2 / 2
+/* All three deactivated to 0.3 s (and the SPRINGDAMPER throughout): the part falls freely, x = 1, y = -g t^2 / 2
  * (DOPRI5 exact on the quadratic; every element would pull it at once, 50 N
  * along -x). Then `element` alone activated: from y0 = -0.44145, vy0 =
  * -2.943 at t0 = 0.3 a spring-mass of w = sqrt(50 / 2) = 5 1/s,
@@ -117,7 +127,8 @@ static void activated_again_each_pulls_as_a_spring(void **state)
         const double tol = trial < 3 ? 1e-8 : 1e-6;
         char acf_text[512];
         snprintf(acf_text, sizeof acf_text,
-                 "switched\n\nDEACTIVATE/SFORCE, ID=1\nDEACTIVATE/FIELD, ID=2\n"
+                 "switched\n\nDEACTIVATE/SPRINGDAMPER, ID=4\n"
+                 "DEACTIVATE/SFORCE, ID=1\nDEACTIVATE/FIELD, ID=2\n"
                  "DEACTIVATE/GFORCE, ID=3\nSIMULATE/DYNAMIC, END=0.3, STEPS=3\n"
                  "ACTIVATE/%s, ID=%d\nSIMULATE/DYNAMIC, END=0.6, STEPS=3\n", statements[e],
                  e + 1);

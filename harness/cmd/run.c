@@ -316,6 +316,9 @@ int hx_command_run(int argc, char **argv)
     /* the fastest mode at the start: a fixed step beyond its stability limit is
      * said before the run, and whether the model is stiff for it after */
     hx_stability st;
+    if (schedule.nsegments > 0) /* under the first segment's switches: what it deactivates is
+                                 * not called (the run sets them again and clears them) */
+        hx_dynamics_switch(&d, schedule.segments[0].switched_off);
     const int known = stability_at_start(&d, &st) == 0;
     const int fixed = !hx_method_adaptive(so.integration.method);
     const int limited = fixed && known;

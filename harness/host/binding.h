@@ -100,7 +100,8 @@ typedef struct hx_binding {
     int twin_npar;
     hx_dependencies deps; /* declared in the dependency pass */
     /* per declared query, per value: its slot among the algebraic loop's
-     * inputs (an acceleration: host/loop_queries.h), -1 elsewhere */
+     * inputs (an acceleration or a force: host/loop_queries.h), for a REQSUB
+     * among the model's output queries; -1 elsewhere */
     int loop_slot[HX_MAX_QUERIES][6];
     double latest_time;   /* the latest time any of its functions was called at */
     /* bytes the library kept allocated across the element's first calls (its

@@ -1,5 +1,5 @@
-/* The accelerations and forces user routines ask, as loop inputs
- * (loop_queries.h). */
+/* The accelerations and forces user routines ask, as loop inputs or, a
+ * REQSUB's, as output queries (loop_queries.h). */
 #include "host/loop_queries.h"
 
 #include <stdio.h>

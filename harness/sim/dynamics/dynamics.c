@@ -105,6 +105,15 @@ int hx_dynamics_init(hx_dynamics *d, hx_session *s, hx_message *msg)
     return -1;
 }
 
+void hx_dynamics_switch(const hx_dynamics *d, const unsigned char *flags)
+{
+    const int nloads = d->m->nloads;
+    for (int k = 0; k < nloads; ++k)
+        d->load_off[k] = flags != NULL ? flags[k] : 0;
+    for (int k = 0; k < d->m->nforces; ++k)
+        d->force_off[k] = flags != NULL ? flags[nloads + k] : 0;
+}
+
 void hx_dynamics_free(hx_dynamics *d)
 {
     free(d->dof);

@@ -196,6 +196,11 @@ void hx_dynamics_free(hx_dynamics *d);
 int hx_dynamics_data_init(hx_dynamics_data *dd, const hx_dynamics *d, hx_message *msg);
 void hx_dynamics_data_free(hx_dynamics_data *dd);
 
+/* Sets d's load_off and force_off from flags (a command file's segment's: a
+ * flag per load, then per force element; NULL: every one on). Between
+ * evaluations only. */
+void hx_dynamics_switch(const hx_dynamics *d, const unsigned char *flags);
+
 /* The model's initial state as given (not projected); 0, or -1 (dd->message). */
 int hx_dynamics_model_state(const hx_dynamics *d, hx_dynamics_data *dd, double *y);
 /* Initial state from the model, projected onto the couplers; 0, or -1

@@ -283,7 +283,7 @@ static int output_answers(const hx_dynamics *d, hx_dynamics_data *dd, const hx_e
         return 0;
     if ((*answers = malloc(sizeof(double) * (size_t)m->noutput_queries)) == NULL)
         return hx_dynamics_fail(dd, "out of memory");
-    const hx_expr_context c = {&dd->frames, NULL, s};
+    const hx_expr_context c = {&dd->frames, dd->frames.variables, s};
     for (int k = 0; k < m->noutput_queries; ++k) {
         hx_expr_fault fault;
         if (hx_expr_query_value(&c, &m->output_queries[k], &(*answers)[k], &fault) != 0) {

@@ -128,14 +128,15 @@ int hx_csv_row(FILE *f, const hx_dynamics *d, hx_dynamics_data *dd, double t, co
     hx_accelerations_bodies(d, dd, ydot, accelerations);
     double *loads = accelerations + 6 * m->nbodies;
     hx_message msg;
-    const int read = m->nrequests > 0 || m->noutput_queries > 0; /* the outputs beyond these */
-    if (read && hx_element_outputs_loads(d, dd, loads, &msg) != 0) {
+    /* the loads' and constraints' forces, for the requests and the REQSUBs' queries */
+    const int need_outputs = m->nrequests > 0 || m->noutput_queries > 0;
+    if (need_outputs && hx_element_outputs_loads(d, dd, loads, &msg) != 0) {
         free(ydot);
         return hx_dynamics_fail(dd, "%s", msg.text);
     }
     double *forces = loads + 12 * m->nloads, *constraints = forces + 12 * m->nforces;
     hx_element_outputs_forces(d, dd, forces);
-    if (read && hx_constraint_forces_all(d, dd, t, y, ydot, constraints) != 0) {
+    if (need_outputs && hx_constraint_forces_all(d, dd, t, y, ydot, constraints) != 0) {
         free(ydot);
         return -1;
     }

@@ -148,14 +148,26 @@ static void add_stats(hx_integrator_stats *run, const hx_integrator_stats *segme
 static void switch_segment(const run_context *rc, const hx_segment *g)
 {
     const hx_dynamics *d = rc->d;
-    const int nloads = d->m->nloads;
-    for (int j = 0; j < nloads; ++j)
-        d->load_off[j] = g->switched_off != NULL ? g->switched_off[j] : 0;
-    for (int j = 0; j < d->m->nforces; ++j)
-        d->force_off[j] = g->switched_off != NULL ? g->switched_off[nloads + j] : 0;
+    hx_dynamics_switch(d, g->switched_off);
     memcpy(d->gravity, g->gravity != NULL ? g->gravity : d->m->gravity, 3 * sizeof(double));
     if (rc->own != NULL)
         hx_variable_definitions_apply(g->variables != NULL ? g->variables : rc->own, d->m);
+}
+
+/* Whether segment g changes d's gravity or switches a load or force element. */
+static int switches(const hx_dynamics *d, const hx_segment *g)
+{
+    const double *gravity = g->gravity != NULL ? g->gravity : d->m->gravity;
+    if (memcmp(gravity, d->gravity, 3 * sizeof(double)) != 0)
+        return 1;
+    const int nloads = d->m->nloads;
+    for (int k = 0; k < nloads; ++k)
+        if (d->load_off[k] != (g->switched_off != NULL ? g->switched_off[k] : 0))
+            return 1;
+    for (int k = 0; k < d->m->nforces; ++k)
+        if (d->force_off[k] != (g->switched_off != NULL ? g->switched_off[nloads + k] : 0))
+            return 1;
+    return 0;
 }
 
 /* names appended to text (size) after ", " when both have some. */
@@ -263,10 +275,11 @@ static int simulate(run_context *rc, const hx_segment *segments, int nsegments, 
     for (int k = 0; k < nsegments; ++k) {
         /* each segment from the state the one before it ended in (docs/interface.md
          * §9.9): the integrator restarts there; its first output is after t */
-        const hx_energy before = k > 0 ? hx_energy_of(d, dd, t, y) : result->energy0;
+        const int rebase = k > 0 && switches(d, &segments[k]);
+        const hx_energy before = rebase ? hx_energy_of(d, dd, t, y) : result->energy0;
         switch_segment(rc, &segments[k]);
-        if (k > 0) { /* an ACCGRAV moves the potential's zero, a switched force element takes
-                      * its stored energy along: neither is work done */
+        if (rebase) { /* an ACCGRAV moves the potential's zero, a switched force element takes
+                       * its stored energy along: neither is work done */
             const hx_energy after = hx_energy_of(d, dd, t, y);
             result->energy0.total += after.total - before.total;
             result->energy0.balance += after.balance - before.balance;
@@ -395,8 +408,7 @@ int hx_simulate_segments(hx_dynamics *d, const hx_simulation_options *opt,
     }
     /* every load and force element on again, the model's gravity, variables and redundant rows, as the
      * set-up has them, however the run ended: the next run on d starts from the model */
-    memset(d->load_off, 0, (size_t)d->m->nloads);
-    memset(d->force_off, 0, (size_t)d->m->nforces);
+    hx_dynamics_switch(d, NULL);
     if (result->redundancy_changes > 0 && hx_redundancy_use(d, removed, nremoved, &msg) != 0)
         status = -1; /* out of memory: the run's message stands */
     free(removed);
